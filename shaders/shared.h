@@ -1,0 +1,152 @@
+// shared.h — the one header included by both the GLSL compute shaders and the C++ host/reference.
+// It defines every buffer struct, binding number, workgroup size and constant that both sides must
+// agree on. On the C++ side, static_asserts turn a layout slip into a compile error.
+//
+// Layout rule: std430. A vec3 is 16-byte aligned and followed by a scalar to fill the slot.
+#ifndef PHONGVK_SHARED_H
+#define PHONGVK_SHARED_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace phongvk::gpu {
+using uint = uint32_t;
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
+using uvec4 = glm::uvec4;
+#define PHONGVK_CONST inline constexpr
+#else
+#define PHONGVK_CONST const
+#endif
+
+// ---- Workgroup sizes (threads per group; converted to group counts once, on the host) ----
+// 64 threads: a multiple of NVIDIA's 32-wide warps and of lavapipe's 8-wide AVX2 SIMD lanes.
+PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
+PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
+PHONGVK_CONST uint LARGE_GROUP_SIZE = 64;
+// Resolve works on 8x8 pixel tiles: neighbouring pixels usually share a triangle (cache reuse).
+PHONGVK_CONST uint RESOLVE_GROUP_X = 8;
+PHONGVK_CONST uint RESOLVE_GROUP_Y = 8;
+
+// ---- Raster constants ----
+PHONGVK_CONST uint SUBPIXEL_BITS = 8;        // 1/256 pixel, as Vulkan/D3D hardware
+PHONGVK_CONST int SUBPIXEL_ONE = 256;
+PHONGVK_CONST int SUBPIXEL_HALF = 128;       // pixel centres sit at (x + 0.5, y + 0.5)
+// Guard band: clip polygons whose projection leaves |x|,|y| <= GUARD_BAND pixels around the
+// principal point, so snapped coordinates stay below 2^28 subpixels and edge functions in int64.
+PHONGVK_CONST float GUARD_BAND = 524288.0f;  // 2^19 pixels
+// A triangle whose pixel bounding box has more than this many pixels goes to the large-triangle
+// pass, where one workgroup per row slice shares it; smaller ones take one invocation each.
+PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 256;
+// The large pass splits each large triangle's bounding box rows over this many workgroups.
+PHONGVK_CONST uint LARGE_ROW_SLICES = 32;
+// Clipping a triangle against the near plane and four guard planes yields at most 8 vertices.
+PHONGVK_CONST uint MAX_CLIP_VERTICES = 8;
+
+// Interpolation modes (FrameData.interpolation).
+PHONGVK_CONST uint INTERP_PERSPECTIVE = 0;
+PHONGVK_CONST uint INTERP_SCREEN = 1;
+
+// Object flags.
+PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are never visible
+
+// ---- Descriptor bindings (one set) ----
+PHONGVK_CONST uint BINDING_FRAME = 0;        // FrameData (uniform)
+PHONGVK_CONST uint BINDING_VERTICES = 1;     // VertexIn[]
+PHONGVK_CONST uint BINDING_TRIANGLES = 2;    // uvec4[] (3 vertex indices, w unused)
+PHONGVK_CONST uint BINDING_OBJECTS = 3;      // ObjectData[]
+PHONGVK_CONST uint BINDING_MATERIALS = 4;    // MaterialData[]
+PHONGVK_CONST uint BINDING_LIGHTS = 5;       // LightData[]
+PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex[]
+PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
+PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
+PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList: count + triangle ids for the large pass
+
+// ---- Buffer structs ----
+// A mesh vertex in its object's local frame (position relative to the object origin).
+struct VertexIn {
+  vec3 position;
+  uint object;
+  vec3 normal;
+  uint pad0;
+};
+
+// Output of the per-vertex pass: homogeneous pixel-space position and unclamped Phong colour.
+// hpos = (focal * x_view, -focal * y_view, z_view, unused): the screen position is
+// principal point + hpos.xy / hpos.z, with y pointing down.
+struct ShadedVertex {
+  vec4 hpos;
+  vec4 color;
+};
+
+// Per object, per frame: offsets from the eye computed in double on the host, so far-away objects
+// keep float precision (local + offset instead of world - eye).
+struct ObjectData {
+  vec3 viewOffset;   // camera-basis coordinates of (origin - eye)
+  uint material;
+  vec3 worldOffset;  // world coordinates of (origin - eye), for lighting
+  uint flags;
+};
+
+struct MaterialData {
+  vec3 color;
+  float ka;
+  vec3 attenuation;  // a, b, c of 1 / (a + b d + c d^2)
+  float kd;
+  float ks;
+  float n;
+  float pad0;
+  float pad1;
+};
+
+struct LightData {
+  vec3 position;     // world coordinates relative to the eye (per frame)
+  float intensity;
+  vec3 color;
+  float pad0;
+};
+
+struct FrameData {
+  vec4 right;        // camera basis as rows: view = (dot(right, p), dot(up, p), dot(forward, p))
+  vec4 up;
+  vec4 forward;
+  vec3 ambient;
+  float focal;       // pixels per metre at 1 m
+  vec3 background;
+  float nearPlane;
+  vec2 principal;    // (width / 2, height / 2) in pixels
+  float farPlane;
+  uint lightCount;
+  uint width;
+  uint height;
+  uint interpolation;
+  uint triangleCount;
+};
+
+struct LargeList {
+  uint count;        // number of ids written
+  uint groupsX;      // indirect dispatch arguments for the large pass: (count, LARGE_ROW_SLICES, 1)
+  uint groupsY;
+  uint groupsZ;
+  // followed by uint ids[] in the shader's view of the buffer
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(VertexIn) == 32 && offsetof(VertexIn, normal) == 16);
+static_assert(sizeof(ShadedVertex) == 32);
+static_assert(sizeof(ObjectData) == 32 && offsetof(ObjectData, worldOffset) == 16);
+static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && offsetof(MaterialData, ks) == 32);
+static_assert(sizeof(LightData) == 32 && offsetof(LightData, color) == 16);
+static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focal) == 60);
+static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearPlane) == 76);
+static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);
+static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
+static_assert(sizeof(FrameData) == 112);
+static_assert(sizeof(LargeList) == 16);
+}  // namespace phongvk::gpu
+#endif
+
+#endif  // PHONGVK_SHARED_H

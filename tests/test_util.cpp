@@ -1,0 +1,43 @@
+#include "test_util.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <sys/wait.h>
+
+namespace phongvk::test {
+
+std::string sourcePath(const std::string& relative) {
+  return std::string(PHONGVK_SOURCE_DIR) + "/" + relative;
+}
+
+std::string makeTempDir() {
+  static std::mt19937_64 rng{std::random_device{}()};
+  auto dir = std::filesystem::temp_directory_path() / ("phongvk-test-" + std::to_string(rng()));
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+CommandResult runCli(const std::string& args) {
+  std::string command = std::string(PHONGVK_CLI) + " " + args + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) throw std::runtime_error("popen failed: " + command);
+  char buffer[4096];
+  size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+  int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+}  // namespace phongvk::test

@@ -1,0 +1,25 @@
+// test_util.h — small helpers shared by the test suites.
+#pragma once
+
+#include <string>
+
+namespace phongvk::test {
+
+// Absolute path of a file in the source tree, e.g. sourcePath("scenes/basic.json").
+std::string sourcePath(const std::string& relative);
+
+// A fresh empty directory under the system temp dir, unique per call.
+std::string makeTempDir();
+
+// Writes `text` to `path` (creating it), for tests that need a scene file on disk.
+void writeFile(const std::string& path, const std::string& text);
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs the phongvk CLI with `args` (a shell-quoted argument string) and captures its output.
+CommandResult runCli(const std::string& args);
+
+}  // namespace phongvk::test
