@@ -38,11 +38,17 @@ PHONGVK_CONST int SUBPIXEL_HALF = 128;       // pixel centres sit at (x + 0.5, y
 // Guard band: clip polygons whose projection leaves |x|,|y| <= GUARD_BAND pixels around the
 // principal point, so snapped coordinates stay below 2^28 subpixels and edge functions in int64.
 PHONGVK_CONST float GUARD_BAND = 524288.0f;  // 2^19 pixels
-// A triangle whose pixel bounding box has more than this many pixels goes to the large-triangle
-// pass, where one workgroup per row slice shares it; smaller ones take one invocation each.
-PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 256;
-// The large pass splits each large triangle's bounding box rows over this many workgroups.
-PHONGVK_CONST uint LARGE_ROW_SLICES = 32;
+// A triangle whose pixel bounding box has more than this many pixels is not rasterized by its
+// own invocation: it is cut into row chunks of about LARGE_CHUNK_PIXELS pixels, each shared by a
+// whole workgroup of the large pass. Small triangles stay one invocation each (no list traffic).
+PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 1024;
+PHONGVK_CONST uint LARGE_CHUNK_PIXELS = 4096;
+// The large list holds this many chunk entries beyond one per triangle; when a frame needs more,
+// the triangle pass rasterizes the overflow itself (slower, same result).
+PHONGVK_CONST uint LARGE_LIST_SPARE = 65536;
+// Dispatches are capped at the smallest maxComputeWorkGroupCount[0] Vulkan allows; the shaders
+// loop (grid-stride) when there is more work than that many groups.
+PHONGVK_CONST uint MAX_DISPATCH_GROUPS = 65535;
 // Clipping a triangle against the near plane and four guard planes yields at most 8 vertices.
 PHONGVK_CONST uint MAX_CLIP_VERTICES = 8;
 
@@ -56,14 +62,14 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
 // ---- Descriptor bindings (one set) ----
 PHONGVK_CONST uint BINDING_FRAME = 0;        // FrameData (uniform)
 PHONGVK_CONST uint BINDING_VERTICES = 1;     // VertexIn[]
-PHONGVK_CONST uint BINDING_TRIANGLES = 2;    // uvec4[] (3 vertex indices, w unused)
+PHONGVK_CONST uint BINDING_TRIANGLES = 2;    // uvec4[] (3 vertex indices, w = object index)
 PHONGVK_CONST uint BINDING_OBJECTS = 3;      // ObjectData[]
 PHONGVK_CONST uint BINDING_MATERIALS = 4;    // MaterialData[]
 PHONGVK_CONST uint BINDING_LIGHTS = 5;       // LightData[]
 PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex[]
 PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
 PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
-PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList: count + triangle ids for the large pass
+PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (triangle, chunk) entries
 
 // ---- Buffer structs ----
 // A mesh vertex in its object's local frame (position relative to the object origin).
@@ -124,14 +130,18 @@ struct FrameData {
   uint height;
   uint interpolation;
   uint triangleCount;
+  uint vertexCount;
+  uint largeCapacity;  // entries the large list can hold
+  uint pad1;
+  uint pad2;
 };
 
+// Header of the large-triangle list; (triangle id, row chunk) entries follow it in the buffer.
 struct LargeList {
-  uint count;        // number of ids written
-  uint groupsX;      // indirect dispatch arguments for the large pass: (count, LARGE_ROW_SLICES, 1)
+  uint count;        // entries reserved (may exceed the capacity; those were drawn in place)
+  uint groupsX;      // indirect dispatch (min(entries, MAX_DISPATCH_GROUPS), 1, 1)
   uint groupsY;
   uint groupsZ;
-  // followed by uint ids[] in the shader's view of the buffer
 };
 
 #ifdef __cplusplus
@@ -144,7 +154,7 @@ static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focal) =
 static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearPlane) == 76);
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);
 static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
-static_assert(sizeof(FrameData) == 112);
+static_assert(offsetof(FrameData, vertexCount) == 112 && sizeof(FrameData) == 128);
 static_assert(sizeof(LargeList) == 16);
 }  // namespace phongvk::gpu
 #endif

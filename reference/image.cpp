@@ -1,0 +1,78 @@
+#include "image.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <unistd.h>
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+namespace phongvk {
+
+Image imageFromPacked(const std::vector<uint32_t>& packed, int width, int height) {
+  Image image(width, height);
+  for (size_t i = 0; i < static_cast<size_t>(width) * height; ++i) {
+    image.rgb[i * 3 + 0] = static_cast<uint8_t>(packed[i] & 0xFF);
+    image.rgb[i * 3 + 1] = static_cast<uint8_t>((packed[i] >> 8) & 0xFF);
+    image.rgb[i * 3 + 2] = static_cast<uint8_t>((packed[i] >> 16) & 0xFF);
+  }
+  return image;
+}
+
+namespace {
+
+void appendBytes(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<uint8_t>*>(context);
+  auto* bytes = static_cast<uint8_t*>(data);
+  out->insert(out->end(), bytes, bytes + size);
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) {
+  throw OutputError("cannot write '" + path + "': " + why);
+}
+
+}  // namespace
+
+void writePng(const std::string& path, const Image& image) {
+  std::vector<uint8_t> encoded;
+  if (!stbi_write_png_to_func(appendBytes, &encoded, image.width, image.height, 3, image.rgb.data(),
+                              image.width * 3)) {
+    fail(path, "PNG encoding failed");
+  }
+  const std::filesystem::path target(path);
+  const std::filesystem::path temp =
+      target.parent_path() / (target.filename().string() + ".tmp-" + std::to_string(getpid()));
+  FILE* file = std::fopen(temp.c_str(), "wb");
+  if (!file) fail(path, std::strerror(errno));
+  const bool written = std::fwrite(encoded.data(), 1, encoded.size(), file) == encoded.size();
+  const int writeErrno = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed) {
+    std::filesystem::remove(temp);
+    fail(path, std::strerror(written ? errno : writeErrno));
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, target, ec);
+  if (ec) {
+    std::filesystem::remove(temp);
+    fail(path, ec.message());
+  }
+}
+
+Image readPng(const std::string& path) {
+  int w = 0, h = 0, channels = 0;
+  uint8_t* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
+  if (!data) throw std::runtime_error("cannot read PNG '" + path + "': " + stbi_failure_reason());
+  Image image(w, h);
+  std::memcpy(image.rgb.data(), data, image.rgb.size());
+  stbi_image_free(data);
+  return image;
+}
+
+}  // namespace phongvk

@@ -1,0 +1,39 @@
+// image.h — 8-bit RGB images and PNG output.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace phongvk {
+
+// An output file that cannot be written (bad folder, permissions, full disk).
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> rgb;  // row 0 at the top, 3 bytes per pixel
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgb(static_cast<size_t>(w) * h * 3, 0) {}
+  const uint8_t* pixel(int x, int y) const { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
+  uint8_t* pixel(int x, int y) { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
+};
+
+// An image from packed RGBA8 words (r in the low byte), as the shaders write them.
+Image imageFromPacked(const std::vector<uint32_t>& packed, int width, int height);
+
+// Encodes the image as PNG and writes it atomically: a temporary file in the same folder, then a
+// rename, so a failed or interrupted write never leaves a partial file. Throws OutputError naming
+// the path and the reason.
+void writePng(const std::string& path, const Image& image);
+
+// Reads a PNG (for tests and tools). Throws std::runtime_error naming the path.
+Image readPng(const std::string& path);
+
+}  // namespace phongvk

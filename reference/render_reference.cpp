@@ -1,0 +1,79 @@
+#include "render_reference.h"
+
+#include "shaders/phong.h"
+#include "shaders/raster.h"
+
+#include <algorithm>
+
+namespace phongvk {
+
+using namespace gpu;
+
+std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs& in) {
+  std::vector<ShadedVertex> shaded(data.vertices.size());
+  for (size_t i = 0; i < data.vertices.size(); ++i) {
+    const VertexIn& v = data.vertices[i];
+    const ObjectData& object = in.objects[v.object];
+    const MaterialData& m = data.materials[object.material];
+    const vec3 P = eyeRelative(v.position, object.worldOffset);
+    const vec3 V = toEye(P);
+    vec3 color = phongAmbient(m, in.frame.ambient);
+    for (const LightData& light : in.lights) color += phongLight(P, v.normal, V, m, light);
+    shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, in.frame), 1.0f);
+    shaded[i].color = vec4(color, 1.0f);
+  }
+  return shaded;
+}
+
+std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedVertex>& shaded,
+                                const FrameData& frame) {
+  std::vector<uint64_t> keys(static_cast<size_t>(frame.width) * frame.height, KEY_CLEAR);
+  for (uint32_t id = 0; id < data.triangles.size(); ++id) {
+    const glm::uvec4 tri = data.triangles[id];
+    const bool cullBack = (data.objects[tri.w].flags & OBJECT_CULL_BACK) != 0;
+    TriangleSetup t;
+    if (!setupTriangle(vec3(shaded[tri.x].hpos), vec3(shaded[tri.y].hpos), vec3(shaded[tri.z].hpos),
+                       cullBack, frame, t)) {
+      continue;
+    }
+    for (int k = 0; k + 2 < t.count; ++k) {
+      EdgeSetup s;
+      if (!setupFan(t, k, frame, s)) continue;
+      for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
+        for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
+          uint64_t& pixel = keys[static_cast<size_t>(y) * frame.width + x];
+          pixel = std::min(pixel, fragmentKey(t, s, x, y, frame, id));
+        }
+      }
+    }
+  }
+  return keys;
+}
+
+Image resolve(const SceneData& data, const std::vector<ShadedVertex>& shaded,
+              const std::vector<uint64_t>& keys, const FrameData& frame) {
+  std::vector<uint32_t> packed(keys.size());
+  const uint32_t background = packColor(frame.background);
+  for (uint32_t y = 0; y < frame.height; ++y) {
+    for (uint32_t x = 0; x < frame.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * frame.width + x;
+      if (keys[i] == KEY_CLEAR) {
+        packed[i] = background;
+        continue;
+      }
+      const glm::uvec4 tri = data.triangles[static_cast<uint32_t>(keys[i])];
+      packed[i] = resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame);
+    }
+  }
+  return imageFromPacked(packed, int(frame.width), int(frame.height));
+}
+
+RenderOutput renderReference(const SceneData& data, const FrameInputs& in) {
+  const std::vector<ShadedVertex> shaded = shadeVertices(data, in);
+  RenderOutput out;
+  out.keys = rasterize(data, shaded, in.frame);
+  out.image = resolve(data, shaded, out.keys, in.frame);
+  return out;
+}
+
+}  // namespace phongvk

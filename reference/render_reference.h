@@ -1,0 +1,31 @@
+// render_reference.h — the CPU reference renderer: plain, single-threaded loops over the shared
+// maths in shaders/phong.h and shaders/raster.h. It is the oracle every GPU image is diffed with.
+#pragma once
+
+#include "image.h"
+#include "scene_data.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace phongvk {
+
+struct RenderOutput {
+  Image image;
+  std::vector<uint64_t> keys;  // per pixel: (depth32 << 32) | triangle id, or KEY_CLEAR
+};
+
+// Per-vertex transform + Phong (the shade_vertices pass).
+std::vector<gpu::ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs& in);
+
+// Rasterizes every triangle into the per-pixel minimum keys (the raster passes).
+std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<gpu::ShadedVertex>& shaded,
+                                const gpu::FrameData& frame);
+
+// Keys -> Gouraud colours -> image (the resolve pass).
+Image resolve(const SceneData& data, const std::vector<gpu::ShadedVertex>& shaded,
+              const std::vector<uint64_t>& keys, const gpu::FrameData& frame);
+
+RenderOutput renderReference(const SceneData& data, const FrameInputs& in);
+
+}  // namespace phongvk

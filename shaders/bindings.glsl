@@ -1,0 +1,28 @@
+// bindings.glsl — the descriptor set every phongvk pass shares (numbers from shared.h).
+// Included by the .comp files after shared.h; a pass simply ignores the buffers it does not use.
+layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frame; };
+layout(std430, binding = BINDING_VERTICES) readonly buffer Vertices { VertexIn vertices[]; };
+layout(std430, binding = BINDING_TRIANGLES) readonly buffer Triangles { uvec4 triangles[]; };
+layout(std430, binding = BINDING_OBJECTS) readonly buffer Objects { ObjectData objects[]; };
+layout(std430, binding = BINDING_MATERIALS) readonly buffer Materials { MaterialData materials[]; };
+layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { LightData lights[]; };
+layout(std430, binding = BINDING_SHADED) buffer Shaded { ShadedVertex shaded[]; };
+layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
+layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
+layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 largeEntries[]; };
+
+// The three shaded vertices of triangle `id`.
+void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVertex c) {
+  uvec4 t = triangles[id];
+  a = shaded[t.x];
+  b = shaded[t.y];
+  c = shaded[t.z];
+}
+
+// Sets up triangle `id` for rasterization (raster.h); false when it draws nothing.
+bool setupTriangleById(uint id, out TriangleSetup t) {
+  uvec4 tri = triangles[id];
+  bool cullBack = (objects[tri.w].flags & OBJECT_CULL_BACK) != 0u;
+  return setupTriangle(shaded[tri.x].hpos.xyz, shaded[tri.y].hpos.xyz, shaded[tri.z].hpos.xyz, cullBack,
+                       frame, t);
+}

@@ -1,0 +1,49 @@
+// glsl_cpp.h — lets one maths header compile as GLSL and as C++ (GLM).
+//
+// phong.h and raster.h are written once, in the common subset of the two languages, and included
+// by the compute shaders and by the C++ reference. Both renderers therefore evaluate the same
+// float operations in the same order; `PRECISE` forbids FMA contraction in GLSL and the C++ side is
+// built with -ffp-contract=off. Rules for code in those headers:
+//   - float literals carry an `f` suffix (a bare 0.5 is a double in C++ and would promote);
+//   - dot/cross products are spelled out (dot3, cross3) so the association order is fixed;
+//   - functions are declared with FN; out/inout parameters with OUT/INOUT and OUT_ARRAY/INOUT_ARRAY.
+#ifndef PHONGVK_GLSL_CPP_H
+#define PHONGVK_GLSL_CPP_H
+
+#ifdef __cplusplus
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
+#define FN inline
+#define PRECISE
+#define OUT(T) T&
+#define INOUT(T) T&
+#define OUT_ARRAY(T, name, n) T (&name)[n]
+#define INOUT_ARRAY(T, name, n) T (&name)[n]
+#define SHARED_BEGIN namespace phongvk::gpu {
+#define SHARED_END }
+namespace phongvk::gpu {
+using glm::clamp;
+using glm::floor;
+using glm::max;
+using glm::min;
+using glm::sqrt;
+using ivec4 = glm::ivec4;
+using i64vec2 = glm::i64vec2;
+inline uint32_t floatBitsToUint(float f) { return std::bit_cast<uint32_t>(f); }
+inline float pow(float x, float y) { return std::pow(x, y); }
+}  // namespace phongvk::gpu
+#else
+#define FN
+#define PRECISE precise
+#define OUT(T) out T
+#define INOUT(T) inout T
+#define OUT_ARRAY(T, name, n) out T name[n]
+#define INOUT_ARRAY(T, name, n) inout T name[n]
+#define SHARED_BEGIN
+#define SHARED_END
+#endif
+
+#endif  // PHONGVK_GLSL_CPP_H

@@ -1,0 +1,70 @@
+// phong.h — per-vertex transform and Phong illumination (DESIGN.md "Phong, per vertex").
+// Shared by shade_vertices.comp and the C++ reference; see glsl_cpp.h for the dialect rules.
+#ifndef PHONGVK_PHONG_H
+#define PHONGVK_PHONG_H
+
+#include "glsl_cpp.h"
+#include "shared.h"
+
+SHARED_BEGIN
+
+FN float dot3(vec3 a, vec3 b) {
+  PRECISE float r = a.x * b.x + a.y * b.y + a.z * b.z;
+  return r;
+}
+
+FN vec3 cross3(vec3 a, vec3 b) {
+  PRECISE vec3 r = vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+  return r;
+}
+
+// Homogeneous pixel-space position of a vertex: (focal * x_view, -focal * y_view, z_view).
+// The view position is rotate(local) + viewOffset, where viewOffset = rotate(origin - eye) was
+// computed in double on the host: far-away objects keep their float precision.
+FN vec3 toHomogeneous(vec3 local, vec3 viewOffset, FrameData frame) {
+  PRECISE vec3 view = vec3(dot3(vec3(frame.right), local), dot3(vec3(frame.up), local),
+                           dot3(vec3(frame.forward), local)) + viewOffset;
+  PRECISE vec3 h = vec3(frame.focal * view.x, -frame.focal * view.y, view.z);
+  return h;
+}
+
+// One light's diffuse + specular contribution at P (all positions relative to the eye):
+// S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0.
+FN vec3 phongLight(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light) {
+  PRECISE vec3 toLight = light.position - P;
+  PRECISE float d = sqrt(dot3(toLight, toLight));
+  if (d == 0.0f) return vec3(0.0f);  // a light exactly at the vertex adds nothing
+  PRECISE vec3 l = toLight / d;
+  PRECISE float NdotL = dot3(N, l);
+  if (NdotL <= 0.0f) return vec3(0.0f);
+  PRECISE float S = 1.0f / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
+  PRECISE vec3 r = 2.0f * NdotL * N - l;
+  PRECISE float rV = max(dot3(r, V), 0.0f);
+  // max(r.V, 0)^n with n = 0 is 1; pow(0, n > 0) is 0 (GLSL's pow is undefined at x = 0).
+  PRECISE float specular = m.n == 0.0f ? 1.0f : (rV > 0.0f ? pow(rV, m.n) : 0.0f);
+  PRECISE vec3 lit = (S * light.intensity) * (m.color * light.color) * (m.kd * NdotL + m.ks * specular);
+  return lit;
+}
+
+// ka * C * A: the ambient term every vertex gets.
+FN vec3 phongAmbient(MaterialData m, vec3 ambient) {
+  PRECISE vec3 a = m.ka * m.color * ambient;
+  return a;
+}
+
+// A vertex's position relative to the eye, in world axes (for lighting).
+FN vec3 eyeRelative(vec3 local, vec3 worldOffset) {
+  PRECISE vec3 P = local + worldOffset;
+  return P;
+}
+
+// Unit vector from P towards the eye (the origin); zero when P is the eye itself.
+FN vec3 toEye(vec3 P) {
+  PRECISE float len = sqrt(dot3(P, P));
+  PRECISE vec3 V = len > 0.0f ? -P / len : vec3(0.0f);
+  return V;
+}
+
+SHARED_END
+
+#endif  // PHONGVK_PHONG_H

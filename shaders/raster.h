@@ -1,0 +1,331 @@
+// raster.h — triangle setup, coverage, depth key and Gouraud interpolation (DESIGN.md
+// "Rasterization", "Visibility", "Gouraud"). Shared by the raster/resolve shaders and the C++
+// reference; see glsl_cpp.h for the dialect rules.
+//
+// Coordinates: a vertex's homogeneous pixel-space position h = (X, Y, W) (phong.h). Its screen
+// position is principal + h.xy / W, y down. Pixel (x, y) has its centre at (x + 0.5, y + 0.5),
+// i.e. at p = (x + 0.5 - cx, y + 0.5 - cy, 1) in the same frame as h.
+//
+// Coverage uses the triangle clipped against the near plane (and a far guard band), snapped to
+// 1/256 pixel, with integer edge functions and the top-left rule. Depth and colour use the
+// original triangle's plane: the ray through the pixel centre meets it at view depth
+// z = dot(h0, n) / dot(p, n), n = (h1 - h0) x (h2 - h0); the same quantities give
+// perspective-correct barycentrics. No w <= 0 is ever divided by.
+#ifndef PHONGVK_RASTER_H
+#define PHONGVK_RASTER_H
+
+#include "glsl_cpp.h"
+#include "phong.h"
+#include "shared.h"
+
+SHARED_BEGIN
+
+// ---- Clipping ----
+
+// Signed distances of h to the five clip planes (inside >= 0): near, and the guard band's
+// left, right, top and bottom.
+FN float clipDistance(vec3 h, int plane, float nearPlane) {
+  PRECISE float g = GUARD_BAND * h.z;
+  if (plane == 0) return h.z - nearPlane;
+  if (plane == 1) return h.x + g;
+  if (plane == 2) return g - h.x;
+  if (plane == 3) return h.y + g;
+  return g - h.y;
+}
+
+// The point where segment inside -> outside crosses a plane. Always computed from the inside
+// end, so two triangles sharing an edge produce bit-identical points (no crack, no overlap).
+FN vec3 clipIntersect(vec3 inside, vec3 outside, float dIn, float dOut) {
+  PRECISE float t = dIn / (dIn - dOut);
+  PRECISE vec3 p = inside + t * (outside - inside);
+  return p;
+}
+
+// Sutherland-Hodgman against one plane: poly (count n) -> result; returns the new count.
+FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int plane, float nearPlane) {
+  vec3 result[MAX_CLIP_VERTICES];
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    vec3 a = poly[i];
+    vec3 b = poly[(i + 1) % n];
+    float da = clipDistance(a, plane, nearPlane);
+    float db = clipDistance(b, plane, nearPlane);
+    if (da >= 0.0f) result[m++] = a;
+    if ((da >= 0.0f) != (db >= 0.0f)) {
+      result[m++] = da >= 0.0f ? clipIntersect(a, b, da, db) : clipIntersect(b, a, db, da);
+    }
+  }
+  for (int i = 0; i < m; ++i) poly[i] = result[i];
+  return m;
+}
+
+// Clips triangle h0 h1 h2 to the near plane and guard band. Returns the vertex count of the
+// convex polygon left in poly (0 when nothing is in front of the near plane).
+FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, OUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES)) {
+  poly[0] = h0;
+  poly[1] = h1;
+  poly[2] = h2;
+  int n = 3;
+  for (int plane = 0; plane < 5 && n > 0; ++plane) {
+    bool allInside = true;
+    for (int i = 0; i < n; ++i) allInside = allInside && clipDistance(poly[i], plane, nearPlane) >= 0.0f;
+    if (!allInside) n = clipAgainstPlane(poly, n, plane, nearPlane);
+  }
+  return n < 3 ? 0 : n;
+}
+
+// True when the whole triangle is outside one of the view frustum's planes (off screen, behind
+// the near plane or beyond the far plane): it cannot cover a pixel. Valid for any sign of W.
+FN bool outsideFrustum(vec3 h0, vec3 h1, vec3 h2, FrameData frame) {
+  vec3 lim = vec3(frame.principal.x, frame.principal.y, 0.0f);
+  for (int plane = 0; plane < 6; ++plane) {
+    bool allOut = true;
+    for (int i = 0; i < 3; ++i) {
+      vec3 h = i == 0 ? h0 : (i == 1 ? h1 : h2);
+      PRECISE float d;
+      if (plane == 0) d = h.z - frame.nearPlane;
+      else if (plane == 1) d = frame.farPlane - h.z;
+      else if (plane == 2) d = h.x + lim.x * h.z;
+      else if (plane == 3) d = lim.x * h.z - h.x;
+      else if (plane == 4) d = h.y + lim.y * h.z;
+      else d = lim.y * h.z - h.y;
+      allOut = allOut && d < 0.0f;
+    }
+    if (allOut) return true;
+  }
+  return false;
+}
+
+// ---- Snapping and edge functions ----
+
+// Screen position in 1/256 pixel units, rounded to nearest (ties up). W >= near here.
+FN i64vec2 snapToSubpixel(vec3 h, vec2 principal) {
+  PRECISE float sx = (h.x / h.z + principal.x) * float(SUBPIXEL_ONE) + 0.5f;
+  PRECISE float sy = (h.y / h.z + principal.y) * float(SUBPIXEL_ONE) + 0.5f;
+  return i64vec2(int64_t(floor(sx)), int64_t(floor(sy)));
+}
+
+// Twice the signed area of a b p in subpixel units; > 0 when p is inside a clockwise-on-screen
+// (y down) oriented edge a -> b.
+FN int64_t edgeFunction(i64vec2 a, i64vec2 b, i64vec2 p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+// Top-left rule for triangles oriented so edge functions are positive inside (y down): a top edge
+// is horizontal with the inside below it, a left edge goes up. Pixels exactly on such an edge
+// are covered; on any other edge they are not. Returned as the bias added before the >= 0 test.
+FN int64_t topLeftBias(i64vec2 a, i64vec2 b) {
+  int64_t dx = b.x - a.x;
+  int64_t dy = b.y - a.y;
+  bool topLeft = (dy == int64_t(0) && dx > int64_t(0)) || dy < int64_t(0);
+  return topLeft ? int64_t(0) : int64_t(-1);
+}
+
+// A snapped sub-triangle ready to rasterize: vertices oriented so that inside is positive,
+// per-edge top-left biases, and its pixel bounding box clipped to the image (x0 > x1 if empty).
+struct EdgeSetup {
+  i64vec2 v0;
+  i64vec2 v1;
+  i64vec2 v2;
+  int64_t bias0;
+  int64_t bias1;
+  int64_t bias2;
+  ivec4 bbox;  // x0, y0, x1, y1 inclusive
+};
+
+FN int64_t floorDiv256(int64_t v) {
+  return v >= int64_t(0) ? v / int64_t(256) : -((-v + int64_t(255)) / int64_t(256));
+}
+
+// The pixels whose centres lie in the subpixel box [lo, hi], clipped to the image:
+// (x0, y0, x1, y1) inclusive, empty when x0 > x1 or y0 > y1. Pixel x's centre is x * 256 + 128.
+FN ivec4 pixelBounds(i64vec2 lo, i64vec2 hi, uint width, uint height) {
+  int64_t x0 = max(floorDiv256(lo.x - int64_t(SUBPIXEL_HALF) + int64_t(255)), int64_t(0));
+  int64_t y0 = max(floorDiv256(lo.y - int64_t(SUBPIXEL_HALF) + int64_t(255)), int64_t(0));
+  int64_t x1 = min(floorDiv256(hi.x - int64_t(SUBPIXEL_HALF)), int64_t(width) - int64_t(1));
+  int64_t y1 = min(floorDiv256(hi.y - int64_t(SUBPIXEL_HALF)), int64_t(height) - int64_t(1));
+  // Keep the empty cases empty without overflowing int: clamp to just outside the image.
+  return ivec4(int(min(x0, int64_t(width))), int(min(y0, int64_t(height))), int(max(x1, int64_t(-1))),
+               int(max(y1, int64_t(-1))));
+}
+
+FN bool isEmpty(ivec4 box) { return box.x > box.z || box.y > box.w; }
+
+// Sets up sub-triangle a b c. frontFacing says which screen orientation the whole triangle has;
+// a sub-triangle whose snapped orientation disagrees (snapping flipped a sliver) or whose snapped
+// area is zero covers nothing and is rejected (returns false), as is one covering no pixel centre
+// of the image's bounding box.
+FN bool setupEdges(i64vec2 a, i64vec2 b, i64vec2 c, bool frontFacing, uint width, uint height, OUT(EdgeSetup) s) {
+  int64_t area = edgeFunction(a, b, c);
+  if (area == int64_t(0) || (area < int64_t(0)) != frontFacing) return false;
+  s.v0 = a;
+  s.v1 = frontFacing ? c : b;  // front faces are counter-clockwise on a y-down screen: flip them
+  s.v2 = frontFacing ? b : c;
+  s.bias0 = topLeftBias(s.v1, s.v2);
+  s.bias1 = topLeftBias(s.v2, s.v0);
+  s.bias2 = topLeftBias(s.v0, s.v1);
+  s.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), width, height);
+  return !isEmpty(s.bbox);
+}
+
+// The subpixel position of pixel (x, y)'s centre.
+FN i64vec2 pixelCentre(int x, int y) {
+  return i64vec2(int64_t(x) * int64_t(SUBPIXEL_ONE) + int64_t(SUBPIXEL_HALF),
+                 int64_t(y) * int64_t(SUBPIXEL_ONE) + int64_t(SUBPIXEL_HALF));
+}
+
+FN bool covers(EdgeSetup s, i64vec2 p) {
+  return edgeFunction(s.v1, s.v2, p) + s.bias0 >= int64_t(0) &&
+         edgeFunction(s.v2, s.v0, p) + s.bias1 >= int64_t(0) &&
+         edgeFunction(s.v0, s.v1, p) + s.bias2 >= int64_t(0);
+}
+
+// ---- Depth and visibility key ----
+
+// The triangle's plane in pixel space: n = (h1 - h0) x (h2 - h0) and dot(h0, n). dot(h0, n) < 0
+// exactly when the triangle faces the eye (counter-clockwise seen from outside).
+struct TrianglePlane {
+  vec3 n;
+  float h0n;
+};
+
+FN TrianglePlane trianglePlane(vec3 h0, vec3 h1, vec3 h2) {
+  TrianglePlane t;
+  t.n = cross3(h1 - h0, h2 - h0);
+  t.h0n = dot3(h0, t.n);
+  return t;
+}
+
+// The pixel centre as a ray direction in pixel space: (x + 0.5 - cx, y + 0.5 - cy, 1).
+FN vec3 pixelRay(int x, int y, vec2 principal) {
+  PRECISE vec3 p = vec3(float(x) + 0.5f - principal.x, float(y) + 0.5f - principal.y, 1.0f);
+  return p;
+}
+
+// View depth where the pixel's ray meets the triangle's plane.
+FN float depthAt(TrianglePlane t, vec3 p) {
+  PRECISE float z = t.h0n / dot3(p, t.n);
+  return z;
+}
+
+PHONGVK_CONST uint64_t KEY_CLEAR = 0xFFFFFFFFFFFFFFFFul;
+
+// The 64-bit visibility key: depth's float bits above, the triangle id below; the smallest key
+// wins a pixel, so equal depths go to the lower triangle id. The depth is held to the depth range
+// [zMin, zMax] of the clipped polygon: a pixel centre covered only thanks to snapping must not
+// extrapolate an edge-on plane to a depth in front of the eye (or to NaN, which goes to zMin).
+// Returns KEY_CLEAR for a fragment beyond the far plane.
+FN uint64_t depthKey(float z, float zMin, float zMax, float farPlane, uint triangle) {
+  float depth = z >= zMin ? (z <= zMax ? z : zMax) : zMin;
+  if (depth > farPlane) return KEY_CLEAR;
+  return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(triangle);
+}
+
+// ---- One triangle, start to finish ----
+
+// Everything the raster loops need from one triangle: its clipped polygon snapped to subpixels,
+// facing, depth range and plane, and the pixel bounding box of the whole polygon.
+struct TriangleSetup {
+  i64vec2 snapped[MAX_CLIP_VERTICES];
+  int count;           // polygon vertices; sub-triangles are the fan (0, k + 1, k + 2)
+  bool frontFacing;
+  float zMin;
+  float zMax;
+  TrianglePlane plane;
+  ivec4 bbox;
+};
+
+// Culls (off screen, edge-on or zero area, back face of a closed object, nothing in front of the
+// near plane, no pixel centre in the bounding box) and sets up the rest. False: draws nothing.
+FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, FrameData frame, OUT(TriangleSetup) t) {
+  if (outsideFrustum(h0, h1, h2, frame)) return false;
+  t.plane = trianglePlane(h0, h1, h2);
+  if (t.plane.h0n == 0.0f) return false;
+  t.frontFacing = t.plane.h0n < 0.0f;
+  if (cullBack && !t.frontFacing) return false;
+  vec3 poly[MAX_CLIP_VERTICES];
+  t.count = clipTriangle(h0, h1, h2, frame.nearPlane, poly);
+  if (t.count == 0) return false;
+  t.zMin = poly[0].z;
+  t.zMax = poly[0].z;
+  i64vec2 lo = snapToSubpixel(poly[0], frame.principal);
+  i64vec2 hi = lo;
+  t.snapped[0] = lo;
+  for (int i = 1; i < t.count; ++i) {
+    t.zMin = min(t.zMin, poly[i].z);
+    t.zMax = max(t.zMax, poly[i].z);
+    t.snapped[i] = snapToSubpixel(poly[i], frame.principal);
+    lo = min(lo, t.snapped[i]);
+    hi = max(hi, t.snapped[i]);
+  }
+  t.bbox = pixelBounds(lo, hi, frame.width, frame.height);
+  return !isEmpty(t.bbox);
+}
+
+FN int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
+
+// Rows per large-pass chunk for a polygon's bounding box: about LARGE_CHUNK_PIXELS pixels each.
+FN int rowsPerChunk(ivec4 box) { return max(1, int(LARGE_CHUNK_PIXELS) / (box.z - box.x + 1)); }
+
+FN int chunkCount(ivec4 box) {
+  int rows = box.w - box.y + 1;
+  return (rows + rowsPerChunk(box) - 1) / rowsPerChunk(box);
+}
+
+// Sub-triangle k (0 <= k < count - 2) of a set-up triangle's fan.
+FN bool setupFan(TriangleSetup t, int k, FrameData frame, OUT(EdgeSetup) s) {
+  return setupEdges(t.snapped[0], t.snapped[k + 1], t.snapped[k + 2], t.frontFacing, frame.width,
+                    frame.height, s);
+}
+
+// The key triangle `triangle` offers pixel (x, y), or KEY_CLEAR if it does not cover it.
+FN uint64_t fragmentKey(TriangleSetup t, EdgeSetup s, int x, int y, FrameData frame, uint triangle) {
+  if (!covers(s, pixelCentre(x, y))) return KEY_CLEAR;
+  float z = depthAt(t.plane, pixelRay(x, y, frame.principal));
+  return depthKey(z, t.zMin, t.zMax, frame.farPlane, triangle);
+}
+
+// ---- Gouraud ----
+
+// Vertex colour interpolated at pixel ray p, perspective-correct or linear in screen space.
+FN vec3 interpolateColor(vec3 h0, vec3 h1, vec3 h2, vec3 c0, vec3 c1, vec3 c2, vec3 p, uint mode) {
+  PRECISE vec3 e1 = h1 - h0;
+  PRECISE vec3 e2 = h2 - h0;
+  PRECISE vec3 n = cross3(e1, e2);
+  PRECISE float d1 = dot3(p, cross3(e2, h0));  // proportional to the barycentric of vertex 1
+  PRECISE float d2 = dot3(p, cross3(h0, e1));  // ... of vertex 2
+  PRECISE float b1;
+  PRECISE float b2;
+  if (mode == INTERP_SCREEN) {
+    // Screen-space barycentrics are the perspective ones times W / (interpolated W).
+    PRECISE float det = dot3(h0, n);
+    b1 = d1 * h1.z / det;
+    b2 = d2 * h2.z / det;
+  } else {
+    PRECISE float pn = dot3(p, n);
+    b1 = d1 / pn;
+    b2 = d2 / pn;
+  }
+  // Held to [0, 1] (NaN to 0): only pixels covered thanks to snapping extrapolate.
+  b1 = b1 >= 0.0f ? (b1 <= 1.0f ? b1 : 1.0f) : 0.0f;
+  b2 = b2 >= 0.0f ? (b2 <= 1.0f ? b2 : 1.0f) : 0.0f;
+  PRECISE vec3 c = c0 + b1 * (c1 - c0) + b2 * (c2 - c0);
+  return c;
+}
+
+// Clamp to [0, 1], round(c * 255), pack as RGBA8 with opaque alpha.
+FN uint packColor(vec3 c) {
+  PRECISE vec3 q = floor(clamp(c, vec3(0.0f), vec3(1.0f)) * 255.0f + 0.5f);
+  return uint(q.x) | (uint(q.y) << 8) | (uint(q.z) << 16) | (255u << 24);
+}
+
+// The final RGBA8 of pixel (x, y) won by the triangle with these vertices.
+FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int y, FrameData frame) {
+  vec3 p = pixelRay(x, y, frame.principal);
+  return packColor(interpolateColor(vec3(a.hpos), vec3(b.hpos), vec3(c.hpos), vec3(a.color),
+                                    vec3(b.color), vec3(c.color), p, frame.interpolation));
+}
+
+SHARED_END
+
+#endif  // PHONGVK_RASTER_H

@@ -1,0 +1,45 @@
+// Triangle pass: one invocation per triangle. Clip, cull and snap (raster.h); a triangle whose
+// pixel bounding box is small is rasterized right here, a large one is cut into row chunks that
+// the large pass spreads over whole workgroups (raster_large.comp).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+#include "shared.h"
+#include "raster.h"
+#include "bindings.glsl"
+
+layout(local_size_x = SETUP_GROUP_SIZE) in;
+
+// Appends triangle id's row chunks to the large list; false when the list is full.
+bool deferToLargePass(uint id, TriangleSetup t) {
+  uint chunks = uint(chunkCount(t.bbox));
+  uint first = atomicAdd(large.count, chunks);
+  if (first + chunks > frame.largeCapacity) return false;
+  for (uint c = 0u; c < chunks; ++c) largeEntries[first + c] = uvec2(id, c);
+  atomicMax(large.groupsX, min(first + chunks, MAX_DISPATCH_GROUPS));
+  return true;
+}
+
+void rasterizeHere(uint id, TriangleSetup t) {
+  for (int k = 0; k + 2 < t.count; ++k) {
+    EdgeSetup s;
+    if (!setupFan(t, k, frame, s)) continue;
+    for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
+      for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
+        uint64_t key = fragmentKey(t, s, x, y, frame, id);
+        if (key != KEY_CLEAR) atomicMin(keys[uint(y) * frame.width + uint(x)], key);
+      }
+    }
+  }
+}
+
+void main() {
+  // Grid-stride: the host caps the group count at MAX_DISPATCH_GROUPS.
+  for (uint id = gl_GlobalInvocationID.x; id < frame.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
+    TriangleSetup t;
+    if (!setupTriangleById(id, t)) continue;
+    if (uint(boxPixels(t.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(id, t)) continue;
+    rasterizeHere(id, t);
+  }
+}

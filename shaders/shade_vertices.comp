@@ -1,0 +1,28 @@
+// Per-vertex pass: transform to homogeneous pixel space and evaluate Phong (phong.h).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#include "shared.h"
+#include "raster.h"
+#include "bindings.glsl"
+
+layout(local_size_x = SHADE_GROUP_SIZE) in;
+
+void shadeVertex(uint i) {
+  VertexIn v = vertices[i];
+  ObjectData object = objects[v.object];
+  MaterialData m = materials[object.material];
+  vec3 P = eyeRelative(v.position, object.worldOffset);
+  vec3 V = toEye(P);
+  vec3 color = phongAmbient(m, frame.ambient);
+  for (uint l = 0u; l < frame.lightCount; ++l) color += phongLight(P, v.normal, V, m, lights[l]);
+  shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
+  shaded[i].color = vec4(color, 1.0f);
+}
+
+void main() {
+  // Grid-stride: the host caps the group count at MAX_DISPATCH_GROUPS.
+  for (uint i = gl_GlobalInvocationID.x; i < frame.vertexCount; i += gl_NumWorkGroups.x * SHADE_GROUP_SIZE) {
+    shadeVertex(i);
+  }
+}
