@@ -1,0 +1,226 @@
+#include "gpu_renderer.h"
+
+#include "host/vk_check.h"
+
+#include "shaders/raster_large.spv.h"
+#include "shaders/raster_triangles.spv.h"
+#include "shaders/resolve.spv.h"
+#include "shaders/shade_vertices.spv.h"
+#include "shaders/shared.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace phongvk {
+
+namespace {
+
+using namespace gpu;
+
+constexpr VkBufferUsageFlags STORAGE = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+// Every pass sees the same descriptor set (shaders/bindings.glsl).
+constexpr Binding BINDINGS[] = {
+    {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},    {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_SHADED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},    {BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+};
+
+// Threads -> groups, capped so the dispatch is legal on every device (the shaders grid-stride).
+uint32_t cappedGroups(uint32_t threads, uint32_t groupSize) {
+  return std::min(groupCount(threads, groupSize), MAX_DISPATCH_GROUPS);
+}
+
+// Throws when one array would exceed the device's largest storage buffer binding.
+void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
+  const VkDeviceSize limit = context.properties.limits.maxStorageBufferRange;
+  if (bytes > limit) {
+    throw std::runtime_error(std::string("scene too large for ") + context.report.name + ": " + what + " need " +
+                             std::to_string(bytes) + " bytes, more than maxStorageBufferRange (" +
+                             std::to_string(limit) + ")");
+  }
+}
+
+template <typename T>
+void createAndUpload(Buffer& buffer, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind,
+                     const char* what) {
+  const VkDeviceSize bytes = data.size() * sizeof(T);
+  checkFits(context, bytes, what);
+  createBuffer(buffer, context, bytes, STORAGE, kind);
+  if (bytes) uploadToBuffer(context, buffer, data.data(), bytes);
+}
+
+}  // namespace
+
+GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data) : context_(context) {
+  try {
+    createPipelines();
+    createDescriptorArena(arena_, context_, 1);
+    createTimestampPool(timestamps_, context_, PASS_COUNT + 1);
+    uploadScene(data);
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+GpuRenderer::~GpuRenderer() { release(); }
+
+void GpuRenderer::release() {
+  for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &large_, &keys_,
+                    &colors_, &colorReadback_, &keyReadback_}) {
+    destroyBuffer(*b, context_);
+  }
+  destroyTimestampPool(timestamps_, context_);
+  destroyDescriptorArena(arena_, context_);
+  for (ComputePipeline& p : pipelines_) destroyComputePipeline(p, context_);
+}
+
+void GpuRenderer::createPipelines() {
+  pipelines_[SHADE] = createComputePipeline(context_, spirv_shade_vertices, sizeof(spirv_shade_vertices), BINDINGS, 0, {});
+  pipelines_[RASTER] =
+      createComputePipeline(context_, spirv_raster_triangles, sizeof(spirv_raster_triangles), BINDINGS, 0, {});
+  pipelines_[LARGE] = createComputePipeline(context_, spirv_raster_large, sizeof(spirv_raster_large), BINDINGS, 0, {});
+  pipelines_[RESOLVE] = createComputePipeline(context_, spirv_resolve, sizeof(spirv_resolve), BINDINGS, 0, {});
+}
+
+void GpuRenderer::uploadScene(const SceneData& data) {
+  vertexCount_ = static_cast<uint32_t>(data.vertices.size());
+  triangleCount_ = static_cast<uint32_t>(data.triangles.size());
+  createAndUpload(vertices_, context_, data.vertices, MemoryKind::DeviceLocal, "the vertices");
+  createAndUpload(triangles_, context_, data.triangles, MemoryKind::DeviceLocal, "the triangles");
+  createAndUpload(materials_, context_, data.materials, MemoryKind::DeviceLocal, "the materials");
+  // Objects and lights carry eye-relative offsets: rewritten every frame, so host visible.
+  createAndUpload(objects_, context_, data.objects, MemoryKind::HostVisible, "the objects");
+  createAndUpload(lights_, context_, data.lights, MemoryKind::HostVisible, "the lights");
+  createBuffer(frame_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
+  const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(ShadedVertex);
+  checkFits(context_, shadedBytes, "the shaded vertices");
+  createBuffer(shaded_, context_, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  largeCapacity_ = triangleCount_ + LARGE_LIST_SPARE;
+  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(largeCapacity_) * sizeof(glm::uvec2);
+  checkFits(context_, largeBytes, "the large-triangle list");
+  createBuffer(large_, context_, largeBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+}
+
+void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
+  if (width == width_ && height == height_) return;
+  const VkDeviceSize pixels = VkDeviceSize(width) * height;
+  checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
+  for (Buffer* b : {&keys_, &colors_, &colorReadback_, &keyReadback_}) destroyBuffer(*b, context_);
+  createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
+  createBuffer(colors_, context_, pixels * sizeof(uint32_t), STORAGE, MemoryKind::DeviceLocal);
+  createBuffer(colorReadback_, context_, pixels * sizeof(uint32_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+               MemoryKind::HostVisible);
+  width_ = width;
+  height_ = height;
+  updateDescriptors();
+}
+
+void GpuRenderer::updateDescriptors() {
+  if (set_ != VK_NULL_HANDLE) {
+    VK_CHECK(vkResetDescriptorPool(context_.device, arena_.pool, 0));
+  }
+  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const BufferDescriptor descriptors[] = {
+      {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame_.buffer},
+      {BINDING_VERTICES, storage, vertices_.buffer},
+      {BINDING_TRIANGLES, storage, triangles_.buffer},
+      {BINDING_OBJECTS, storage, objects_.buffer},
+      {BINDING_MATERIALS, storage, materials_.buffer},
+      {BINDING_LIGHTS, storage, lights_.buffer},
+      {BINDING_SHADED, storage, shaded_.buffer},
+      {BINDING_KEYS, storage, keys_.buffer},
+      {BINDING_COLOR, storage, colors_.buffer},
+      {BINDING_LARGE, storage, large_.buffer},
+  };
+  // Identically defined set layouts are compatible: one set serves all four pipelines.
+  set_ = allocateDescriptorSet(context_, arena_, pipelines_[SHADE].setLayout, descriptors);
+}
+
+void GpuRenderer::uploadFrame(const FrameInputs& in) {
+  FrameData frame = in.frame;
+  frame.largeCapacity = largeCapacity_;
+  uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
+  if (!in.objects.empty()) uploadToBuffer(context_, objects_, in.objects.data(), in.objects.size() * sizeof(ObjectData));
+  if (!in.lights.empty()) uploadToBuffer(context_, lights_, in.lights.data(), in.lights.size() * sizeof(LightData));
+}
+
+void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool withKeys) {
+  resetTimestamps(cmd, timestamps_);
+  vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
+  const LargeList emptyList = {0, 0, 1, 1};
+  vkCmdUpdateBuffer(cmd, large_.buffer, 0, sizeof emptyList, &emptyList);
+  transferToComputeBarrier(cmd);
+
+  auto bind = [&](Pass pass) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass].pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass].layout, 0, 1, &set_, 0, nullptr);
+  };
+  writeTimestamp(cmd, timestamps_, 0);
+  bind(SHADE);
+  vkCmdDispatch(cmd, cappedGroups(vertexCount_, SHADE_GROUP_SIZE), 1, 1);
+  computeBarrier(cmd);
+  writeTimestamp(cmd, timestamps_, 1);
+  bind(RASTER);
+  vkCmdDispatch(cmd, cappedGroups(triangleCount_, SETUP_GROUP_SIZE), 1, 1);
+  computeBarrier(cmd);
+  writeTimestamp(cmd, timestamps_, 2);
+  bind(LARGE);
+  vkCmdDispatchIndirect(cmd, large_.buffer, offsetof(LargeList, groupsX));
+  computeBarrier(cmd);
+  writeTimestamp(cmd, timestamps_, 3);
+  bind(RESOLVE);
+  vkCmdDispatch(cmd, groupCount(frame.width, RESOLVE_GROUP_X), groupCount(frame.height, RESOLVE_GROUP_Y), 1);
+  writeTimestamp(cmd, timestamps_, 4);
+
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT);
+  const VkDeviceSize pixels = VkDeviceSize(frame.width) * frame.height;
+  VkBufferCopy colorCopy = {0, 0, pixels * sizeof(uint32_t)};
+  vkCmdCopyBuffer(cmd, colors_.buffer, colorReadback_.buffer, 1, &colorCopy);
+  if (withKeys) {
+    VkBufferCopy keyCopy = {0, 0, pixels * sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
+  }
+}
+
+void GpuRenderer::readTimes() {
+  const std::vector<double> t = readTimestamps(context_, timestamps_);
+  if (t.size() < PASS_COUNT + 1) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    times_ = {nan, nan, nan, nan, nan};
+    return;
+  }
+  times_ = {t[1] - t[0], t[2] - t[1], t[3] - t[2], t[4] - t[3], t[4] - t[0]};
+}
+
+RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
+  ensureImageBuffers(in.frame.width, in.frame.height);
+  const VkDeviceSize pixels = VkDeviceSize(width_) * height_;
+  if (withKeys && keyReadback_.buffer == VK_NULL_HANDLE) {
+    createBuffer(keyReadback_, context_, pixels * sizeof(uint64_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                 MemoryKind::HostVisible);
+  }
+  uploadFrame(in);
+  VkCommandBuffer cmd = beginOneTimeCommands(context_);
+  recordFrame(cmd, in.frame, withKeys);
+  submitAndWait(context_, cmd);
+  readTimes();
+
+  std::vector<uint32_t> packed(pixels);
+  readFromBuffer(context_, colorReadback_, packed.data(), pixels * sizeof(uint32_t));
+  RenderOutput out;
+  out.image = imageFromPacked(packed, int(width_), int(height_));
+  if (withKeys) {
+    out.keys.resize(pixels);
+    readFromBuffer(context_, keyReadback_, out.keys.data(), pixels * sizeof(uint64_t));
+  }
+  return out;
+}
+
+}  // namespace phongvk

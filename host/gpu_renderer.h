@@ -1,0 +1,66 @@
+// gpu_renderer.h — the Vulkan compute port: per-vertex Phong, 64-bit atomic-depth raster and
+// Gouraud resolve (DESIGN.md "GPU pipeline shape"). The scene is uploaded once; each frame sends
+// only the camera-dependent data (FrameInputs).
+#pragma once
+
+#include "host/commands.h"
+#include "host/context.h"
+#include "host/pipelines.h"
+#include "host/resources.h"
+#include "reference/render_reference.h"
+#include "reference/scene_data.h"
+
+namespace phongvk {
+
+// Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
+struct PassTimes {
+  double shade = 0;
+  double raster = 0;  // triangle pass: setup, culling, small triangles
+  double large = 0;   // large-triangle pass
+  double resolve = 0;
+  double total = 0;
+};
+
+class GpuRenderer {
+ public:
+  // Uploads the scene's vertices, triangles and materials. Throws std::runtime_error when the
+  // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
+  GpuRenderer(const VulkanContext& context, const SceneData& data);
+  ~GpuRenderer();
+  GpuRenderer(const GpuRenderer&) = delete;
+  GpuRenderer& operator=(const GpuRenderer&) = delete;
+
+  // Renders one frame. withKeys also reads back the per-pixel visibility keys (for diffs).
+  RenderOutput render(const FrameInputs& in, bool withKeys = false);
+
+  const PassTimes& lastPassTimes() const { return times_; }
+
+ private:
+  enum Pass { SHADE, RASTER, LARGE, RESOLVE, PASS_COUNT };
+
+  void release();  // destroys whatever exists; safe to call twice
+  void createPipelines();
+  void uploadScene(const SceneData& data);
+  void ensureImageBuffers(uint32_t width, uint32_t height);
+  void updateDescriptors();
+  void uploadFrame(const FrameInputs& in);
+  void recordFrame(VkCommandBuffer cmd, const gpu::FrameData& frame, bool withKeys);
+  void readTimes();
+
+  const VulkanContext& context_;
+  ComputePipeline pipelines_[PASS_COUNT];
+  DescriptorArena arena_;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  TimestampPool timestamps_;
+  PassTimes times_;
+
+  Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, large_;
+  Buffer keys_, colors_, colorReadback_, keyReadback_;
+  uint32_t vertexCount_ = 0;
+  uint32_t triangleCount_ = 0;
+  uint32_t largeCapacity_ = 0;
+  uint32_t width_ = 0;
+  uint32_t height_ = 0;
+};
+
+}  // namespace phongvk

@@ -1,0 +1,55 @@
+// phongvk — headless Phong/Gouraud renderer. main parses arguments and calls host/app.h.
+#include "host/app.h"
+
+#include <CLI/CLI.hpp>
+
+namespace {
+
+void addViewOptions(CLI::App* command, phongvk::ViewOptions& options) {
+  command->add_option("scene", options.scene, "Scene file (JSON)")->required();
+  auto* width = command->add_option("--width", options.width, "Image width in pixels (with --height)")
+                    ->check(CLI::Range(1, 16384));
+  auto* height = command->add_option("--height", options.height, "Image height in pixels (with --width)")
+                     ->check(CLI::Range(1, 16384));
+  width->needs(height);
+  height->needs(width);
+  command->add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")
+      ->check(CLI::NonNegativeNumber);
+  command->add_flag("--validate", options.validate, "Enable the Vulkan validation layers");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"phongvk: Phong illumination per vertex, Gouraud interpolation, on Vulkan compute or the CPU reference"};
+  app.require_subcommand(1);
+
+  phongvk::RenderOptions render;
+  CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to PNG");
+  addViewOptions(renderCmd, render);
+  renderCmd->add_option("-o,--output", render.output, "Output PNG")->required();
+  renderCmd->add_option("--backend", render.backend, "gpu (Vulkan compute, default) or cpu (the reference)")
+      ->check(CLI::IsMember({"gpu", "cpu"}));
+  renderCmd->add_option("--repeat", render.repeat, "Time N frames after a warm-up and print the median")
+      ->check(CLI::Range(1, 100000));
+
+  phongvk::DiffOptions diff;
+  CLI::App* diffCmd = app.add_subcommand("diff", "Render with both backends and compare pixel by pixel");
+  addViewOptions(diffCmd, diff);
+  diffCmd->add_option("--heatmap", diff.heatmap, "Write a PNG showing where the images differ");
+  diffCmd->add_option("--tolerance", diff.tolerance, "Largest allowed channel difference, in 8-bit units (default 1)")
+      ->check(CLI::Range(0.0, 255.0));
+
+  app.add_subcommand("devices", "List Vulkan devices and whether phongvk can use them");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints help (exit 0) or the usage error; a usage error is bad input (exit 2).
+    const int code = app.exit(e);
+    return code == 0 ? 0 : phongvk::EXIT_BAD_INPUT;
+  }
+  if (renderCmd->parsed()) return phongvk::runRender(render);
+  if (diffCmd->parsed()) return phongvk::runDiff(diff);
+  return phongvk::runDevices();
+}
