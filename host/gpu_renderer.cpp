@@ -9,6 +9,7 @@
 #include "shaders/shared.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -93,10 +94,13 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
   createAndUpload(vertices_, context_, data.vertices, MemoryKind::DeviceLocal, "the vertices");
   createAndUpload(triangles_, context_, data.triangles, MemoryKind::DeviceLocal, "the triangles");
-  createAndUpload(materials_, context_, data.materials, MemoryKind::DeviceLocal, "the materials");
-  // Objects and lights carry eye-relative offsets: rewritten every frame, so host visible.
+  // Objects (eye offsets), materials and lights may change per frame: small and host visible.
   createAndUpload(objects_, context_, data.objects, MemoryKind::HostVisible, "the objects");
+  createAndUpload(materials_, context_, data.materials, MemoryKind::HostVisible, "the materials");
   createAndUpload(lights_, context_, data.lights, MemoryKind::HostVisible, "the lights");
+  lastObjects_ = data.objects;
+  lastMaterials_ = data.materials;
+  lastLights_ = data.lights;
   createBuffer(frame_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(ShadedVertex);
   checkFits(context_, shadedBytes, "the shaded vertices");
@@ -142,12 +146,46 @@ void GpuRenderer::updateDescriptors() {
   set_ = allocateDescriptorSet(context_, arena_, pipelines_[SHADE].setLayout, descriptors);
 }
 
+namespace {
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// Uploads `next` into `buffer` unless it equals what was sent last time; true if it changed.
+template <typename T>
+bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::vector<T>& next, std::vector<T>& last,
+                     const char* what) {
+  if (sameBytes(next, last)) return false;
+  if (next.size() != last.size() && !last.empty()) {
+    throw std::invalid_argument(std::string("a frame may not change the number of ") + what);
+  }
+  if (!next.empty()) uploadToBuffer(context, buffer, next.data(), next.size() * sizeof(T));
+  last = next;
+  return true;
+}
+
+}  // namespace
+
+// Sends only what changed since the last frame. Vertex colours are recomputed only when their
+// inputs changed: materials, lights, ambient, or the eye when some material is specular.
 void GpuRenderer::uploadFrame(const FrameInputs& in) {
-  FrameData frame = in.frame;
+  const bool materialsChanged = uploadIfChanged(context_, materials_, in.materials, lastMaterials_, "materials");
+  const bool lightsChanged = uploadIfChanged(context_, lights_, in.lights, lastLights_, "lights");
+  uploadIfChanged(context_, objects_, in.objects, lastObjects_, "objects");
+  const FrameData& f = in.frame;
+  const bool eyeMoved = !framesSent_ || f.eye != lastFrame_.eye;
+  const bool ambientChanged = !framesSent_ || f.ambient != lastFrame_.ambient;
+  const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged ||
+                           (eyeMoved && !lightingIsViewIndependent(in));
+  FrameData frame = f;
   frame.largeCapacity = largeCapacity_;
+  frame.shadeColors = colorsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
-  if (!in.objects.empty()) uploadToBuffer(context_, objects_, in.objects.data(), in.objects.size() * sizeof(ObjectData));
-  if (!in.lights.empty()) uploadToBuffer(context_, lights_, in.lights.data(), in.lights.size() * sizeof(LightData));
+  lastFrame_ = frame;
+  ++framesSent_;
+  framesShaded_ += colorsStale;
 }
 
 void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool withKeys) {

@@ -35,6 +35,9 @@ class GpuRenderer {
 
   const PassTimes& lastPassTimes() const { return times_; }
 
+  // Frames so far whose per-vertex lighting was recomputed (the others only transformed).
+  uint64_t framesShaded() const { return framesShaded_; }
+
  private:
   enum Pass { SHADE, RASTER, LARGE, RESOLVE, PASS_COUNT };
 
@@ -61,6 +64,14 @@ class GpuRenderer {
   uint32_t largeCapacity_ = 0;
   uint32_t width_ = 0;
   uint32_t height_ = 0;
+
+  // What the device holds from earlier frames, so a frame sends only what changed.
+  std::vector<gpu::ObjectData> lastObjects_;
+  std::vector<gpu::MaterialData> lastMaterials_;
+  std::vector<gpu::LightData> lastLights_;
+  gpu::FrameData lastFrame_{};
+  uint64_t framesSent_ = 0;
+  uint64_t framesShaded_ = 0;
 };
 
 }  // namespace phongvk

@@ -14,9 +14,9 @@ std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs
   for (size_t i = 0; i < data.vertices.size(); ++i) {
     const VertexIn& v = data.vertices[i];
     const ObjectData& object = in.objects[v.object];
-    const MaterialData& m = data.materials[object.material];
-    const vec3 P = eyeRelative(v.position, object.worldOffset);
-    const vec3 V = toEye(P);
+    const MaterialData& m = in.materials[object.material];
+    const vec3 P = lightingPosition(v.position, object.lightOffset);
+    const vec3 V = toEye(P, in.frame.eye);
     vec3 color = phongAmbient(m, in.frame.ambient);
     for (const LightData& light : in.lights) color += phongLight(P, v.normal, V, m, light);
     shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, in.frame), 1.0f);

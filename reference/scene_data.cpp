@@ -43,24 +43,51 @@ glm::vec3 inBasis(const View& view, const glm::dvec3& v) {
   return glm::vec3(glm::dot(view.right, v), glm::dot(view.up, v), glm::dot(view.forward, v));
 }
 
+glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
+  glm::dvec3 sum(0.0);
+  for (const glm::dvec3& o : origins) sum += o;
+  return origins.empty() ? sum : sum / double(origins.size());
+}
+
 }  // namespace
 
 SceneData buildSceneData(const Scene& scene) {
   SceneData data;
   for (size_t i = 0; i < scene.objects.size(); ++i) appendObject(data, scene.objects[i], static_cast<uint32_t>(i));
+  data.lightingOrigin = meanOrigin(data.objectOrigins);
+  for (size_t i = 0; i < data.objects.size(); ++i) {
+    data.objects[i].lightOffset = glm::vec3(data.objectOrigins[i] - data.lightingOrigin);
+  }
+  refreshShading(data, scene);
+  return data;
+}
+
+void refreshShading(SceneData& data, const Scene& scene) {
+  data.materials.clear();
   for (const Material& m : scene.materials) data.materials.push_back(toGpu(m));
   if (data.materials.empty()) data.materials.push_back(toGpu(Material{}));
+  data.lights.clear();
   for (const Light& l : scene.lights) {
-    data.lightPositions.push_back(l.position);
     gpu::LightData g{};
+    g.position = glm::vec3(l.position - data.lightingOrigin);
     g.intensity = l.intensity;
     g.color = l.color;
     data.lights.push_back(g);
   }
+  for (size_t i = 0; i < data.objects.size() && i < scene.objects.size(); ++i) {
+    data.objects[i].material = static_cast<uint32_t>(scene.objects[i].material);
+  }
   data.background = scene.background;
   data.ambient = scene.ambient;
   data.interpolation = scene.interpolation == Interpolation::Screen ? gpu::INTERP_SCREEN : gpu::INTERP_PERSPECTIVE;
-  return data;
+}
+
+bool lightingIsViewIndependent(const FrameInputs& in) {
+  if (in.lights.empty()) return true;
+  for (const gpu::MaterialData& m : in.materials) {
+    if (m.ks != 0.0f) return false;
+  }
+  return true;
 }
 
 FrameInputs makeFrame(const SceneData& data, const View& view) {
@@ -82,16 +109,15 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   f.triangleCount = static_cast<uint32_t>(data.triangles.size());
   f.vertexCount = static_cast<uint32_t>(data.vertices.size());
 
+  f.eye = glm::vec3(view.eye - data.lightingOrigin);
+  f.shadeColors = 1;
+
   in.objects = data.objects;
   for (size_t i = 0; i < in.objects.size(); ++i) {
-    const glm::dvec3 offset = data.objectOrigins[i] - view.eye;
-    in.objects[i].viewOffset = inBasis(view, offset);
-    in.objects[i].worldOffset = glm::vec3(offset);
+    in.objects[i].viewOffset = inBasis(view, data.objectOrigins[i] - view.eye);
   }
   in.lights = data.lights;
-  for (size_t i = 0; i < in.lights.size(); ++i) {
-    in.lights[i].position = glm::vec3(data.lightPositions[i] - view.eye);
-  }
+  in.materials = data.materials;
   return in;
 }
 

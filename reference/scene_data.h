@@ -12,29 +12,42 @@
 
 namespace phongvk {
 
-// Built once per scene: meshes with normals, materials, lights. Uploaded once by the GPU path.
+// Built once per scene: meshes with normals, materials, lights. Geometry is uploaded once by the
+// GPU path; materials and lights may be refreshed per frame (refreshShading).
 struct SceneData {
   std::vector<gpu::VertexIn> vertices;      // local to their object's origin
   std::vector<glm::uvec4> triangles;        // xyz: vertex indices; w: object index
   std::vector<glm::dvec3> objectOrigins;    // world, double: offsets are taken in double
-  std::vector<gpu::ObjectData> objects;     // material and flags; offsets filled per frame
+  // Lighting is evaluated relative to this point (the mean object origin): fixed per scene, so
+  // a moving camera leaves view-independent lighting bitwise unchanged.
+  glm::dvec3 lightingOrigin{0.0};
+  std::vector<gpu::ObjectData> objects;     // material, flags, lightOffset; viewOffset per frame
   std::vector<gpu::MaterialData> materials;
-  std::vector<glm::dvec3> lightPositions;   // world, double
-  std::vector<gpu::LightData> lights;       // intensity and colour; positions filled per frame
+  std::vector<gpu::LightData> lights;       // positions relative to lightingOrigin
   glm::vec3 background{0.0f};
   glm::vec3 ambient{1.0f};
   uint32_t interpolation = gpu::INTERP_PERSPECTIVE;
 };
 
-// What changes with the camera: the frame constants and the eye-relative offsets.
+// One frame's inputs to either renderer: the frame constants, the per-object offsets from the eye,
+// and the shading data (materials, lights) in force for this frame.
 struct FrameInputs {
   gpu::FrameData frame{};
   std::vector<gpu::ObjectData> objects;
   std::vector<gpu::LightData> lights;
+  std::vector<gpu::MaterialData> materials;
 };
 
 // Builds every object's mesh and flattens the scene. Throws SceneError.
 SceneData buildSceneData(const Scene& scene);
+
+// Replaces what a frame of a sequence may change without touching geometry: materials, lights,
+// ambient, background and interpolation. The scene must have the same objects as `data`'s.
+void refreshShading(SceneData& data, const Scene& scene);
+
+// True when the vertex colours do not depend on where the eye is: no light, or no material with
+// a specular term.
+bool lightingIsViewIndependent(const FrameInputs& in);
 
 // The frame for `view`: camera basis, image size, and offsets from the eye computed in double.
 FrameInputs makeFrame(const SceneData& data, const View& view);

@@ -52,16 +52,19 @@ FN vec3 phongAmbient(MaterialData m, vec3 ambient) {
   return a;
 }
 
-// A vertex's position relative to the eye, in world axes (for lighting).
-FN vec3 eyeRelative(vec3 local, vec3 worldOffset) {
-  PRECISE vec3 P = local + worldOffset;
+// A vertex's position relative to the lighting origin, in world axes. Lighting is computed in
+// this frame, fixed per scene, so when only the camera moves and no material has a specular term
+// the colours are bitwise the same and a sequence may skip recomputing them.
+FN vec3 lightingPosition(vec3 local, vec3 lightOffset) {
+  PRECISE vec3 P = local + lightOffset;
   return P;
 }
 
-// Unit vector from P towards the eye (the origin); zero when P is the eye itself.
-FN vec3 toEye(vec3 P) {
-  PRECISE float len = sqrt(dot3(P, P));
-  PRECISE vec3 V = len > 0.0f ? -P / len : vec3(0.0f);
+// Unit vector from P towards the eye; zero when P is the eye itself.
+FN vec3 toEye(vec3 P, vec3 eye) {
+  PRECISE vec3 v = eye - P;
+  PRECISE float len = sqrt(dot3(v, v));
+  PRECISE vec3 V = len > 0.0f ? v / len : vec3(0.0f);
   return V;
 }
 

@@ -12,11 +12,12 @@ void shadeVertex(uint i) {
   VertexIn v = vertices[i];
   ObjectData object = objects[v.object];
   MaterialData m = materials[object.material];
-  vec3 P = eyeRelative(v.position, object.worldOffset);
-  vec3 V = toEye(P);
+  shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
+  if (frame.shadeColors == 0u) return;  // lighting inputs unchanged and view-independent
+  vec3 P = lightingPosition(v.position, object.lightOffset);
+  vec3 V = toEye(P, frame.eye);
   vec3 color = phongAmbient(m, frame.ambient);
   for (uint l = 0u; l < frame.lightCount; ++l) color += phongLight(P, v.normal, V, m, lights[l]);
-  shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
   shaded[i].color = vec4(color, 1.0f);
 }
 

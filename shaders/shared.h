@@ -88,12 +88,12 @@ struct ShadedVertex {
   vec4 color;
 };
 
-// Per object, per frame: offsets from the eye computed in double on the host, so far-away objects
-// keep float precision (local + offset instead of world - eye).
+// Offsets computed in double on the host, so far-away objects keep float precision
+// (local + offset instead of world - eye).
 struct ObjectData {
-  vec3 viewOffset;   // camera-basis coordinates of (origin - eye)
+  vec3 viewOffset;     // camera-basis coordinates of (origin - eye); per frame
   uint material;
-  vec3 worldOffset;  // world coordinates of (origin - eye), for lighting
+  vec3 lightOffset;    // origin - lighting origin (SceneData::lightingOrigin); fixed per scene
   uint flags;
 };
 
@@ -109,7 +109,7 @@ struct MaterialData {
 };
 
 struct LightData {
-  vec3 position;     // world coordinates relative to the eye (per frame)
+  vec3 position;     // world coordinates relative to the lighting origin
   float intensity;
   vec3 color;
   float pad0;
@@ -134,6 +134,8 @@ struct FrameData {
   uint largeCapacity;  // entries the large list can hold
   uint pad1;
   uint pad2;
+  vec3 eye;            // eye - lighting origin, for the view vector
+  uint shadeColors;    // 0: colours from the previous frame are still right, only transform
 };
 
 // Header of the large-triangle list; (triangle id, row chunk) entries follow it in the buffer.
@@ -147,14 +149,15 @@ struct LargeList {
 #ifdef __cplusplus
 static_assert(sizeof(VertexIn) == 32 && offsetof(VertexIn, normal) == 16);
 static_assert(sizeof(ShadedVertex) == 32);
-static_assert(sizeof(ObjectData) == 32 && offsetof(ObjectData, worldOffset) == 16);
+static_assert(sizeof(ObjectData) == 32 && offsetof(ObjectData, lightOffset) == 16);
 static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && offsetof(MaterialData, ks) == 32);
 static_assert(sizeof(LightData) == 32 && offsetof(LightData, color) == 16);
 static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focal) == 60);
 static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearPlane) == 76);
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);
 static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
-static_assert(offsetof(FrameData, vertexCount) == 112 && sizeof(FrameData) == 128);
+static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
+static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 144);
 static_assert(sizeof(LargeList) == 16);
 }  // namespace phongvk::gpu
 #endif
