@@ -1,0 +1,110 @@
+// context.h — the Vulkan instance, the chosen device and its compute queue (volk-loaded, headless).
+//
+// phongvk needs Vulkan 1.2, shaderInt64 and shaderBufferInt64Atomics (the renderer resolves
+// visibility with 64-bit atomicMin on a storage buffer) and one queue family with compute.
+// Every device is checked against that list and the reasons it fails are kept, so "no device"
+// errors and `phongvk devices` can say exactly why a device was rejected.
+//
+// volk keeps one global function table, loaded for the newest live context (listDevices and
+// destroyContext put it back). Several live contexts therefore work only if they share a driver
+// and a validation setting; the CLI and the renderer hold one. Create and destroy contexts on one
+// thread.
+#pragma once
+
+#include "host/vk_check.h"  // every user of a context checks Vulkan calls
+
+#include <volk.h>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace phongvk {
+
+// No usable Vulkan driver or device; what() lists every device and why it was rejected.
+// A distinct type so the CLI can exit with its own code (3).
+class NoDeviceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One physical device as phongvk sees it.
+struct DeviceReport {
+  uint32_t index = 0;                // position in vkEnumeratePhysicalDevices order
+  std::string name;                  // "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string type;                  // "discrete GPU", "integrated GPU", "virtual GPU", "CPU", "other"
+  std::string apiVersion;            // "1.3.230"
+  bool suitable = false;
+  std::vector<std::string> missing;  // "Vulkan 1.2", "shaderInt64", "shaderBufferInt64Atomics", "a compute queue"
+};
+
+struct ContextOptions {
+  int deviceIndex = -1;   // -1: the best suitable device (discrete > integrated > virtual > CPU)
+  bool validate = false;  // Khronos validation + synchronization validation; also env PHONGVK_VALIDATE=1
+};
+
+// Warnings and errors from the validation layers, collected so tests can assert there were none.
+// Thread-safe: the layers may report from any thread.
+class ValidationLog {
+ public:
+  void add(std::string message);
+  size_t count() const;
+  std::vector<std::string> messages() const;
+  void clear();
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<std::string> messages_;
+};
+
+// Device memory a context has allocated (kept by resources.cpp), so the renderer can report it.
+struct MemoryUsage {
+  std::atomic<VkDeviceSize> current{0};
+  std::atomic<VkDeviceSize> peak{0};
+};
+
+struct VulkanContext {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;  // only when validating
+  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  uint32_t queueFamily = 0;
+  VkCommandPool commandPool = VK_NULL_HANDLE;  // for one-time command buffers; not thread-safe
+  VkPhysicalDeviceProperties properties = {};
+  VkPhysicalDeviceMemoryProperties memoryProperties = {};
+  bool timestamps = false;          // the queue can write timestamps (see TimestampPool)
+  uint32_t timestampValidBits = 0;  // of the queue family; timestamps wrap modulo 2^bits
+  std::shared_ptr<ValidationLog> validation;  // null unless validating
+  std::shared_ptr<MemoryUsage> memory = std::make_shared<MemoryUsage>();
+  DeviceReport report;              // the chosen device
+};
+
+// Every physical device with the reasons it is or is not usable (through a temporary instance).
+// Throws NoDeviceError when there is no Vulkan loader or driver at all.
+std::vector<DeviceReport> listDevices();
+
+// Creates the instance, picks a device (options.deviceIndex or the best suitable one), creates the
+// device with the features phongvk needs, a compute queue and a command pool.
+// Throws NoDeviceError when no (or not the requested) device is usable, std::runtime_error when
+// validation was asked for but the layer is not installed, VulkanError on any other failure.
+VulkanContext createContext(const ContextOptions& options);
+
+// The device createContext takes: `requested` if it is in range and suitable, else (requested = -1)
+// the best-ranked suitable one, the first on ties. Throws NoDeviceError saying why each device was
+// rejected. Public so its messages can be tested without the hardware that would produce them.
+uint32_t chooseDevice(const std::vector<DeviceReport>& reports, int requested);
+
+// Destroys everything createContext made; safe on a default or already destroyed context.
+// `validation` survives, so a caller holding it sees messages raised while tearing down
+// (e.g. objects the caller forgot to destroy).
+void destroyContext(VulkanContext& context);
+
+// What `phongvk devices` prints, one line per device:
+// "[0] llvmpipe (LLVM 15.0.6, 256 bits) — CPU, Vulkan 1.3.230 — usable"
+std::string formatDeviceList(const std::vector<DeviceReport>& devices);
+
+}  // namespace phongvk

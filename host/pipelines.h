@@ -1,0 +1,68 @@
+// pipelines.h — compute pipelines from embedded SPIR-V, and their descriptor sets.
+//
+//   #include "shaders/selftest_atomic64.spv.h"
+//   const Binding bindings[] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+//   ComputePipeline pipeline = createComputePipeline(context, spirv_selftest_atomic64,
+//                                                    sizeof(spirv_selftest_atomic64), bindings, 4, {});
+#pragma once
+
+#include "host/context.h"
+
+#include <span>
+
+namespace phongvk {
+
+// One descriptor of the pipeline's single set (set = 0), visible to the compute stage.
+struct Binding {
+  uint32_t binding;
+  VkDescriptorType type;
+};
+
+// A specialization constant: `layout(constant_id = id) const uint NAME = default;` in GLSL.
+struct SpecConstant {
+  uint32_t id;
+  uint32_t value;
+};
+
+struct ComputePipeline {
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+};
+
+// `spirv` is the glslang --vn array and `spirvBytes` its sizeof. The shader's entry point is
+// "main"; push constants (if pushConstantBytes > 0) start at offset 0.
+ComputePipeline createComputePipeline(const VulkanContext& context, const uint32_t* spirv, size_t spirvBytes,
+                                      std::span<const Binding> bindings, uint32_t pushConstantBytes,
+                                      std::span<const SpecConstant> specs);
+
+// Safe on a default or already destroyed pipeline.
+void destroyComputePipeline(ComputePipeline& pipeline, const VulkanContext& context);
+
+// A descriptor pool for a renderer's few sets; the sets are freed with the arena.
+struct DescriptorArena {
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+};
+
+// Room for `maxSets` sets with up to `maxBuffersPerSet` storage and as many uniform buffers each.
+void createDescriptorArena(DescriptorArena& result, const VulkanContext& context, uint32_t maxSets,
+                           uint32_t maxBuffersPerSet = 16);
+void destroyDescriptorArena(DescriptorArena& arena, const VulkanContext& context);
+
+// One buffer descriptor to write; range VK_WHOLE_SIZE means from offset to the buffer's end.
+struct BufferDescriptor {
+  uint32_t binding;
+  VkDescriptorType type;
+  VkBuffer buffer;
+  VkDeviceSize offset = 0;
+  VkDeviceSize range = VK_WHOLE_SIZE;
+};
+
+// Allocates a set of `setLayout` from the arena and writes `descriptors` into it.
+VkDescriptorSet allocateDescriptorSet(const VulkanContext& context, const DescriptorArena& arena,
+                                      VkDescriptorSetLayout setLayout, std::span<const BufferDescriptor> descriptors);
+
+// Workgroups needed to cover `threads` invocations with `groupSize` per group (rounds up).
+uint32_t groupCount(uint32_t threads, uint32_t groupSize);
+
+}  // namespace phongvk

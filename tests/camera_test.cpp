@@ -1,0 +1,103 @@
+// Camera (DESIGN.md "Camera"): image size from resolution, the basis, and where points land.
+#include "reference/camera.h"
+#include "reference/scene_data.h"
+#include "shaders/phong.h"
+
+#include <gtest/gtest.h>
+
+namespace phongvk {
+namespace {
+
+CameraSpec lookingAlongY() {
+  CameraSpec c;
+  c.position = {1, 2, 3};
+  c.direction = {0, 1, 0};
+  return c;
+}
+
+// Where a world point lands on the image (pixel coordinates, y down), via the shared maths.
+glm::vec2 project(const CameraSpec& camera, glm::dvec3 world) {
+  const View view = makeView(camera);
+  SceneData data;
+  data.objects.resize(1);
+  data.objectOrigins = {world};
+  const FrameInputs in = makeFrame(data, view);
+  const glm::vec3 h = gpu::toHomogeneous(glm::vec3(0.0f), in.objects[0].viewOffset, in.frame);
+  return glm::vec2(h.x / h.z, h.y / h.z) + in.frame.principal;
+}
+
+TEST(Camera, DefaultImageIs1385x923) {
+  const View view = makeView(lookingAlongY());
+  EXPECT_EQ(view.width, 1385);
+  EXPECT_EQ(view.height, 923);
+  EXPECT_DOUBLE_EQ(view.focal, 800.0);
+}
+
+TEST(Camera, WidthAndHeightSetTheSizeAndKeepTheVerticalFov) {
+  CameraSpec c = withImageSize(lookingAlongY(), 640, 480);
+  const View view = makeView(c);
+  EXPECT_EQ(view.width, 640);
+  EXPECT_EQ(view.height, 480);
+  EXPECT_NEAR(view.focal, 240.0 / std::tan(glm::radians(30.0)), 1e-9);
+}
+
+TEST(Camera, PointOnTheViewAxisLandsAtTheImageCentre) {
+  const glm::vec2 p = project(lookingAlongY(), {1, 7, 3});
+  EXPECT_FLOAT_EQ(p.x, 692.5f);
+  EXPECT_FLOAT_EQ(p.y, 461.5f);
+}
+
+TEST(Camera, RightIsRightAndUpIsUp) {
+  // Looking along +y with z up, +x is to the camera's right.
+  const glm::vec2 right = project(lookingAlongY(), {1.5, 7, 3});
+  EXPECT_FLOAT_EQ(right.x, 692.5f + 800.0f * 0.5f / 5.0f);
+  EXPECT_FLOAT_EQ(right.y, 461.5f);
+  const glm::vec2 up = project(lookingAlongY(), {1, 7, 3.5});
+  EXPECT_FLOAT_EQ(up.x, 692.5f);
+  EXPECT_FLOAT_EQ(up.y, 461.5f - 800.0f * 0.5f / 5.0f);
+}
+
+TEST(Camera, BasisIsOrthonormalAndRightHanded) {
+  CameraSpec c = lookingAlongY();
+  c.direction = {-1, 2, -0.5};
+  c.up = {0.1, 0, 1};
+  const View v = makeView(c);
+  EXPECT_NEAR(glm::length(v.right), 1.0, 1e-12);
+  EXPECT_NEAR(glm::length(v.up), 1.0, 1e-12);
+  EXPECT_NEAR(glm::dot(v.right, v.forward), 0.0, 1e-12);
+  EXPECT_NEAR(glm::dot(v.up, v.forward), 0.0, 1e-12);
+  EXPECT_GT(glm::dot(v.up, c.up), 0.0);  // world up stays up
+  EXPECT_NEAR(glm::dot(glm::cross(v.right, v.up), v.forward), -1.0, 1e-12);  // r x u = -f
+}
+
+TEST(Camera, UpParallelToDirectionIsAnError) {
+  CameraSpec c = lookingAlongY();
+  c.up = {0, -2, 0};
+  EXPECT_THROW(
+      {
+        try {
+          makeView(c);
+        } catch (const SceneError& e) {
+          EXPECT_STREQ(e.what(), "camera.up: parallel to the view direction");
+          throw;
+        }
+      },
+      SceneError);
+}
+
+TEST(Camera, FarObjectKeepsPrecisionThroughDoubleOffsets) {
+  // A point 1e6 m down the axis and 1 mm to the right, seen with a 0.001 degree fov on a
+  // 100x100 image (focal = 50 / tan(0.0005 deg) = 5.73e6 px): it lands 5.73 px right of centre.
+  // The offset from the eye is taken in double; float world coordinates (ulp 0.0625 m at 1e6)
+  // would have rounded the millimetre away.
+  CameraSpec c = withImageSize(lookingAlongY(), 100, 100);
+  c.fov = 0.001;
+  const glm::vec2 centre = project(c, {1, 2 + 1e6, 3});
+  const glm::vec2 shifted = project(c, {1.001, 2 + 1e6, 3});
+  const double focal = 50.0 / std::tan(glm::radians(0.0005));
+  EXPECT_FLOAT_EQ(centre.x, 50.0f);
+  EXPECT_NEAR(shifted.x - centre.x, focal * 0.001 / 1e6, 1e-3);
+}
+
+}  // namespace
+}  // namespace phongvk

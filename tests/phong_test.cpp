@@ -1,0 +1,105 @@
+// Per-vertex Phong (shaders/phong.h) against values computed by hand from DESIGN.md's formula:
+// color = ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), S = 1/(a + b d + c d^2).
+#include "shaders/phong.h"
+
+#include <gtest/gtest.h>
+
+namespace phongvk::gpu {
+namespace {
+
+MaterialData material() {
+  MaterialData m{};
+  m.color = vec3(1.0f, 0.5f, 0.25f);
+  m.ka = 0.1f;
+  m.kd = 0.5f;
+  m.ks = 0.3f;
+  m.n = 2.0f;
+  m.attenuation = vec3(1.0f, 0.5f, 0.25f);
+  return m;
+}
+
+LightData light(vec3 position, float intensity, vec3 color) {
+  LightData l{};
+  l.position = position;
+  l.intensity = intensity;
+  l.color = color;
+  return l;
+}
+
+void expectColor(vec3 actual, vec3 expected) {
+  EXPECT_NEAR(actual.x, expected.x, 1e-6f);
+  EXPECT_NEAR(actual.y, expected.y, 1e-6f);
+  EXPECT_NEAR(actual.z, expected.z, 1e-6f);
+}
+
+const vec3 P(0.0f, 0.0f, 0.0f);
+const vec3 N(0.0f, 0.0f, 1.0f);
+const vec3 EYE(0.0f, 0.0f, 5.0f);
+
+TEST(Phong, OneLightStraightAbove) {
+  // d = 2, S = 1/(1 + 0.5*2 + 0.25*4) = 1/3; l = N, r = N, r.V = 1: kd + ks = 0.8.
+  // 0.1 C + (1/3) * 0.8 C = 0.366667 C.
+  const MaterialData m = material();
+  const vec3 V = toEye(P, EYE);
+  const vec3 c = phongAmbient(m, vec3(1.0f)) + phongLight(P, N, V, m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f)));
+  expectColor(c, vec3(0.3666667f, 0.1833333f, 0.0916667f));
+}
+
+TEST(Phong, SecondColouredLightAddsItsOwnTerm) {
+  // Light 2 at (0,3,4): d = 5, S = 1/(1 + 2.5 + 6.25) = 1/9.75, l = (0,.6,.8), N.l = .8,
+  // r = (0,-.6,.8), r.V = .8, spec = .64; kd .8 + ks .64 = .592; green light, intensity 2:
+  // green channel 2/9.75 * 0.5 * 0.592 = 0.0607179.
+  const MaterialData m = material();
+  const vec3 V = toEye(P, EYE);
+  const vec3 c = phongAmbient(m, vec3(1.0f)) + phongLight(P, N, V, m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f))) +
+                 phongLight(P, N, V, m, light(vec3(0, 3, 4), 2.0f, vec3(0, 1, 0)));
+  expectColor(c, vec3(0.3666667f, 0.1833333f + 0.0607179f, 0.0916667f));
+}
+
+TEST(Phong, AttenuationOnlyQuadratic) {
+  // a = b = 0, c = 1: S = 1/d^2 = 1/4 at d = 2; (kd + ks) * S = 0.2.
+  MaterialData m = material();
+  m.attenuation = vec3(0.0f, 0.0f, 1.0f);
+  const vec3 c = phongLight(P, N, toEye(P, EYE), m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f)));
+  expectColor(c, vec3(0.2f, 0.1f, 0.05f));
+}
+
+TEST(Phong, LightBehindTheSurfaceAddsNothing) {
+  const MaterialData m = material();
+  const vec3 c = phongLight(P, N, toEye(P, EYE), m, light(vec3(0, 0, -2), 1.0f, vec3(1.0f)));
+  expectColor(c, vec3(0.0f));
+}
+
+TEST(Phong, LightAtTheVertexAddsNothing) {
+  const MaterialData m = material();
+  const vec3 c = phongLight(P, N, toEye(P, EYE), m, light(P, 1.0f, vec3(1.0f)));
+  expectColor(c, vec3(0.0f));
+}
+
+TEST(Phong, ShininessZeroGivesFullSpecularWhereLit) {
+  // Light at (0,3,4), eye along +y: r = (0,-.6,.8), r.V = -.6 < 0. With n = 0 the specular
+  // factor is still 1 (N.l > 0); with n = 2 it is 0.
+  MaterialData m = material();
+  const vec3 V = toEye(P, vec3(0.0f, 5.0f, 0.0f));
+  const LightData l = light(vec3(0, 3, 4), 1.0f, vec3(1.0f));
+  m.n = 0.0f;
+  const float S = 1.0f / 9.75f;
+  expectColor(phongLight(P, N, V, m, l), vec3(1.0f, 0.5f, 0.25f) * (S * (0.5f * 0.8f + 0.3f)));
+  m.n = 2.0f;
+  expectColor(phongLight(P, N, V, m, l), vec3(1.0f, 0.5f, 0.25f) * (S * (0.5f * 0.8f)));
+}
+
+TEST(Phong, EyeAtTheVertexIsNotNaN) {
+  const MaterialData m = material();
+  const vec3 c = phongLight(P, N, toEye(P, P), m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f)));
+  EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+  expectColor(c, vec3(1.0f, 0.5f, 0.25f) * (0.5f / 3.0f));  // diffuse only: V = 0 -> r.V = 0
+}
+
+TEST(Phong, AmbientUsesSceneAmbientColour) {
+  const MaterialData m = material();
+  expectColor(phongAmbient(m, vec3(1.0f, 0.0f, 0.5f)), vec3(0.1f, 0.0f, 0.0125f));
+}
+
+}  // namespace
+}  // namespace phongvk::gpu
