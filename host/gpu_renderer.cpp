@@ -6,6 +6,7 @@
 #include "shaders/raster_triangles.spv.h"
 #include "shaders/resolve.spv.h"
 #include "shaders/shade_vertices.spv.h"
+#include "shaders/raster.h"
 #include "shaders/shared.h"
 
 #include <algorithm>
@@ -29,12 +30,15 @@ constexpr Binding BINDINGS[] = {
     {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_SHADED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},    {BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
 };
 
 // Threads -> groups, capped so the dispatch is legal on every device (the shaders grid-stride).
 uint32_t cappedGroups(uint32_t threads, uint32_t groupSize) {
   return std::min(groupCount(threads, groupSize), MAX_DISPATCH_GROUPS);
 }
+
+uint32_t tilesAcross(uint32_t pixels) { return groupCount(pixels, TILE_SIZE); }
 
 // Throws when one array would exceed the device's largest storage buffer binding.
 void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
@@ -72,8 +76,8 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data) : 
 GpuRenderer::~GpuRenderer() { release(); }
 
 void GpuRenderer::release() {
-  for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &large_, &keys_,
-                    &colors_, &colorReadback_, &keyReadback_}) {
+  for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &large_, &largeSetups_,
+                    &keys_, &tiles_, &colors_, &colorReadback_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
   destroyTimestampPool(timestamps_, context_);
@@ -109,17 +113,28 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(largeCapacity_) * sizeof(glm::uvec2);
   checkFits(context_, largeBytes, "the large-triangle list");
   createBuffer(large_, context_, largeBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+  largeSetupCapacity_ = std::min(triangleCount_, LARGE_SETUPS_MAX);
+  createBuffer(largeSetups_, context_, VkDeviceSize(largeSetupCapacity_) * sizeof(TriangleSetup), STORAGE,
+               MemoryKind::DeviceLocal);
 }
 
+// Keys start cleared and tiles untouched once, here; from then on the resolve pass resets what a
+// frame touched, so no frame pays for clearing the whole image.
 void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   if (width == width_ && height == height_) return;
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
+  const VkDeviceSize tiles = VkDeviceSize(tilesAcross(width)) * tilesAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
-  for (Buffer* b : {&keys_, &colors_, &colorReadback_, &keyReadback_}) destroyBuffer(*b, context_);
+  for (Buffer* b : {&keys_, &tiles_, &colors_, &colorReadback_, &keyReadback_}) destroyBuffer(*b, context_);
   createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
+  createBuffer(tiles_, context_, tiles * sizeof(uint32_t), STORAGE, MemoryKind::DeviceLocal);
   createBuffer(colors_, context_, pixels * sizeof(uint32_t), STORAGE, MemoryKind::DeviceLocal);
   createBuffer(colorReadback_, context_, pixels * sizeof(uint32_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                MemoryKind::HostVisible);
+  VkCommandBuffer cmd = beginOneTimeCommands(context_);
+  vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
+  vkCmdFillBuffer(cmd, tiles_.buffer, 0, VK_WHOLE_SIZE, 0u);
+  submitAndWait(context_, cmd);
   width_ = width;
   height_ = height;
   updateDescriptors();
@@ -141,6 +156,8 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_KEYS, storage, keys_.buffer},
       {BINDING_COLOR, storage, colors_.buffer},
       {BINDING_LARGE, storage, large_.buffer},
+      {BINDING_TILES, storage, tiles_.buffer},
+      {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
   };
   // Identically defined set layouts are compatible: one set serves all four pipelines.
   set_ = allocateDescriptorSet(context_, arena_, pipelines_[SHADE].setLayout, descriptors);
@@ -181,6 +198,8 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
                            (eyeMoved && !lightingIsViewIndependent(in));
   FrameData frame = f;
   frame.largeCapacity = largeCapacity_;
+  frame.tilesX = tilesAcross(frame.width);
+  frame.largeSetupCapacity = largeSetupCapacity_;
   frame.shadeColors = colorsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
   lastFrame_ = frame;
@@ -190,8 +209,9 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
 
 void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool withKeys) {
   resetTimestamps(cmd, timestamps_);
-  vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
-  const LargeList emptyList = {0, 0, 1, 1};
+  // Untouched tiles are not resolved: their pixels keep this fill.
+  vkCmdFillBuffer(cmd, colors_.buffer, 0, VK_WHOLE_SIZE, packColor(frame.background));
+  const LargeList emptyList = {0, 0, 1, 1, 0, 0, 0, 0};
   vkCmdUpdateBuffer(cmd, large_.buffer, 0, sizeof emptyList, &emptyList);
   transferToComputeBarrier(cmd);
 
@@ -212,19 +232,23 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   vkCmdDispatchIndirect(cmd, large_.buffer, offsetof(LargeList, groupsX));
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 3);
+  const VkDeviceSize pixels = VkDeviceSize(frame.width) * frame.height;
+  if (withKeys) {  // before resolve, which resets the keys it reads
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferCopy keyCopy = {0, 0, pixels * sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_SHADER_WRITE_BIT);
+  }
   bind(RESOLVE);
-  vkCmdDispatch(cmd, groupCount(frame.width, RESOLVE_GROUP_X), groupCount(frame.height, RESOLVE_GROUP_Y), 1);
+  vkCmdDispatch(cmd, tilesAcross(frame.width), tilesAcross(frame.height), 1);
   writeTimestamp(cmd, timestamps_, 4);
 
   memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                 VK_ACCESS_TRANSFER_READ_BIT);
-  const VkDeviceSize pixels = VkDeviceSize(frame.width) * frame.height;
   VkBufferCopy colorCopy = {0, 0, pixels * sizeof(uint32_t)};
   vkCmdCopyBuffer(cmd, colors_.buffer, colorReadback_.buffer, 1, &colorCopy);
-  if (withKeys) {
-    VkBufferCopy keyCopy = {0, 0, pixels * sizeof(uint64_t)};
-    vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
-  }
 }
 
 void GpuRenderer::readTimes() {

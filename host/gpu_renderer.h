@@ -57,11 +57,12 @@ class GpuRenderer {
   TimestampPool timestamps_;
   PassTimes times_;
 
-  Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, large_;
-  Buffer keys_, colors_, colorReadback_, keyReadback_;
+  Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, large_, largeSetups_;
+  Buffer keys_, tiles_, colors_, colorReadback_, keyReadback_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
   uint32_t largeCapacity_ = 0;
+  uint32_t largeSetupCapacity_ = 0;
   uint32_t width_ = 0;
   uint32_t height_ = 0;
 

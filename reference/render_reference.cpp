@@ -33,7 +33,7 @@ std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedV
     const bool cullBack = (data.objects[tri.w].flags & OBJECT_CULL_BACK) != 0;
     TriangleSetup t;
     if (!setupTriangle(vec3(shaded[tri.x].hpos), vec3(shaded[tri.y].hpos), vec3(shaded[tri.z].hpos),
-                       cullBack, frame, t)) {
+                       cullBack, id, frame, t)) {
       continue;
     }
     for (int k = 0; k + 2 < t.count; ++k) {
@@ -42,7 +42,7 @@ std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedV
       for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
         for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
           uint64_t& pixel = keys[static_cast<size_t>(y) * frame.width + x];
-          pixel = std::min(pixel, fragmentKey(t, s, x, y, frame, id));
+          pixel = std::min(pixel, fragmentKey(t, s, x, y, frame));
         }
       }
     }

@@ -10,6 +10,10 @@ layout(std430, binding = BINDING_SHADED) buffer Shaded { ShadedVertex shaded[]; 
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
 layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 largeEntries[]; };
+// Touched tiles: the raster passes set them, resolve reads and clears them (with the keys), so
+// each frame starts clean without clearing the whole image.
+layout(std430, binding = BINDING_TILES) buffer Tiles { uint tiles[]; };
+layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { TriangleSetup largeSetups[]; };
 
 // The three shaded vertices of triangle `id`.
 void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVertex c) {
@@ -23,6 +27,7 @@ void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVer
 bool setupTriangleById(uint id, out TriangleSetup t) {
   uvec4 tri = triangles[id];
   bool cullBack = (objects[tri.w].flags & OBJECT_CULL_BACK) != 0u;
-  return setupTriangle(shaded[tri.x].hpos.xyz, shaded[tri.y].hpos.xyz, shaded[tri.z].hpos.xyz, cullBack,
+  return setupTriangle(shaded[tri.x].hpos.xyz, shaded[tri.y].hpos.xyz, shaded[tri.z].hpos.xyz, cullBack, id,
                        frame, t);
 }
+

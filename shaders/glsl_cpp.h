@@ -30,6 +30,7 @@ using glm::floor;
 using glm::max;
 using glm::min;
 using glm::sqrt;
+using ivec2 = glm::ivec2;
 using ivec4 = glm::ivec4;
 using i64vec2 = glm::i64vec2;
 inline uint32_t floatBitsToUint(float f) { return std::bit_cast<uint32_t>(f); }

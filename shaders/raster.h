@@ -133,9 +133,8 @@ struct EdgeSetup {
   ivec4 bbox;  // x0, y0, x1, y1 inclusive
 };
 
-FN int64_t floorDiv256(int64_t v) {
-  return v >= int64_t(0) ? v / int64_t(256) : -((-v + int64_t(255)) / int64_t(256));
-}
+// floor(v / 256): an arithmetic shift (defined for negative v in GLSL and in C++20).
+FN int64_t floorDiv256(int64_t v) { return v >> 8; }
 
 // The pixels whose centres lie in the subpixel box [lo, hi], clipped to the image:
 // (x0, y0, x1, y1) inclusive, empty when x0 > x1 or y0 > y1. Pixel x's centre is x * 256 + 128.
@@ -178,6 +177,41 @@ FN bool covers(EdgeSetup s, i64vec2 p) {
   return edgeFunction(s.v1, s.v2, p) + s.bias0 >= int64_t(0) &&
          edgeFunction(s.v2, s.v0, p) + s.bias1 >= int64_t(0) &&
          edgeFunction(s.v0, s.v1, p) + s.bias2 >= int64_t(0);
+}
+
+// ---- Row spans (the GPU's loops visit only these; the reference checks every box pixel) ----
+
+// Narrows [span.x, span.y] to the pixels x of row y where edge a -> b passes: E(x) + bias >= 0
+// with E(x) = c - k x, k = 256 dy. The bound is estimated with one float division and then made
+// exact with integer tests (64-bit integer division is slow on SIMD CPUs), so the span holds
+// exactly the pixels covers() accepts.
+FN ivec2 clipSpanToEdge(ivec2 span, i64vec2 a, i64vec2 b, int64_t bias, int y) {
+  int64_t dx = b.x - a.x;
+  int64_t dy = b.y - a.y;
+  i64vec2 p = pixelCentre(0, y);
+  int64_t c = dx * (p.y - a.y) - dy * (p.x - a.x) + bias;
+  int64_t k = dy * int64_t(SUBPIXEL_ONE);
+  if (dy == int64_t(0)) return c >= int64_t(0) ? span : ivec2(1, 0);
+  float estimate = floor(float(c) / float(k));
+  if (dy > int64_t(0)) {  // passes for x <= c / k: find the last such x in the span
+    int q = int(clamp(estimate, float(span.x - 1), float(span.y)));
+    while (q >= span.x && c - k * int64_t(q) < int64_t(0)) --q;
+    while (q < span.y && c - k * int64_t(q + 1) >= int64_t(0)) ++q;
+    return ivec2(span.x, q);
+  }
+  int q = int(clamp(estimate + 1.0f, float(span.x), float(span.y + 1)));  // passes for x >= c / k
+  while (q <= span.y && c - k * int64_t(q) < int64_t(0)) ++q;
+  while (q > span.x && c - k * int64_t(q - 1) >= int64_t(0)) --q;
+  return ivec2(q, span.y);
+}
+
+// The pixels of row y (within the sub-triangle's box) whose centres it covers; empty if x > y.
+FN ivec2 rowSpan(EdgeSetup s, int y) {
+  ivec2 span = ivec2(s.bbox.x, s.bbox.z);
+  span = clipSpanToEdge(span, s.v1, s.v2, s.bias0, y);
+  span = clipSpanToEdge(span, s.v2, s.v0, s.bias1, y);
+  span = clipSpanToEdge(span, s.v0, s.v1, s.bias2, y);
+  return span;
 }
 
 // ---- Depth and visibility key ----
@@ -224,25 +258,31 @@ FN uint64_t depthKey(float z, float zMin, float zMax, float farPlane, uint trian
 // ---- One triangle, start to finish ----
 
 // Everything the raster loops need from one triangle: its clipped polygon snapped to subpixels,
-// facing, depth range and plane, and the pixel bounding box of the whole polygon.
+// facing, depth range and plane, and the pixel bounding box of the whole polygon. The triangle
+// pass stores it for large triangles (std430, 128 bytes), so the large pass does not redo it.
 struct TriangleSetup {
-  i64vec2 snapped[MAX_CLIP_VERTICES];
-  int count;           // polygon vertices; sub-triangles are the fan (0, k + 1, k + 2)
-  bool frontFacing;
+  ivec2 snapped[MAX_CLIP_VERTICES];  // subpixels; the guard band keeps them below 2^28
+  ivec4 bbox;
+  TrianglePlane plane;
+  int count;          // polygon vertices; sub-triangles are the fan (0, k + 1, k + 2)
+  uint frontFacing;   // 1 when the triangle faces the eye
   float zMin;
   float zMax;
-  TrianglePlane plane;
-  ivec4 bbox;
+  uint triangle;      // its id: the low word of its visibility keys
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // Culls (off screen, edge-on or zero area, back face of a closed object, nothing in front of the
 // near plane, no pixel centre in the bounding box) and sets up the rest. False: draws nothing.
-FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, FrameData frame, OUT(TriangleSetup) t) {
+FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
   if (outsideFrustum(h0, h1, h2, frame)) return false;
   t.plane = trianglePlane(h0, h1, h2);
   if (t.plane.h0n == 0.0f) return false;
-  t.frontFacing = t.plane.h0n < 0.0f;
-  if (cullBack && !t.frontFacing) return false;
+  t.frontFacing = t.plane.h0n < 0.0f ? 1u : 0u;
+  if (cullBack && t.frontFacing == 0u) return false;
+  t.triangle = triangle;
   vec3 poly[MAX_CLIP_VERTICES];
   t.count = clipTriangle(h0, h1, h2, frame.nearPlane, poly);
   if (t.count == 0) return false;
@@ -250,13 +290,14 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, FrameData frame,
   t.zMax = poly[0].z;
   i64vec2 lo = snapToSubpixel(poly[0], frame.principal);
   i64vec2 hi = lo;
-  t.snapped[0] = lo;
+  t.snapped[0] = ivec2(lo);
   for (int i = 1; i < t.count; ++i) {
     t.zMin = min(t.zMin, poly[i].z);
     t.zMax = max(t.zMax, poly[i].z);
-    t.snapped[i] = snapToSubpixel(poly[i], frame.principal);
-    lo = min(lo, t.snapped[i]);
-    hi = max(hi, t.snapped[i]);
+    i64vec2 v = snapToSubpixel(poly[i], frame.principal);
+    t.snapped[i] = ivec2(v);
+    lo = min(lo, v);
+    hi = max(hi, v);
   }
   t.bbox = pixelBounds(lo, hi, frame.width, frame.height);
   return !isEmpty(t.bbox);
@@ -264,8 +305,15 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, FrameData frame,
 
 FN int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
 
-// Rows per large-pass chunk for a polygon's bounding box: about LARGE_CHUNK_PIXELS pixels each.
-FN int rowsPerChunk(ivec4 box) { return max(1, int(LARGE_CHUNK_PIXELS) / (box.z - box.x + 1)); }
+// Rows per large-pass chunk: a power of two, at most LARGE_GROUP_SIZE, so a chunk holds about
+// LARGE_CHUNK_PIXELS box pixels and its rows split the workgroup's lanes evenly
+// (LARGE_GROUP_SIZE / rows lanes per row).
+FN int rowsPerChunk(ivec4 box) {
+  int target = clamp(int(LARGE_CHUNK_PIXELS) / (box.z - box.x + 1), 1, int(LARGE_GROUP_SIZE));
+  int rows = 1;
+  while (rows * 2 <= target) rows *= 2;
+  return rows;
+}
 
 FN int chunkCount(ivec4 box) {
   int rows = box.w - box.y + 1;
@@ -274,15 +322,20 @@ FN int chunkCount(ivec4 box) {
 
 // Sub-triangle k (0 <= k < count - 2) of a set-up triangle's fan.
 FN bool setupFan(TriangleSetup t, int k, FrameData frame, OUT(EdgeSetup) s) {
-  return setupEdges(t.snapped[0], t.snapped[k + 1], t.snapped[k + 2], t.frontFacing, frame.width,
-                    frame.height, s);
+  return setupEdges(i64vec2(t.snapped[0]), i64vec2(t.snapped[k + 1]), i64vec2(t.snapped[k + 2]),
+                    t.frontFacing != 0u, frame.width, frame.height, s);
 }
 
-// The key triangle `triangle` offers pixel (x, y), or KEY_CLEAR if it does not cover it.
-FN uint64_t fragmentKey(TriangleSetup t, EdgeSetup s, int x, int y, FrameData frame, uint triangle) {
-  if (!covers(s, pixelCentre(x, y))) return KEY_CLEAR;
+// The key the triangle offers pixel (x, y), which it covers.
+FN uint64_t coveredKey(TriangleSetup t, int x, int y, FrameData frame) {
   float z = depthAt(t.plane, pixelRay(x, y, frame.principal));
-  return depthKey(z, t.zMin, t.zMax, frame.farPlane, triangle);
+  return depthKey(z, t.zMin, t.zMax, frame.farPlane, t.triangle);
+}
+
+// The key the triangle offers pixel (x, y), or KEY_CLEAR if it does not cover it.
+FN uint64_t fragmentKey(TriangleSetup t, EdgeSetup s, int x, int y, FrameData frame) {
+  if (!covers(s, pixelCentre(x, y))) return KEY_CLEAR;
+  return coveredKey(t, x, y, frame);
 }
 
 // ---- Gouraud ----
@@ -327,5 +380,11 @@ FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int 
 }
 
 SHARED_END
+
+#ifdef __cplusplus
+static_assert(sizeof(phongvk::gpu::TriangleSetup) == 128 && offsetof(phongvk::gpu::TriangleSetup, bbox) == 64);
+static_assert(offsetof(phongvk::gpu::TriangleSetup, plane) == 80 && offsetof(phongvk::gpu::TriangleSetup, count) == 96);
+static_assert(offsetof(phongvk::gpu::TriangleSetup, triangle) == 112);
+#endif
 
 #endif  // PHONGVK_RASTER_H

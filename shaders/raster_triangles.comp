@@ -8,29 +8,29 @@
 #include "shared.h"
 #include "raster.h"
 #include "bindings.glsl"
+#include "raster_loops.glsl"
 
 layout(local_size_x = SETUP_GROUP_SIZE) in;
 
-// Appends triangle id's row chunks to the large list; false when the list is full.
-bool deferToLargePass(uint id, TriangleSetup t) {
+// Stores the triangle's setup and appends its row chunks to the large list; false when either is
+// full (then it is drawn right here).
+bool deferToLargePass(TriangleSetup t) {
+  uint slot = atomicAdd(large.setups, 1u);
+  if (slot >= frame.largeSetupCapacity) return false;
   uint chunks = uint(chunkCount(t.bbox));
   uint first = atomicAdd(large.count, chunks);
   if (first + chunks > frame.largeCapacity) return false;
-  for (uint c = 0u; c < chunks; ++c) largeEntries[first + c] = uvec2(id, c);
+  largeSetups[slot] = t;
+  for (uint c = 0u; c < chunks; ++c) largeEntries[first + c] = uvec2(slot, c);
   atomicMax(large.groupsX, min(first + chunks, MAX_DISPATCH_GROUPS));
   return true;
 }
 
-void rasterizeHere(uint id, TriangleSetup t) {
+void rasterizeHere(TriangleSetup t) {
+  markTiles(t.bbox);
   for (int k = 0; k + 2 < t.count; ++k) {
     EdgeSetup s;
-    if (!setupFan(t, k, frame, s)) continue;
-    for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
-      for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
-        uint64_t key = fragmentKey(t, s, x, y, frame, id);
-        if (key != KEY_CLEAR) atomicMin(keys[uint(y) * frame.width + uint(x)], key);
-      }
-    }
+    if (setupFan(t, k, frame, s)) rasterizeRows(t, s, s.bbox.y, s.bbox.w, 0, 1);
   }
 }
 
@@ -39,7 +39,7 @@ void main() {
   for (uint id = gl_GlobalInvocationID.x; id < frame.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
     TriangleSetup t;
     if (!setupTriangleById(id, t)) continue;
-    if (uint(boxPixels(t.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(id, t)) continue;
-    rasterizeHere(id, t);
+    if (uint(boxPixels(t.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(t)) continue;
+    rasterizeHere(t);
   }
 }

@@ -27,9 +27,11 @@ using uvec4 = glm::uvec4;
 PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
 PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
 PHONGVK_CONST uint LARGE_GROUP_SIZE = 64;
-// Resolve works on 8x8 pixel tiles: neighbouring pixels usually share a triangle (cache reuse).
-PHONGVK_CONST uint RESOLVE_GROUP_X = 8;
-PHONGVK_CONST uint RESOLVE_GROUP_Y = 8;
+// Resolve works on 8x8 pixel tiles, one workgroup each: neighbouring pixels usually share a
+// triangle (cache reuse), and a tile no triangle touched is skipped by the whole group at once.
+PHONGVK_CONST uint TILE_SIZE = 8;
+PHONGVK_CONST uint RESOLVE_GROUP_X = TILE_SIZE;
+PHONGVK_CONST uint RESOLVE_GROUP_Y = TILE_SIZE;
 
 // ---- Raster constants ----
 PHONGVK_CONST uint SUBPIXEL_BITS = 8;        // 1/256 pixel, as Vulkan/D3D hardware
@@ -43,9 +45,11 @@ PHONGVK_CONST float GUARD_BAND = 524288.0f;  // 2^19 pixels
 // whole workgroup of the large pass. Small triangles stay one invocation each (no list traffic).
 PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 1024;
 PHONGVK_CONST uint LARGE_CHUNK_PIXELS = 4096;
-// The large list holds this many chunk entries beyond one per triangle; when a frame needs more,
-// the triangle pass rasterizes the overflow itself (slower, same result).
+// The large list holds this many chunk entries beyond one per triangle, and the set-up records of
+// at most LARGE_SETUPS_MAX large triangles (128 bytes each); when a frame needs more, the triangle
+// pass rasterizes the overflow itself (slower, same result).
 PHONGVK_CONST uint LARGE_LIST_SPARE = 65536;
+PHONGVK_CONST uint LARGE_SETUPS_MAX = 65536;
 // Dispatches are capped at the smallest maxComputeWorkGroupCount[0] Vulkan allows; the shaders
 // loop (grid-stride) when there is more work than that many groups.
 PHONGVK_CONST uint MAX_DISPATCH_GROUPS = 65535;
@@ -70,6 +74,8 @@ PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex[]
 PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
 PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
 PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (triangle, chunk) entries
+PHONGVK_CONST uint BINDING_TILES = 10;       // one uint per TILE_SIZE^2 tile: 1 if a triangle touched it
+PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // TriangleSetup (raster.h) of each large triangle
 
 // ---- Buffer structs ----
 // A mesh vertex in its object's local frame (position relative to the object origin).
@@ -132,18 +138,22 @@ struct FrameData {
   uint triangleCount;
   uint vertexCount;
   uint largeCapacity;  // entries the large list can hold
-  uint pad1;
-  uint pad2;
+  uint tilesX;         // tiles per row: ceil(width / TILE_SIZE)
+  uint largeSetupCapacity;  // set-up records the large pass's buffer can hold
   vec3 eye;            // eye - lighting origin, for the view vector
   uint shadeColors;    // 0: colours from the previous frame are still right, only transform
 };
 
-// Header of the large-triangle list; (triangle id, row chunk) entries follow it in the buffer.
+// Header of the large-triangle list; (set-up slot, row chunk) entries follow it in the buffer.
 struct LargeList {
   uint count;        // entries reserved (may exceed the capacity; those were drawn in place)
   uint groupsX;      // indirect dispatch (min(entries, MAX_DISPATCH_GROUPS), 1, 1)
   uint groupsY;
   uint groupsZ;
+  uint setups;       // set-up slots reserved (likewise)
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 #ifdef __cplusplus
@@ -158,7 +168,7 @@ static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPla
 static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
 static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
 static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 144);
-static_assert(sizeof(LargeList) == 16);
+static_assert(sizeof(LargeList) == 32);
 }  // namespace phongvk::gpu
 #endif
 

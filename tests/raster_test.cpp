@@ -37,7 +37,7 @@ std::vector<int> coverageCounts(const std::vector<std::array<vec3, 3>>& triangle
   const FrameData f = frame();
   for (const auto& tri : triangles) {
     TriangleSetup t;
-    if (!setupTriangle(tri[0], tri[1], tri[2], false, f, t)) continue;
+    if (!setupTriangle(tri[0], tri[1], tri[2], false, 0u, f, t)) continue;
     for (int k = 0; k + 2 < t.count; ++k) {
       EdgeSetup s;
       if (!setupFan(t, k, f, s)) continue;
@@ -178,18 +178,18 @@ TEST(Raster, WindingDoesNotChangeCoverage) {
 TEST(Raster, ZeroAreaTrianglesAreSkipped) {
   const vec3 a = at(3.5f, 3.5f), b = at(10.5f, 10.5f);
   TriangleSetup t;
-  EXPECT_FALSE(setupTriangle(a, b, at(17.5f, 17.5f), false, frame(), t));  // collinear
-  EXPECT_FALSE(setupTriangle(a, a, b, false, frame(), t));                 // repeated vertex
+  EXPECT_FALSE(setupTriangle(a, b, at(17.5f, 17.5f), false, 0u, frame(), t));  // collinear
+  EXPECT_FALSE(setupTriangle(a, a, b, false, 0u, frame(), t));                 // repeated vertex
 }
 
 TEST(Raster, BackFacesOfClosedObjectsAreCulled) {
   // Counter-clockwise seen from the eye (on a y-down screen: a, c, b clockwise) is front-facing.
   const vec3 a = at(5, 5), b = at(5, 20), c = at(20, 5);
   TriangleSetup t;
-  EXPECT_TRUE(setupTriangle(a, b, c, true, frame(), t));
+  EXPECT_TRUE(setupTriangle(a, b, c, true, 0u, frame(), t));
   EXPECT_TRUE(t.frontFacing);
-  EXPECT_FALSE(setupTriangle(a, c, b, true, frame(), t));
-  EXPECT_TRUE(setupTriangle(a, c, b, false, frame(), t));
+  EXPECT_FALSE(setupTriangle(a, c, b, true, 0u, frame(), t));
+  EXPECT_TRUE(setupTriangle(a, c, b, false, 0u, frame(), t));
 }
 
 TEST(Raster, DepthKeyOrdersByDepthThenTriangleId) {
@@ -252,12 +252,44 @@ TEST(Raster, TriangleCrossingTheNearPlaneIsClippedNotDividedByW) {
 
 TEST(Raster, TriangleEntirelyBehindTheEyeDrawsNothing) {
   TriangleSetup t;
-  EXPECT_FALSE(setupTriangle(vec3(1, 1, -1), vec3(5, 1, -1), vec3(1, 5, -2), false, frame(), t));
+  EXPECT_FALSE(setupTriangle(vec3(1, 1, -1), vec3(5, 1, -1), vec3(1, 5, -2), false, 0u, frame(), t));
 }
 
 TEST(Raster, PackColorClampsAndRounds) {
   EXPECT_EQ(packColor(vec3(0.0f, 1.0f, 0.5f)), 0xFF800000u | 0x0000FF00u);  // 0.5 * 255 = 127.5 -> 128
   EXPECT_EQ(packColor(vec3(-1.0f, 2.0f, 0.2f)), 0xFF000000u | (51u << 16) | (255u << 8));
+}
+
+}  // namespace
+}  // namespace phongvk
+
+namespace phongvk {
+namespace {
+
+TEST(Raster, RowSpansHoldExactlyTheCoveredPixels) {
+  // The GPU loops visit rowSpan(); the reference tests covers() on every box pixel. They must
+  // agree on every row of random triangles, slivers and huge ones included.
+  std::mt19937 rng(99);
+  std::uniform_int_distribution<int> coord(-20 * 256, 70 * 256);
+  const FrameData f = frame();
+  int rows = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    i64vec2 v[3];
+    for (auto& p : v) p = i64vec2(coord(rng), coord(rng));
+    if (trial % 3 == 0) v[2] = v[0] + (v[1] - v[0]) * int64_t(3) / int64_t(2) + i64vec2(1, 0);  // sliver
+    for (bool front : {false, true}) {
+      EdgeSetup s;
+      if (!setupEdges(v[0], v[1], v[2], front, f.width, f.height, s)) continue;
+      for (int y = s.bbox.y; y <= s.bbox.w; ++y, ++rows) {
+        const ivec2 span = rowSpan(s, y);
+        for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
+          ASSERT_EQ(covers(s, pixelCentre(x, y)), x >= span.x && x <= span.y)
+              << "trial " << trial << " pixel " << x << "," << y;
+        }
+      }
+    }
+  }
+  EXPECT_GT(rows, 10000);
 }
 
 }  // namespace
