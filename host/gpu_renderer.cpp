@@ -63,7 +63,7 @@ void createAndUpload(Buffer& buffer, const VulkanContext& context, const std::ve
 
 GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data) : context_(context) {
   try {
-    createPipelines();
+    current_[RASTER] = pipeline(RASTER, {});  // its set layout serves every pass (updateDescriptors)
     createDescriptorArena(arena_, context_, 1);
     createTimestampPool(timestamps_, context_, PASS_COUNT + 1);
     uploadScene(data);
@@ -77,20 +77,57 @@ GpuRenderer::~GpuRenderer() { release(); }
 
 void GpuRenderer::release() {
   for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &large_, &largeSetups_,
-                    &keys_, &tiles_, &colors_, &colorReadback_, &keyReadback_}) {
+                    &keys_, &tiles_, &colors_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
   destroyTimestampPool(timestamps_, context_);
   destroyDescriptorArena(arena_, context_);
-  for (ComputePipeline& p : pipelines_) destroyComputePipeline(p, context_);
+  for (auto& [key, p] : pipelines_) destroyComputePipeline(p, context_);
+  pipelines_.clear();
 }
 
-void GpuRenderer::createPipelines() {
-  pipelines_[SHADE] = createComputePipeline(context_, spirv_shade_vertices, sizeof(spirv_shade_vertices), BINDINGS, 0, {});
-  pipelines_[RASTER] =
-      createComputePipeline(context_, spirv_raster_triangles, sizeof(spirv_raster_triangles), BINDINGS, 0, {});
-  pipelines_[LARGE] = createComputePipeline(context_, spirv_raster_large, sizeof(spirv_raster_large), BINDINGS, 0, {});
-  pipelines_[RESOLVE] = createComputePipeline(context_, spirv_resolve, sizeof(spirv_resolve), BINDINGS, 0, {});
+namespace {
+
+struct ShaderCode {
+  const uint32_t* spirv;
+  size_t bytes;
+};
+
+constexpr ShaderCode SHADERS[] = {
+    {spirv_shade_vertices, sizeof(spirv_shade_vertices)},
+    {spirv_raster_triangles, sizeof(spirv_raster_triangles)},
+    {spirv_raster_large, sizeof(spirv_raster_large)},
+    {spirv_resolve, sizeof(spirv_resolve)},
+};
+
+// The specialization constants a frame's shading asks for (shared.h SPEC_*).
+std::vector<SpecConstant> shadeSpecs(const FrameInputs& in) {
+  bool specular = false, constantAttenuation = true;
+  for (const MaterialData& m : in.materials) {
+    specular = specular || m.ks != 0.0f;
+    constantAttenuation = constantAttenuation && m.attenuation.y == 0.0f && m.attenuation.z == 0.0f;
+  }
+  return {{SPEC_LIGHT_COUNT, uint32_t(in.lights.size())}, {SPEC_SPECULAR, specular}, {SPEC_CONSTANT_ATTENUATION, constantAttenuation}};
+}
+
+}  // namespace
+
+// A pipeline of `pass` specialized with `specs`, compiled on first use and kept: a sequence that
+// toggles a feature (a ks sweep through 0) compiles each variant once.
+const ComputePipeline& GpuRenderer::pipeline(Pass pass, const std::vector<SpecConstant>& specs) {
+  std::vector<uint32_t> key = {uint32_t(pass)};
+  for (const SpecConstant& s : specs) key.insert(key.end(), {s.id, s.value});
+  auto found = pipelines_.find(key);
+  if (found != pipelines_.end()) return found->second;
+  const ShaderCode& code = SHADERS[pass];
+  return pipelines_[key] = createComputePipeline(context_, code.spirv, code.bytes, BINDINGS, 0, specs);
+}
+
+void GpuRenderer::selectPipelines(const FrameInputs& in) {
+  current_[SHADE] = pipeline(SHADE, shadeSpecs(in));
+  current_[RASTER] = pipeline(RASTER, {});
+  current_[LARGE] = pipeline(LARGE, {});
+  current_[RESOLVE] = pipeline(RESOLVE, {{SPEC_INTERPOLATION, in.frame.interpolation}});
 }
 
 void GpuRenderer::uploadScene(const SceneData& data) {
@@ -125,11 +162,12 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   const VkDeviceSize tiles = VkDeviceSize(tilesAcross(width)) * tilesAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
-  for (Buffer* b : {&keys_, &tiles_, &colors_, &colorReadback_, &keyReadback_}) destroyBuffer(*b, context_);
+  for (Buffer* b : {&keys_, &tiles_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
   createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
   createBuffer(tiles_, context_, tiles * sizeof(uint32_t), STORAGE, MemoryKind::DeviceLocal);
-  createBuffer(colors_, context_, pixels * sizeof(uint32_t), STORAGE, MemoryKind::DeviceLocal);
-  createBuffer(colorReadback_, context_, pixels * sizeof(uint32_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+  // Resolve writes the colours straight into host-visible memory: no device copy and no second
+  // buffer (12 bytes per pixel in all: keys and colours), and the host reads them in place.
+  createBuffer(colors_, context_, pixels * sizeof(uint32_t), STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                MemoryKind::HostVisible);
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
@@ -160,7 +198,7 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
   };
   // Identically defined set layouts are compatible: one set serves all four pipelines.
-  set_ = allocateDescriptorSet(context_, arena_, pipelines_[SHADE].setLayout, descriptors);
+  set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
 }
 
 namespace {
@@ -216,8 +254,8 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   transferToComputeBarrier(cmd);
 
   auto bind = [&](Pass pass) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass].pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_[pass].layout, 0, 1, &set_, 0, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].layout, 0, 1, &set_, 0, nullptr);
   };
   writeTimestamp(cmd, timestamps_, 0);
   bind(SHADE);
@@ -244,11 +282,6 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   bind(RESOLVE);
   vkCmdDispatch(cmd, tilesAcross(frame.width), tilesAcross(frame.height), 1);
   writeTimestamp(cmd, timestamps_, 4);
-
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_TRANSFER_READ_BIT);
-  VkBufferCopy colorCopy = {0, 0, pixels * sizeof(uint32_t)};
-  vkCmdCopyBuffer(cmd, colors_.buffer, colorReadback_.buffer, 1, &colorCopy);
 }
 
 void GpuRenderer::readTimes() {
@@ -269,13 +302,14 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
                  MemoryKind::HostVisible);
   }
   uploadFrame(in);
+  selectPipelines(in);
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   recordFrame(cmd, in.frame, withKeys);
   submitAndWait(context_, cmd);
   readTimes();
 
   std::vector<uint32_t> packed(pixels);
-  readFromBuffer(context_, colorReadback_, packed.data(), pixels * sizeof(uint32_t));
+  readFromBuffer(context_, colors_, packed.data(), pixels * sizeof(uint32_t));
   RenderOutput out;
   out.image = imageFromPacked(packed, int(width_), int(height_));
   if (withKeys) {

@@ -10,6 +10,9 @@
 #include "reference/render_reference.h"
 #include "reference/scene_data.h"
 
+#include <map>
+#include <vector>
+
 namespace phongvk {
 
 // Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
@@ -42,7 +45,8 @@ class GpuRenderer {
   enum Pass { SHADE, RASTER, LARGE, RESOLVE, PASS_COUNT };
 
   void release();  // destroys whatever exists; safe to call twice
-  void createPipelines();
+  const ComputePipeline& pipeline(Pass pass, const std::vector<SpecConstant>& specs);
+  void selectPipelines(const FrameInputs& in);
   void uploadScene(const SceneData& data);
   void ensureImageBuffers(uint32_t width, uint32_t height);
   void updateDescriptors();
@@ -51,14 +55,15 @@ class GpuRenderer {
   void readTimes();
 
   const VulkanContext& context_;
-  ComputePipeline pipelines_[PASS_COUNT];
+  std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
+  ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
   DescriptorArena arena_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   TimestampPool timestamps_;
   PassTimes times_;
 
   Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, large_, largeSetups_;
-  Buffer keys_, tiles_, colors_, colorReadback_, keyReadback_;
+  Buffer keys_, tiles_, colors_, keyReadback_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
   uint32_t largeCapacity_ = 0;

@@ -62,7 +62,7 @@ Image resolve(const SceneData& data, const std::vector<ShadedVertex>& shaded,
         continue;
       }
       const glm::uvec4 tri = data.triangles[static_cast<uint32_t>(keys[i])];
-      packed[i] = resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame);
+      packed[i] = resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame, frame.interpolation);
     }
   }
   return imageFromPacked(packed, int(frame.width), int(frame.height));

@@ -28,22 +28,37 @@ FN vec3 toHomogeneous(vec3 local, vec3 viewOffset, FrameData frame) {
   return h;
 }
 
-// One light's diffuse + specular contribution at P (all positions relative to the eye):
+// One light's diffuse + specular contribution at P (all positions relative to the lighting origin):
 // S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0.
-FN vec3 phongLight(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light) {
+// `specular` and `constantAttenuation` let a shader specialized to the scene skip work whose
+// result is known: with ks = 0 the specular term adds exactly +0, and with b = c = 0 the
+// attenuation 1 / (a + b d + c d^2) is exactly 1 / a. Either way the result is bit-identical to
+// the general case (both flags true / false), which the reference uses.
+FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, bool specular,
+                       bool constantAttenuation) {
   PRECISE vec3 toLight = light.position - P;
   PRECISE float d = sqrt(dot3(toLight, toLight));
   if (d == 0.0f) return vec3(0.0f);  // a light exactly at the vertex adds nothing
   PRECISE vec3 l = toLight / d;
   PRECISE float NdotL = dot3(N, l);
   if (NdotL <= 0.0f) return vec3(0.0f);
-  PRECISE float S = 1.0f / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
-  PRECISE vec3 r = 2.0f * NdotL * N - l;
-  PRECISE float rV = max(dot3(r, V), 0.0f);
-  // max(r.V, 0)^n with n = 0 is 1; pow(0, n > 0) is 0 (GLSL's pow is undefined at x = 0).
-  PRECISE float specular = m.n == 0.0f ? 1.0f : (rV > 0.0f ? pow(rV, m.n) : 0.0f);
-  PRECISE vec3 lit = (S * light.intensity) * (m.color * light.color) * (m.kd * NdotL + m.ks * specular);
+  PRECISE float S = constantAttenuation
+                        ? 1.0f / m.attenuation.x
+                        : 1.0f / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
+  PRECISE float shade = m.kd * NdotL;
+  if (specular) {
+    PRECISE vec3 r = 2.0f * NdotL * N - l;
+    PRECISE float rV = max(dot3(r, V), 0.0f);
+    // max(r.V, 0)^n with n = 0 is 1; pow(0, n > 0) is 0 (GLSL's pow is undefined at x = 0).
+    PRECISE float highlight = m.n == 0.0f ? 1.0f : (rV > 0.0f ? pow(rV, m.n) : 0.0f);
+    shade = shade + m.ks * highlight;
+  }
+  PRECISE vec3 lit = (S * light.intensity) * (m.color * light.color) * shade;
   return lit;
+}
+
+FN vec3 phongLight(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light) {
+  return phongLightWith(P, N, V, m, light, true, false);
 }
 
 // ka * C * A: the ambient term every vertex gets.

@@ -372,11 +372,12 @@ FN uint packColor(vec3 c) {
   return uint(q.x) | (uint(q.y) << 8) | (uint(q.z) << 16) | (255u << 24);
 }
 
-// The final RGBA8 of pixel (x, y) won by the triangle with these vertices.
-FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int y, FrameData frame) {
+// The final RGBA8 of pixel (x, y) won by the triangle with these vertices; `mode` is
+// frame.interpolation (a specialization constant in the shader).
+FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int y, FrameData frame, uint mode) {
   vec3 p = pixelRay(x, y, frame.principal);
   return packColor(interpolateColor(vec3(a.hpos), vec3(b.hpos), vec3(c.hpos), vec3(a.color),
-                                    vec3(b.color), vec3(c.color), p, frame.interpolation));
+                                    vec3(b.color), vec3(c.color), p, mode));
 }
 
 SHARED_END

@@ -9,6 +9,7 @@
 #include "bindings.glsl"
 
 layout(local_size_x = RESOLVE_GROUP_X, local_size_y = RESOLVE_GROUP_Y) in;
+layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
 
 shared bool touched;
 
@@ -30,5 +31,5 @@ void main() {
   keys[i] = KEY_CLEAR;
   ShadedVertex a, b, c;
   loadTriangle(uint(key & 0xFFFFFFFFul), a, b, c);
-  colors[i] = resolvePixel(a, b, c, int(pixel.x), int(pixel.y), frame);
+  colors[i] = resolvePixel(a, b, c, int(pixel.x), int(pixel.y), frame, INTERPOLATION);
 }

@@ -8,6 +8,11 @@
 
 layout(local_size_x = SHADE_GROUP_SIZE) in;
 
+// Specialized to the scene (see shared.h): the light loop unrolls, unused terms compile away.
+layout(constant_id = SPEC_LIGHT_COUNT) const uint LIGHT_COUNT = 0u;
+layout(constant_id = SPEC_SPECULAR) const bool SPECULAR = true;
+layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION = false;
+
 void shadeVertex(uint i) {
   VertexIn v = vertices[i];
   ObjectData object = objects[v.object];
@@ -17,7 +22,9 @@ void shadeVertex(uint i) {
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);
   vec3 color = phongAmbient(m, frame.ambient);
-  for (uint l = 0u; l < frame.lightCount; ++l) color += phongLight(P, v.normal, V, m, lights[l]);
+  for (uint l = 0u; l < LIGHT_COUNT; ++l) {
+    color += phongLightWith(P, v.normal, V, m, lights[l], SPECULAR, CONSTANT_ATTENUATION);
+  }
   shaded[i].color = vec4(color, 1.0f);
 }
 

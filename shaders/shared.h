@@ -56,6 +56,13 @@ PHONGVK_CONST uint MAX_DISPATCH_GROUPS = 65535;
 // Clipping a triangle against the near plane and four guard planes yields at most 8 vertices.
 PHONGVK_CONST uint MAX_CLIP_VERTICES = 8;
 
+// Specialization constant ids. shade_vertices: the light count, whether any material has a
+// specular term, whether every attenuation is constant (b = c = 0). resolve: the interpolation.
+PHONGVK_CONST uint SPEC_LIGHT_COUNT = 0;
+PHONGVK_CONST uint SPEC_SPECULAR = 1;
+PHONGVK_CONST uint SPEC_CONSTANT_ATTENUATION = 2;
+PHONGVK_CONST uint SPEC_INTERPOLATION = 0;
+
 // Interpolation modes (FrameData.interpolation).
 PHONGVK_CONST uint INTERP_PERSPECTIVE = 0;
 PHONGVK_CONST uint INTERP_SCREEN = 1;
