@@ -33,9 +33,9 @@ constexpr Binding BINDINGS[] = {
     {BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
 };
 
-// Threads -> groups, capped so the dispatch is legal on every device (the shaders grid-stride).
-uint32_t cappedGroups(uint32_t threads, uint32_t groupSize) {
-  return std::min(groupCount(threads, groupSize), MAX_DISPATCH_GROUPS);
+// The most workgroups one pass launches on this device (shared.h: CPU_DISPATCH_GROUPS).
+uint32_t groupCapFor(const VulkanContext& context) {
+  return context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? CPU_DISPATCH_GROUPS : MAX_DISPATCH_GROUPS;
 }
 
 uint32_t tilesAcross(uint32_t pixels) { return groupCount(pixels, TILE_SIZE); }
@@ -155,8 +155,8 @@ void GpuRenderer::uploadScene(const SceneData& data) {
                MemoryKind::DeviceLocal);
 }
 
-// Keys start cleared and tiles untouched once, here; from then on the resolve pass resets what a
-// frame touched, so no frame pays for clearing the whole image.
+// Keys start cleared and tile flags unset once, here; from then on the resolve pass resets what a
+// frame touched, so no frame pays for clearing or scanning the whole image.
 void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   if (width == width_ && height == height_) return;
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
@@ -164,14 +164,15 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
   for (Buffer* b : {&keys_, &tiles_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
   createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
-  createBuffer(tiles_, context_, tiles * sizeof(uint32_t), STORAGE, MemoryKind::DeviceLocal);
+  createBuffer(tiles_, context_, sizeof(TileList) + 2 * tiles * sizeof(uint32_t),
+               STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
   // Resolve writes the colours straight into host-visible memory: no device copy and no second
   // buffer (12 bytes per pixel in all: keys and colours), and the host reads them in place.
   createBuffer(colors_, context_, pixels * sizeof(uint32_t), STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                MemoryKind::HostVisible);
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
-  vkCmdFillBuffer(cmd, tiles_.buffer, 0, VK_WHOLE_SIZE, 0u);
+  vkCmdFillBuffer(cmd, tiles_.buffer, 0, VK_WHOLE_SIZE, 0u);            // no tile touched
   submitAndWait(context_, cmd);
   width_ = width;
   height_ = height;
@@ -238,6 +239,8 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
   frame.largeCapacity = largeCapacity_;
   frame.tilesX = tilesAcross(frame.width);
   frame.largeSetupCapacity = largeSetupCapacity_;
+  frame.groupCap = groupCapFor(context_);
+  frame.tileCount = tilesAcross(frame.width) * tilesAcross(frame.height);
   frame.shadeColors = colorsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
   lastFrame_ = frame;
@@ -249,6 +252,8 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   resetTimestamps(cmd, timestamps_);
   // Untouched tiles are not resolved: their pixels keep this fill.
   vkCmdFillBuffer(cmd, colors_.buffer, 0, VK_WHOLE_SIZE, packColor(frame.background));
+  const TileList noTiles = {0, 0, 1, 1};  // the flags were reset by the last resolve
+  vkCmdUpdateBuffer(cmd, tiles_.buffer, 0, sizeof noTiles, &noTiles);
   const LargeList emptyList = {0, 0, 1, 1, 0, 0, 0, 0};
   vkCmdUpdateBuffer(cmd, large_.buffer, 0, sizeof emptyList, &emptyList);
   transferToComputeBarrier(cmd);
@@ -259,11 +264,12 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   };
   writeTimestamp(cmd, timestamps_, 0);
   bind(SHADE);
-  vkCmdDispatch(cmd, cappedGroups(vertexCount_, SHADE_GROUP_SIZE), 1, 1);
+  const uint32_t cap = groupCapFor(context_);
+  vkCmdDispatch(cmd, std::min(groupCount(vertexCount_, SHADE_GROUP_SIZE), cap), 1, 1);
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 1);
   bind(RASTER);
-  vkCmdDispatch(cmd, cappedGroups(triangleCount_, SETUP_GROUP_SIZE), 1, 1);
+  vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 2);
   bind(LARGE);
@@ -280,7 +286,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
                   VK_ACCESS_SHADER_WRITE_BIT);
   }
   bind(RESOLVE);
-  vkCmdDispatch(cmd, tilesAcross(frame.width), tilesAcross(frame.height), 1);
+  vkCmdDispatchIndirect(cmd, tiles_.buffer, offsetof(TileList, groupsX));
   writeTimestamp(cmd, timestamps_, 4);
 }
 

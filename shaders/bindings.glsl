@@ -10,9 +10,10 @@ layout(std430, binding = BINDING_SHADED) buffer Shaded { ShadedVertex shaded[]; 
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
 layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 largeEntries[]; };
-// Touched tiles: the raster passes set them, resolve reads and clears them (with the keys), so
-// each frame starts clean without clearing the whole image.
-layout(std430, binding = BINDING_TILES) buffer Tiles { uint tiles[]; };
+// Touched tiles (shared.h TileList): tileData[t] is tile t's flag, tileData[tileCount + k] the
+// k-th touched tile. Resolve visits only those, resetting their flags and keys, so a frame never
+// clears or scans the whole image.
+layout(std430, binding = BINDING_TILES) buffer Tiles { TileList tileList; uint tileData[]; };
 layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { TriangleSetup largeSetups[]; };
 
 // The three shaded vertices of triangle `id`.

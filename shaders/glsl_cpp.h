@@ -25,6 +25,7 @@
 #define SHARED_BEGIN namespace phongvk::gpu {
 #define SHARED_END }
 namespace phongvk::gpu {
+using glm::abs;
 using glm::clamp;
 using glm::floor;
 using glm::max;

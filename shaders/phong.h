@@ -28,6 +28,31 @@ FN vec3 toHomogeneous(vec3 local, vec3 viewOffset, FrameData frame) {
   return h;
 }
 
+// Vertex colours are not clamped to [0, 1] (DESIGN.md), but every factor and product is held
+// below COLOR_MAX: a million times brighter than saturation (a channel shows 1 at most), and
+// small enough that a product of two held values and a sum over many lights stay finite and that
+// interpolating between a held vertex and a dark one keeps float precision (also in a graphics
+// pipeline's varyings). So no valid input (a light 1e-20 m from a vertex with a = 0, intensities
+// of 1e30) makes inf * 0 or inf - inf, i.e. NaN: such a vertex is just saturated. Ordinary
+// values pass through unchanged: min(x, M) = x.
+PHONGVK_CONST float COLOR_MAX = 1.0e6f;
+
+FN float held(float x) { return min(x, COLOR_MAX); }
+FN vec3 held3(vec3 v) { return min(v, vec3(COLOR_MAX)); }
+
+// |v|. When |v|^2 falls below the smallest normal float, devices disagree: some keep the
+// subnormal square, others flush it to 0 (and would call a light 1e-20 m away "at the vertex").
+// Rescaling by the largest component first gives every device the same, exact-enough length.
+FN float lightDistance(vec3 v) {
+  PRECISE float dd = dot3(v, v);
+  if (dd >= 1.17549435e-38f) return sqrt(dd);
+  PRECISE float m = max(abs(v.x), max(abs(v.y), abs(v.z)));
+  if (m == 0.0f) return 0.0f;
+  PRECISE vec3 u = v / m;
+  PRECISE float d = m * sqrt(dot3(u, u));
+  return d;
+}
+
 // One light's diffuse + specular contribution at P (all positions relative to the lighting origin):
 // S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0.
 // `specular` and `constantAttenuation` let a shader specialized to the scene skip work whose
@@ -37,23 +62,24 @@ FN vec3 toHomogeneous(vec3 local, vec3 viewOffset, FrameData frame) {
 FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, bool specular,
                        bool constantAttenuation) {
   PRECISE vec3 toLight = light.position - P;
-  PRECISE float d = sqrt(dot3(toLight, toLight));
+  PRECISE float d = lightDistance(toLight);
   if (d == 0.0f) return vec3(0.0f);  // a light exactly at the vertex adds nothing
   PRECISE vec3 l = toLight / d;
   PRECISE float NdotL = dot3(N, l);
   if (NdotL <= 0.0f) return vec3(0.0f);
-  PRECISE float S = constantAttenuation
-                        ? 1.0f / m.attenuation.x
-                        : 1.0f / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
-  PRECISE float shade = m.kd * NdotL;
+  PRECISE float S = held(constantAttenuation
+                             ? 1.0f / m.attenuation.x
+                             : 1.0f / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));
+  PRECISE float shade = held(m.kd * NdotL);
   if (specular) {
     PRECISE vec3 r = 2.0f * NdotL * N - l;
     PRECISE float rV = max(dot3(r, V), 0.0f);
     // max(r.V, 0)^n with n = 0 is 1; pow(0, n > 0) is 0 (GLSL's pow is undefined at x = 0).
     PRECISE float highlight = m.n == 0.0f ? 1.0f : (rV > 0.0f ? pow(rV, m.n) : 0.0f);
-    shade = shade + m.ks * highlight;
+    shade = shade + held(m.ks * highlight);
   }
-  PRECISE vec3 lit = (S * light.intensity) * (m.color * light.color) * shade;
+  PRECISE float weight = held(held(S * light.intensity) * shade);
+  PRECISE vec3 lit = held3(weight * held3(m.color * light.color));
   return lit;
 }
 
@@ -63,7 +89,7 @@ FN vec3 phongLight(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light) {
 
 // ka * C * A: the ambient term every vertex gets.
 FN vec3 phongAmbient(MaterialData m, vec3 ambient) {
-  PRECISE vec3 a = m.ka * m.color * ambient;
+  PRECISE vec3 a = held3(held3(m.ka * m.color) * ambient);
   return a;
 }
 

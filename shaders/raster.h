@@ -269,7 +269,7 @@ struct TriangleSetup {
   float zMin;
   float zMax;
   uint triangle;      // its id: the low word of its visibility keys
-  uint pad0;
+  float area;         // of the snapped polygon, in square pixels (shapes the large pass's chunks)
   uint pad1;
   uint pad2;
 };
@@ -291,6 +291,7 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, F
   i64vec2 lo = snapToSubpixel(poly[0], frame.principal);
   i64vec2 hi = lo;
   t.snapped[0] = ivec2(lo);
+  int64_t twiceArea = int64_t(0);  // shoelace over the fan, in subpixels squared
   for (int i = 1; i < t.count; ++i) {
     t.zMin = min(t.zMin, poly[i].z);
     t.zMax = max(t.zMax, poly[i].z);
@@ -298,26 +299,31 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, F
     t.snapped[i] = ivec2(v);
     lo = min(lo, v);
     hi = max(hi, v);
+    if (i >= 2) twiceArea += edgeFunction(i64vec2(t.snapped[0]), i64vec2(t.snapped[i - 1]), v);
   }
+  t.area = abs(float(twiceArea)) / float(2 * SUBPIXEL_ONE * SUBPIXEL_ONE);
   t.bbox = pixelBounds(lo, hi, frame.width, frame.height);
   return !isEmpty(t.bbox);
 }
 
 FN int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
 
-// Rows per large-pass chunk: a power of two, at most LARGE_GROUP_SIZE, so a chunk holds about
-// LARGE_CHUNK_PIXELS box pixels and its rows split the workgroup's lanes evenly
-// (LARGE_GROUP_SIZE / rows lanes per row).
-FN int rowsPerChunk(ivec4 box) {
-  int target = clamp(int(LARGE_CHUNK_PIXELS) / (box.z - box.x + 1), 1, int(LARGE_GROUP_SIZE));
-  int rows = 1;
-  while (rows * 2 <= target) rows *= 2;
-  return rows;
+// Rows per large-pass chunk: a power of two, at most LARGE_GROUP_SIZE, so a chunk covers about
+// LARGE_CHUNK_PIXELS pixels and its rows split the workgroup's lanes evenly (LARGE_GROUP_SIZE /
+// rows lanes per row). Sized by the average row span (area / rows), not the box width, so a
+// sliver gets a lane per row instead of many lanes sharing a few pixels.
+FN int rowsPerChunk(TriangleSetup t) {
+  float rows = float(t.bbox.w - t.bbox.y + 1);
+  float span = max(1.0f, t.area / rows);
+  int target = int(clamp(float(LARGE_CHUNK_PIXELS) / span, 1.0f, float(LARGE_GROUP_SIZE)));
+  int chunkRows = 1;
+  while (chunkRows * 2 <= target) chunkRows *= 2;
+  return chunkRows;
 }
 
-FN int chunkCount(ivec4 box) {
-  int rows = box.w - box.y + 1;
-  return (rows + rowsPerChunk(box) - 1) / rowsPerChunk(box);
+FN int chunkCount(TriangleSetup t) {
+  int rows = t.bbox.w - t.bbox.y + 1;
+  return (rows + rowsPerChunk(t) - 1) / rowsPerChunk(t);
 }
 
 // Sub-triangle k (0 <= k < count - 2) of a set-up triangle's fan.

@@ -19,7 +19,7 @@ void main() {
     uvec2 entry = largeEntries[e];
     TriangleSetup t = largeSetups[entry.x];  // set up once, by the triangle pass
     // The chunk's rows split the lanes: each lane walks its own row's span with its row-mates.
-    int rows = rowsPerChunk(t.bbox);
+    int rows = rowsPerChunk(t);
     int lanesPerRow = int(LARGE_GROUP_SIZE) / rows;
     int rowLo = t.bbox.y + int(entry.y) * rows;
     int y = rowLo + lane / lanesPerRow;

@@ -1,12 +1,16 @@
 // raster_loops.glsl — the loops both raster passes share (after bindings.glsl; needs
 // GL_EXT_shader_atomic_int64).
 
-// Marks the tiles of pixel box (x0, y0, x1, y1) as touched. Every writer stores the same value,
-// so the unsynchronised stores are benign.
+// Marks the tiles of pixel box (x0, y0, x1, y1) as touched: the first toucher of a tile appends
+// it to the list (the plain read skips the atomic for tiles already taken).
 void markTiles(ivec4 box) {
   for (int ty = box.y / int(TILE_SIZE); ty <= box.w / int(TILE_SIZE); ++ty) {
     for (int tx = box.x / int(TILE_SIZE); tx <= box.z / int(TILE_SIZE); ++tx) {
-      tiles[uint(ty) * frame.tilesX + uint(tx)] = 1u;
+      uint tile = uint(ty) * frame.tilesX + uint(tx);
+      if (tileData[tile] != 0u || atomicExchange(tileData[tile], 1u) != 0u) continue;
+      uint k = atomicAdd(tileList.count, 1u);
+      tileData[frame.tileCount + k] = tile;
+      atomicMax(tileList.groupsX, min(k + 1u, frame.groupCap));
     }
   }
 }

@@ -17,12 +17,12 @@ layout(local_size_x = SETUP_GROUP_SIZE) in;
 bool deferToLargePass(TriangleSetup t) {
   uint slot = atomicAdd(large.setups, 1u);
   if (slot >= frame.largeSetupCapacity) return false;
-  uint chunks = uint(chunkCount(t.bbox));
+  uint chunks = uint(chunkCount(t));
   uint first = atomicAdd(large.count, chunks);
   if (first + chunks > frame.largeCapacity) return false;
   largeSetups[slot] = t;
   for (uint c = 0u; c < chunks; ++c) largeEntries[first + c] = uvec2(slot, c);
-  atomicMax(large.groupsX, min(first + chunks, MAX_DISPATCH_GROUPS));
+  atomicMax(large.groupsX, min(first + chunks, frame.groupCap));
   return true;
 }
 
@@ -35,7 +35,7 @@ void rasterizeHere(TriangleSetup t) {
 }
 
 void main() {
-  // Grid-stride: the host caps the group count at MAX_DISPATCH_GROUPS.
+  // Grid-stride: the host caps the group count at frame.groupCap.
   for (uint id = gl_GlobalInvocationID.x; id < frame.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
     TriangleSetup t;
     if (!setupTriangleById(id, t)) continue;

@@ -1,6 +1,7 @@
-// Resolve pass: one workgroup per 8x8 tile. A tile no triangle touched is skipped (the host
-// filled the colours with the background). Otherwise, per pixel, the winning key's triangle ->
-// Gouraud colour -> packed RGBA8, and the key and the tile are reset for the next frame.
+// Resolve pass: an indirect dispatch over the touched tiles (bindings.glsl), a workgroup being one
+// 8x8 tile at a time; untouched tiles keep the background the host filled in. Per pixel, the
+// winning key's triangle -> Gouraud colour -> packed RGBA8, and the key and the tile's flag are
+// reset for the next frame.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -11,16 +12,9 @@
 layout(local_size_x = RESOLVE_GROUP_X, local_size_y = RESOLVE_GROUP_Y) in;
 layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
 
-shared bool touched;
-
-void main() {
-  uint tile = gl_WorkGroupID.y * frame.tilesX + gl_WorkGroupID.x;
-  if (gl_LocalInvocationIndex == 0u) touched = tiles[tile] != 0u;
-  barrier();
-  if (!touched) return;
-  if (gl_LocalInvocationIndex == 0u) tiles[tile] = 0u;
-
-  uvec2 pixel = gl_GlobalInvocationID.xy;
+// This invocation's pixel of tile `tile`.
+void resolveTile(uint tile) {
+  uvec2 pixel = uvec2(tile % frame.tilesX, tile / frame.tilesX) * TILE_SIZE + gl_LocalInvocationID.xy;
   if (pixel.x >= frame.width || pixel.y >= frame.height) return;
   uint i = pixel.y * frame.width + pixel.x;
   uint64_t key = keys[i];
@@ -32,4 +26,12 @@ void main() {
   ShadedVertex a, b, c;
   loadTriangle(uint(key & 0xFFFFFFFFul), a, b, c);
   colors[i] = resolvePixel(a, b, c, int(pixel.x), int(pixel.y), frame, INTERPOLATION);
+}
+
+void main() {
+  for (uint k = gl_WorkGroupID.x; k < tileList.count; k += gl_NumWorkGroups.x) {
+    uint tile = tileData[frame.tileCount + k];
+    if (gl_LocalInvocationIndex == 0u) tileData[tile] = 0u;  // only this invocation reads it
+    resolveTile(tile);
+  }
 }

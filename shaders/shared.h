@@ -51,8 +51,11 @@ PHONGVK_CONST uint LARGE_CHUNK_PIXELS = 4096;
 PHONGVK_CONST uint LARGE_LIST_SPARE = 65536;
 PHONGVK_CONST uint LARGE_SETUPS_MAX = 65536;
 // Dispatches are capped at the smallest maxComputeWorkGroupCount[0] Vulkan allows; the shaders
-// loop (grid-stride) when there is more work than that many groups.
+// loop (grid-stride) when there is more work than that many groups. On a CPU device (lavapipe)
+// every workgroup costs about 0.6 us of scheduling however little it does, so there the cap is
+// CPU_DISPATCH_GROUPS: a few groups per core, each looping over many items.
 PHONGVK_CONST uint MAX_DISPATCH_GROUPS = 65535;
+PHONGVK_CONST uint CPU_DISPATCH_GROUPS = 256;
 // Clipping a triangle against the near plane and four guard planes yields at most 8 vertices.
 PHONGVK_CONST uint MAX_CLIP_VERTICES = 8;
 
@@ -81,7 +84,7 @@ PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex[]
 PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
 PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
 PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (triangle, chunk) entries
-PHONGVK_CONST uint BINDING_TILES = 10;       // one uint per TILE_SIZE^2 tile: 1 if a triangle touched it
+PHONGVK_CONST uint BINDING_TILES = 10;       // TileList header, a flag per tile, the touched tiles' ids
 PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // TriangleSetup (raster.h) of each large triangle
 
 // ---- Buffer structs ----
@@ -149,9 +152,23 @@ struct FrameData {
   uint largeSetupCapacity;  // set-up records the large pass's buffer can hold
   vec3 eye;            // eye - lighting origin, for the view vector
   uint shadeColors;    // 0: colours from the previous frame are still right, only transform
+  uint groupCap;       // most workgroups a pass launches; the passes grid-stride beyond it
+  uint tileCount;      // tilesX * tiles down
+  uint pad1;
+  uint pad2;
 };
 
 // Header of the large-triangle list; (set-up slot, row chunk) entries follow it in the buffer.
+// Header of the touched-tile list. The tile buffer holds this header, then one flag per tile
+// (1 once a triangle touched it this frame), then the ids of the touched tiles in the order
+// they were first touched; resolve is an indirect dispatch over that list.
+struct TileList {
+  uint count;        // tiles touched
+  uint groupsX;      // indirect dispatch (min(count, frame.groupCap), 1, 1)
+  uint groupsY;
+  uint groupsZ;
+};
+
 struct LargeList {
   uint count;        // entries reserved (may exceed the capacity; those were drawn in place)
   uint groupsX;      // indirect dispatch (min(entries, MAX_DISPATCH_GROUPS), 1, 1)
@@ -174,8 +191,8 @@ static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearP
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);
 static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
 static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
-static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 144);
-static_assert(sizeof(LargeList) == 32);
+static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 160);
+static_assert(sizeof(LargeList) == 32 && sizeof(TileList) == 16);
 }  // namespace phongvk::gpu
 #endif
 

@@ -253,7 +253,7 @@ TEST(SceneErrors, TopLevelMustBeAnObject) {
 TEST(SceneErrors, UnknownKeyAtTopLevel) {
   EXPECT_EQ(errorFor([](ordered_json& s) { s["lighting"] = 1; }),
             "a.json: lighting: unknown key (allowed: camera, background, ambient, lights, "
-            "materials, objects, render)");
+            "materials, objects, render, animate)");
 }
 
 TEST(SceneErrors, UnknownKeyNested) {
