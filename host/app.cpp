@@ -1,7 +1,10 @@
 #include "app.h"
 
+#include "host/cli_support.h"
 #include "host/context.h"
 #include "host/gpu_renderer.h"
+#include "host/raster_renderer.h"
+#include "host/timing.h"
 #include "reference/camera.h"
 #include "reference/compare.h"
 #include "reference/render_reference.h"
@@ -10,54 +13,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <functional>
-#include <optional>
-#include <unistd.h>
 
 namespace phongvk {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// Runs a command, turning each kind of failure into its message on stderr and its exit code.
-int guarded(const std::function<int()>& command) {
-  try {
-    return command();
-  } catch (const SceneError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return EXIT_BAD_INPUT;
-  } catch (const OutputError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return EXIT_BAD_INPUT;
-  } catch (const NoDeviceError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return EXIT_NO_DEVICE;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return EXIT_FAILURE_OTHER;
-  }
-}
-
-// Fails before any rendering when the output cannot be written, so no time is wasted and no
-// partial file appears.
-void checkWritable(const std::string& path) {
-  if (path.empty()) return;
-  std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (folder.empty()) folder = ".";
-  if (!std::filesystem::is_directory(folder)) {
-    throw OutputError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
-  }
-  if (access(folder.c_str(), W_OK) != 0) {
-    throw OutputError("cannot write '" + path + "': folder '" + folder.string() + "' is not writable");
-  }
-  if (std::filesystem::is_directory(path)) throw OutputError("cannot write '" + path + "': it is a folder");
-}
 
 // A scene loaded and flattened, with the view the options ask for.
 struct Prepared {
@@ -81,44 +41,11 @@ Prepared prepare(const ViewOptions& options) {
   return p;
 }
 
-// The GPU backend: a context and a renderer holding the uploaded scene.
-struct GpuSession {
-  VulkanContext context;
-  std::optional<GpuRenderer> renderer;
-
-  GpuSession(const ViewOptions& options, const SceneData& data) {
-    context = createContext({options.device, options.validate});
-    try {
-      renderer.emplace(context, data);
-    } catch (...) {
-      destroyContext(context);
-      throw;
-    }
-  }
-  ~GpuSession() {
-    renderer.reset();
-    destroyContext(context);
-  }
-};
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 // --repeat: N timed frames after one warm-up, wall clock per frame and device time.
 void printRepeatTiming(int repeat, const std::function<double()>& frame) {
-  frame();  // warm-up: first-use costs (pipeline caches, page faults) are not a frame's
-  std::vector<double> wall, device;
-  for (int i = 0; i < repeat; ++i) {
-    const auto start = Clock::now();
-    const double deviceMs = frame();
-    wall.push_back(msSince(start));
-    device.push_back(deviceMs);
-  }
-  std::printf("frame ms: median %.3f (device %.3f, min %.3f, max %.3f)\n", median(wall), median(device),
-              *std::min_element(wall.begin(), wall.end()), *std::max_element(wall.begin(), wall.end()));
+  const FrameTimes t = timeFrames(repeat, frame);
+  std::printf("frame ms: median %.3f (device %.3f, min %.3f, max %.3f)\n", median(t.wallMs), median(t.deviceMs),
+              *std::min_element(t.wallMs.begin(), t.wallMs.end()), *std::max_element(t.wallMs.begin(), t.wallMs.end()));
 }
 
 void printSummary(const RenderOptions& options, const Prepared& p, const std::string& backend, double renderMs) {
@@ -129,33 +56,54 @@ void printSummary(const RenderOptions& options, const Prepared& p, const std::st
 
 }  // namespace
 
+namespace {
+
+// One frame on the chosen backend, optionally timed with --repeat. Returns the image and a
+// description of the backend for the summary line.
+RenderOutput renderOnBackend(const RenderOptions& options, const Prepared& p, std::string& backend) {
+  if (options.backend == "cpu") {
+    backend = "cpu (reference)";
+    if (options.repeat > 0) {
+      printRepeatTiming(options.repeat, [&] {
+        const auto t = Clock::now();
+        renderReference(p.data, p.frame);
+        return msSince(t);
+      });
+    }
+    return renderReference(p.data, p.frame);
+  }
+  GpuSession gpu(options);
+  if (options.backend == "raster") {
+    backend = "raster (Vulkan graphics pipeline, " + gpu.context.report.name + ")";
+    RasterRenderer raster(gpu.context, p.data);
+    if (options.repeat > 0) {
+      printRepeatTiming(options.repeat, [&] {
+        raster.render(p.frame);
+        return raster.lastDeviceMs();
+      });
+    }
+    return raster.render(p.frame);
+  }
+  backend = "gpu (Vulkan compute, " + gpu.context.report.name + ")";
+  gpu.load(p.data);
+  if (options.repeat > 0) {
+    printRepeatTiming(options.repeat, [&] {
+      gpu.renderer->render(p.frame);
+      return gpu.renderer->lastPassTimes().total;
+    });
+  }
+  return gpu.renderer->render(p.frame);
+}
+
+}  // namespace
+
 int runRender(const RenderOptions& options) {
   return guarded([&] {
     checkWritable(options.output);
     const Prepared p = prepare(options);
-    RenderOutput out;
     const auto start = Clock::now();
-    std::string backend = "cpu (reference)";
-    if (options.backend == "cpu") {
-      out = renderReference(p.data, p.frame);
-      if (options.repeat > 0) {
-        printRepeatTiming(options.repeat, [&] {
-          const auto t = Clock::now();
-          renderReference(p.data, p.frame);
-          return msSince(t);
-        });
-      }
-    } else {
-      GpuSession gpu(options, p.data);
-      out = gpu.renderer->render(p.frame);
-      backend = "gpu (" + gpu.context.report.name + ")";
-      if (options.repeat > 0) {
-        printRepeatTiming(options.repeat, [&] {
-          gpu.renderer->render(p.frame);
-          return gpu.renderer->lastPassTimes().total;
-        });
-      }
-    }
+    std::string backend;
+    const RenderOutput out = renderOnBackend(options, p, backend);
     const double renderMs = msSince(start);
     writePng(options.output, out.image);
     printSummary(options, p, backend, renderMs);

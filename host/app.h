@@ -24,7 +24,7 @@ struct ViewOptions {
 
 struct RenderOptions : ViewOptions {
   std::string output;
-  std::string backend = "gpu";  // gpu | cpu
+  std::string backend = "gpu";  // gpu (compute) | cpu (reference) | raster (graphics pipeline)
   int repeat = 0;               // > 0: time this many frames after a warm-up
 };
 

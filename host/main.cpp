@@ -1,5 +1,6 @@
 // phongvk — headless Phong/Gouraud renderer. main parses arguments and calls host/app.h.
 #include "host/app.h"
+#include "host/sequence.h"
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +19,17 @@ void addViewOptions(CLI::App* command, phongvk::ViewOptions& options) {
   command->add_flag("--validate", options.validate, "Enable the Vulkan validation layers");
 }
 
+// `render` also offers the graphics-pipeline baseline (raster); sequences use the other two.
+void addBackendOption(CLI::App* command, std::string& backend, bool withRaster = false) {
+  std::vector<std::string> choices = {"gpu", "cpu"};
+  std::string help = "gpu (Vulkan compute, default) or cpu (the reference)";
+  if (withRaster) {
+    choices.push_back("raster");
+    help = "gpu (Vulkan compute, default), cpu (the reference) or raster (Vulkan graphics pipeline)";
+  }
+  command->add_option("--backend", backend, help)->check(CLI::IsMember(choices));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -28,8 +40,7 @@ int main(int argc, char** argv) {
   CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to PNG");
   addViewOptions(renderCmd, render);
   renderCmd->add_option("-o,--output", render.output, "Output PNG")->required();
-  renderCmd->add_option("--backend", render.backend, "gpu (Vulkan compute, default) or cpu (the reference)")
-      ->check(CLI::IsMember({"gpu", "cpu"}));
+  addBackendOption(renderCmd, render.backend, true);
   renderCmd->add_option("--repeat", render.repeat, "Time N frames after a warm-up and print the median")
       ->check(CLI::Range(1, 100000));
 
@@ -39,6 +50,18 @@ int main(int argc, char** argv) {
   diffCmd->add_option("--heatmap", diff.heatmap, "Write a PNG showing where the images differ");
   diffCmd->add_option("--tolerance", diff.tolerance, "Largest allowed channel difference, in 8-bit units (default 1)")
       ->check(CLI::Range(0.0, 255.0));
+
+  phongvk::SequenceOptions sequence;
+  CLI::App* sequenceCmd = app.add_subcommand("sequence", "Render the frames of an animated scene to numbered PNGs");
+  addViewOptions(sequenceCmd, sequence);
+  sequenceCmd->add_option("-o,--output", sequence.outputDir, "Folder for frame_0000.png, frame_0001.png, ...")
+      ->required();
+  sequenceCmd->add_option("--frames", sequence.frames,
+                          "START:END[:STEP], END excluded like a Python slice (default: every frame)");
+  sequenceCmd->add_option("--sheet", sequence.sheet, "Also write a contact sheet of the frames (PNG)");
+  sequenceCmd->add_option("--thumb-width", sequence.thumbnailWidth, "Widest thumbnail on the sheet (default 160)")
+      ->check(CLI::Range(8, 4096));
+  addBackendOption(sequenceCmd, sequence.backend);
 
   app.add_subcommand("devices", "List Vulkan devices and whether phongvk can use them");
 
@@ -51,5 +74,6 @@ int main(int argc, char** argv) {
   }
   if (renderCmd->parsed()) return phongvk::runRender(render);
   if (diffCmd->parsed()) return phongvk::runDiff(diff);
+  if (sequenceCmd->parsed()) return phongvk::runSequence(sequence);
   return phongvk::runDevices();
 }

@@ -7,12 +7,14 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
+#include "animate.h"
 #include "camera.h"
 #include "scene_json.h"
 
@@ -21,8 +23,9 @@ namespace {
 
 using namespace scenejson;
 
-const Keys kSceneKeys = {"camera",    "background", "ambient", "lights",
-                         "materials", "objects",    "render"};
+// "animate" is read by SceneSequence (animate.h), which hands readScene each frame without it.
+const Keys kSceneKeys = {"camera",  "background", "ambient", "lights",
+                         "materials", "objects",    "render",  "animate"};
 const Keys kCameraKeys = {"position",   "direction", "look_at", "up",   "fov", "aspect",
                           "resolution", "width",     "height",  "near", "far"};
 const Keys kLightKeys = {"position", "intensity", "color"};
@@ -49,6 +52,10 @@ const std::vector<ShapeInfo> kShapes = {
 // Below this |cross(f, up)| the camera's right vector is numerically meaningless.
 constexpr double kParallelTolerance = 1e-6;
 
+// A narrower field of view makes the focal length (up to 8192 / tan(fov / 2) pixels per metre)
+// large enough that focal times a distance overflows a 32-bit float in the shaders.
+constexpr double kMinFov = 1e-6;
+
 // Why `path` cannot be read as a regular file, or nothing if it can. Checks the type before
 // opening: opening a FIFO for reading would block.
 std::optional<std::string> unreadableReason(const std::string& path) {
@@ -73,6 +80,20 @@ double unitComponent(const Node& node) { return inRange(node, 0, 1); }
 glm::vec3 color(const Node& node) { return glm::vec3(vec3(node, nonNegativeComponent)); }
 glm::vec3 unitColor(const Node& node) { return glm::vec3(vec3(node, unitComponent)); }
 
+// Positions and sizes stay within MAX_COORDINATE metres, so that every offset, distance and
+// squared distance the renderers take in float stays finite (a 1e300 m centre used to become an
+// infinite eye offset and NaN vertices).
+double coordinate(const Node& node) { return inRange(node, -MAX_COORDINATE, MAX_COORDINATE); }
+glm::dvec3 point(const Node& node) { return vec3(node, coordinate); }
+
+double length(const Node& node) {
+  double value = positive(node);
+  if (value > MAX_COORDINATE) {
+    node.fail("must be <= " + formatNumber(MAX_COORDINATE) + ", got " + formatNumber(value));
+  }
+  return value;
+}
+
 // A direction the camera basis can normalize: length neither zero nor overflowing.
 glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction) {
   double length = glm::length(direction);
@@ -91,7 +112,7 @@ glm::dvec3 readViewDirection(const Node& camera, glm::dvec3 position) {
   if (direction && lookAt) lookAt->fail("cannot be given together with 'direction'");
   if (direction) return usableDirection(*direction, vec3(*direction));
   if (!lookAt) camera.fail("missing required field 'direction' (or 'look_at')");
-  glm::dvec3 target = vec3(*lookAt);
+  glm::dvec3 target = point(*lookAt);
   if (target == position) lookAt->fail("equals camera.position, so there is no view direction");
   return usableDirection(*lookAt, target - position);
 }
@@ -141,6 +162,11 @@ void readImageSize(const Node& camera, CameraSpec& spec) {
 
 void readDepthRange(const Node& camera, CameraSpec& spec) {
   if (auto node = camera.find("near")) spec.nearPlane = positive(*node);
+  // The renderers clip at near as a float: one that rounds to 0 would let them divide by w = 0.
+  if (static_cast<float>(spec.nearPlane) < FLT_MIN) {
+    camera.failAt("near", "must be >= " + formatNumber(FLT_MIN) + " (the smallest normal 32-bit float), got " +
+                              formatNumber(spec.nearPlane));
+  }
   if (auto node = camera.find("far")) spec.farPlane = number(*node);
   if (!(spec.farPlane > spec.nearPlane)) {
     camera.failAt("far", "must be > near (" + formatNumber(spec.nearPlane) + "), got " +
@@ -152,10 +178,14 @@ CameraSpec readCamera(const Node& camera) {
   requireObject(camera);
   checkKeys(camera, kCameraKeys);
   CameraSpec spec;
-  spec.position = vec3(camera.require("position"));
+  spec.position = point(camera.require("position"));
   spec.direction = readViewDirection(camera, spec.position);
   spec.up = readUp(camera, spec.direction);
   if (auto node = camera.find("fov")) spec.fov = inOpenRange(*node, 0, 180);
+  if (spec.fov < kMinFov) {
+    camera.failAt("fov", "must be >= " + formatNumber(kMinFov) +
+                             " degrees (a narrower view overflows 32-bit floats), got " + formatNumber(spec.fov));
+  }
   readImageSize(camera, spec);
   readDepthRange(camera, spec);
   return spec;
@@ -167,7 +197,7 @@ Light readLight(const Node& node) {
   requireObject(node);
   checkKeys(node, kLightKeys);
   Light light;
-  light.position = vec3(node.require("position"));
+  light.position = point(node.require("position"));
   if (auto intensity = node.find("intensity")) light.intensity = nonNegativeFloat(*intensity);
   if (auto lightColor = node.find("color")) light.color = color(*lightColor);
   return light;
@@ -296,7 +326,7 @@ std::vector<glm::dvec3> readPoints(const Node& node) {
   size_t count = node.json().size();
   if (count < 4) node.fail("needs at least 4 points, got " + std::to_string(count));
   std::vector<glm::dvec3> points;
-  for (size_t i = 0; i < count; ++i) points.push_back(vec3(node.element(i)));
+  for (size_t i = 0; i < count; ++i) points.push_back(point(node.element(i)));
   return points;
 }
 
@@ -313,14 +343,14 @@ std::string resolveMeshFile(const Node& node, const std::string& baseDir) {
 // Each geometry key means the same for every shape that takes it, and checkObjectKeys has
 // already rejected the keys this shape does not take, so one reader serves all shapes.
 void readGeometry(const Node& node, Object& object, const std::string& baseDir) {
-  if (auto center = node.find("center")) object.center = vec3(*center);
-  if (auto radius = node.find("radius")) object.radius = positive(*radius);
-  if (auto size = node.find("size")) object.size = positive(*size);
-  if (auto height = node.find("height")) object.height = positive(*height);
+  if (auto center = node.find("center")) object.center = point(*center);
+  if (auto radius = node.find("radius")) object.radius = length(*radius);
+  if (auto size = node.find("size")) object.size = length(*size);
+  if (auto height = node.find("height")) object.height = length(*height);
   if (auto segments = node.find("segments")) object.segments = integer(*segments, 3, 4096);
   if (auto rings = node.find("rings")) object.rings = integer(*rings, 1, 4096);
   if (auto scale = node.find("scale")) object.scale = positive(*scale);
-  if (auto translate = node.find("translate")) object.translate = vec3(*translate);
+  if (auto translate = node.find("translate")) object.translate = point(*translate);
   if (object.shape == Shape::Polyhedron) object.points = readPoints(node.require("points"));
   if (object.shape == Shape::Mesh) object.file = resolveMeshFile(node.require("file"), baseDir);
 }
@@ -383,18 +413,24 @@ Scene readScene(const Node& root, const std::string& path, const std::string& ba
 
 }  // namespace
 
-Scene loadScene(const std::string& path) {
+std::string readSceneText(const std::string& path) {
   if (auto reason = unreadableReason(path)) {
     throw SceneError(path + ": cannot read file: " + *reason);
   }
   std::ifstream in(path, std::ios::binary);
   std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (!in.is_open()) throw SceneError(path + ": cannot read file: " + std::strerror(errno));
-  return parseScene(text, path, std::filesystem::path(path).parent_path().string());
+  return text;
+}
+
+Scene loadScene(const std::string& path) {
+  return parseScene(readSceneText(path), path, std::filesystem::path(path).parent_path().string());
 }
 
 Scene parseScene(const std::string& text, const std::string& path, const std::string& baseDir) {
   Json json = parseJson(text, path);
+  // The sequence validates the block and parses frame 0's JSON (which has no "animate") here.
+  if (json.is_object() && json.contains("animate")) return SceneSequence(std::move(json), path, baseDir).frame(0);
   return readScene(Node(json, "", path), path, baseDir);
 }
 

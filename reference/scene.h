@@ -47,6 +47,11 @@ struct CameraSpec {
   double farPlane = 1000;
 };
 
+// The largest |coordinate| and size, in metres, a scene may use (positions, centres, points,
+// radii, OBJ vertices after scaling): far beyond any useful scene, small enough that the offsets
+// and squared distances the renderers take in 32-bit float cannot overflow.
+inline constexpr double MAX_COORDINATE = 1e15;
+
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
 enum class Interpolation { Perspective, Screen };
 
@@ -80,10 +85,14 @@ struct Scene {
 };
 
 // Reads and validates a scene file. Throws SceneError naming the file and the JSON path.
+// A file with an "animate" block gives its frame 0 (animate.h has the other frames).
 Scene loadScene(const std::string& path);
 
 // Parses scene JSON text. `path` names the source in messages; relative files resolve against
-// `baseDir`. Throws SceneError.
+// `baseDir`. Throws SceneError. Like loadScene, an animated scene gives its frame 0.
 Scene parseScene(const std::string& text, const std::string& path, const std::string& baseDir);
+
+// A scene file's text. Throws SceneError "<path>: cannot read file: <why>".
+std::string readSceneText(const std::string& path);
 
 }  // namespace phongvk

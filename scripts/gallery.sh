@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Regenerates docs/gallery/ from scenes/paper/: a still for each Fig. 1 scene and a contact sheet
+# for each sequence (Figs. 2-7), and prints how long each took. See docs/gallery.md.
+#
+#   scripts/gallery.sh                      # builds build/ if needed, renders on the GPU backend
+#   BUILD_DIR=build-rel BACKEND=cpu scripts/gallery.sh
+#
+# Sizes are kept small so the committed PNGs stay at a few hundred KB in all and the whole run
+# takes seconds on a 2-core machine with lavapipe: stills at 360x240; sequences rendered at
+# 240x160, every 10th frame of a 120-frame sequence (12 frames), box-filtered to 120 px wide
+# thumbnails. The frames themselves go to a temporary folder and are deleted.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${BUILD_DIR:-$root/build}"
+backend="${BACKEND:-gpu}"
+cd "$root"
+
+out=docs/gallery
+frames="$(mktemp -d)"
+trap 'rm -rf "$frames"' EXIT
+mkdir -p "$out"
+
+# Incremental: configures once, then rebuilds only what changed (usually nothing). The build's
+# output is shown only if it fails.
+build_phongvk() {
+  if [[ ! -f "$build/CMakeCache.txt" ]]; then
+    cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release || return
+  fi
+  cmake --build "$build" -j2 --target phongvk
+}
+build_phongvk >"$frames/build.log" 2>&1 || { cat "$frames/build.log" >&2; exit 1; }
+phongvk="$build/phongvk"
+
+now_ms() { echo $(( $(date +%s%N) / 1000000 )); }
+
+# timed IMAGE SCENE COMMAND...: runs the command quietly and prints one line for the gallery table.
+timed() {
+  local image="$1" scene="$2"
+  shift 2
+  local start
+  start="$(now_ms)"
+  "$@" >/dev/null 2>"$frames/stderr" || { cat "$frames/stderr" >&2; exit 1; }
+  local ms=$(( $(now_ms) - start ))
+  printf '%-38s %3d.%03d s  %s\n' "$image" $((ms / 1000)) $((ms % 1000)) "$scene"
+}
+
+still() {
+  local name="$1"
+  timed "$out/$name.png" "scenes/paper/$name.json" \
+    "$phongvk" render "scenes/paper/$name.json" -o "$out/$name.png" --width 360 --height 240 --backend "$backend"
+}
+
+# sheet NAME RANGE: a contact sheet of the frames RANGE selects (--frames syntax).
+sheet() {
+  local name="$1" range="$2"
+  timed "$out/$name.png" "scenes/paper/$name.json --frames $range" \
+    "$phongvk" sequence "scenes/paper/$name.json" -o "$frames/$name" --frames "$range" \
+    --width 240 --height 160 --sheet "$out/$name.png" --thumb-width 120 --backend "$backend"
+}
+
+total_start="$(now_ms)"
+echo "phongvk gallery: $backend backend, $("$phongvk" devices 2>/dev/null | grep -m1 usable || echo 'no Vulkan device')"
+for object in cube cylinder cone polyhedron; do still "fig1_$object"; done
+sheet fig2_light_colours :
+sheet fig3_two_lights 0:120:10
+sheet fig4_ka_sweep 0:120:10
+sheet fig5_ks_sweep 0:120:10
+sheet fig6_orbit_red 0:120:10
+sheet fig7_orbit_white_red 0:120:10
+total_ms=$(( $(now_ms) - total_start ))
+echo "total: $((total_ms / 1000)).$(printf '%03d' $((total_ms % 1000))) s, $(du -ch "$out"/*.png | tail -1 | cut -f1) of PNG in $out"

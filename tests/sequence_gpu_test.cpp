@@ -1,0 +1,233 @@
+// Sequences on both backends: every paper scene agrees pixel by pixel, reuse across frames is
+// invisible in the images (--frames subsets are byte-identical to the full run) yet real (an
+// orbit without specular light shades once), and the CLI refuses bad --frames before writing.
+// Every GPU renderer runs with validation on and fails on any message.
+#include "host/sequence.h"
+#include "reference/compare.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+
+#include "test_util.h"
+
+namespace phongvk {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::ordered_json;
+
+// Small frames keep the reference (and lavapipe) fast; the paper scenes fill them well.
+constexpr int kWidth = 240;
+constexpr int kHeight = 160;
+
+std::vector<std::string> paperScenes() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(test::sourcePath("scenes/paper"))) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// A GPU renderer with validation on; the destructor of the test checks nothing was reported,
+// after the device is gone (so leaks reported at vkDestroyDevice count too).
+class ValidatedGpu {
+ public:
+  explicit ValidatedGpu(bool withKeys) : gpu_(std::make_unique<GpuFrameRenderer>(options(), withKeys)) {
+    log_ = gpu_->context().validation;
+  }
+  GpuFrameRenderer& operator*() { return *gpu_; }
+  GpuFrameRenderer* operator->() { return gpu_.get(); }
+
+  // Destroys the renderer and its context, then checks the validation log.
+  void finish() {
+    gpu_.reset();
+    ASSERT_NE(log_, nullptr);
+    std::string text;
+    for (const std::string& message : log_->messages()) text += message + "\n";
+    EXPECT_EQ(log_->count(), 0u) << "validation messages:\n" << text;
+  }
+
+ private:
+  static ViewOptions options() {
+    ViewOptions o;
+    o.validate = true;
+    return o;
+  }
+  std::unique_ptr<GpuFrameRenderer> gpu_;
+  std::shared_ptr<ValidationLog> log_;
+};
+
+// Renders `frames` on both backends and checks every frame agrees: channels within 1 of 255 and
+// the same winning triangle at every pixel.
+void expectBackendsAgree(const SceneSequence& sequence, const std::vector<SequenceFrame>& frames,
+                         GpuFrameRenderer& gpu) {
+  std::vector<RenderOutput> reference;
+  ReferenceFrameRenderer cpu;
+  renderFrames(sequence, frames, cpu, [&](const SequenceFrame&, const RenderOutput& out) { reference.push_back(out); });
+  size_t k = 0;
+  renderFrames(sequence, frames, gpu, [&](const SequenceFrame& frame, const RenderOutput& out) {
+    const DiffStats stats = compareImages(reference[k].image, out.image, reference[k].keys, out.keys);
+    EXPECT_LE(stats.maxChannelDiff(), 1) << "frame " << frame.index << "\n" << formatDiff(stats);
+    EXPECT_TRUE(stats.keysCompared);
+    EXPECT_EQ(stats.triangleMismatch, 0u) << "frame " << frame.index << "\n" << formatDiff(stats);
+    ++k;
+  });
+  EXPECT_EQ(k, frames.size());
+}
+
+class PaperScene : public ::testing::TestWithParam<std::string> {};
+
+// About a dozen frames spread over each sequence (all of a short one) keep CI time low while
+// covering the whole sweep or orbit, and stepping exercises the reuse between frames.
+TEST_P(PaperScene, BothBackendsAgreeOnEveryFrameChecked) {
+  const SceneSequence sequence = SceneSequence::load(test::sourcePath("scenes/paper/" + GetParam() + ".json"));
+  const int step = std::max(1, sequence.frameCount() / 12);
+  const std::vector<SequenceFrame> frames =
+      prepareFrames(sequence, {0, sequence.frameCount(), step}, kWidth, kHeight);
+  ValidatedGpu gpu(true);
+  expectBackendsAgree(sequence, frames, *gpu);
+  EXPECT_EQ(gpu->uploads(), 1);  // no paper scene animates geometry
+  gpu.finish();
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PaperScene, ::testing::ValuesIn(paperScenes()),
+                         [](const auto& info) { return info.param; });
+
+// The paper's second orbit with every material's ks set to 0: lighting no longer depends on the
+// eye, so the renderer computes it for the first frame only and reuses it for the others.
+TEST(SequenceReuse, OrbitWithoutSpecularShadesOnce) {
+  std::ifstream file(test::sourcePath("scenes/paper/fig7_orbit_white_red.json"));
+  ordered_json json = ordered_json::parse(file);
+  for (auto& [name, material] : json["materials"].items()) material["ks"] = 0;
+  const SceneSequence sequence(json, "orbit_ks0.json", test::sourcePath("scenes/paper"));
+  const std::vector<SequenceFrame> frames = prepareFrames(sequence, {0, 120, 10}, kWidth, kHeight);
+  ValidatedGpu gpu(true);
+  expectBackendsAgree(sequence, frames, *gpu);
+  EXPECT_EQ(gpu->framesShaded(), 1u);
+  gpu.finish();
+}
+
+// A sequence whose geometry changes twice: the meshes are rebuilt exactly then, and the images
+// still match the reference.
+TEST(SequenceReuse, GeometryTrackRebuildsOnlyWhenItChanges) {
+  std::ifstream file(test::sourcePath("scenes/paper/fig1_cube.json"));
+  ordered_json json = ordered_json::parse(file);
+  const ordered_json materials = {"grey", "ground", "grey", "grey", "grey"};  // not geometry
+  json["animate"] = {{"frames", 5},
+                     {"tracks", {{{"path", "objects[0].size"}, {"values", {1, 1, 0.6, 0.6, 0.8}}},
+                                 {{"path", "objects[0].material"}, {"values", materials}}}}};
+  const SceneSequence sequence(json, "resize.json", ".");
+  const std::vector<SequenceFrame> frames = prepareFrames(sequence, {0, 5, 1}, kWidth, kHeight);
+  ValidatedGpu gpu(true);
+  expectBackendsAgree(sequence, frames, *gpu);
+  EXPECT_EQ(gpu->uploads(), 3);  // frames 0, 2 and 4
+  gpu.finish();
+}
+
+// ---- the CLI ----
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  EXPECT_TRUE(in.is_open()) << path;
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Eight frames that switch what the GPU may reuse: an orbit, specular light off then on then off
+// again, and a light colour that changes once.
+std::string writeSwitchingScene(const std::string& dir) {
+  const char* scene = R"json({
+    "camera": {"position": [3, 0, 1.5], "look_at": [0, 0, 0], "width": 96, "height": 64},
+    "lights": [{"position": [-1, -1, 2], "color": [1, 1, 1]}],
+    "materials": {"m": {"ks": 0}},
+    "objects": [{"shape": "sphere", "segments": 16, "material": "m"},
+                {"shape": "cube", "center": [0, 0, -0.8], "size": 0.6, "material": "m"}],
+    "animate": {"frames": 8, "tracks": [
+      {"path": "camera.position", "expression": ["3*cos(2*pi*i/n)", "3*sin(2*pi*i/n)", 1.5]},
+      {"path": "materials.m.ks", "values": [0, 0, 0, 0.8, 0.8, 0, 0, 0]},
+      {"path": "lights[0].color", "values": [[1,1,1], [1,1,1], [1,1,1], [1,1,1], [1,1,1], [1,1,1], [0,0,1], [0,0,1]]}
+    ]}
+  })json";
+  test::writeFile(dir + "/switching.json", scene);
+  return dir + "/switching.json";
+}
+
+test::CommandResult sequenceCli(const std::string& scene, const std::string& out, const std::string& extra) {
+  return test::runCli("sequence " + scene + " -o " + out + " " + extra);
+}
+
+TEST(SequenceCli, FrameSubsetsAreByteIdenticalToTheFullRun) {
+  const std::string dir = test::makeTempDir();
+  const std::string scene = writeSwitchingScene(dir);
+  const test::CommandResult full = sequenceCli(scene, dir + "/full", "--sheet " + dir + "/sheet.png");
+  ASSERT_EQ(full.exitCode, 0) << full.output;
+  EXPECT_NE(full.output.find("frames 0:8:1 (8)"), std::string::npos) << full.output;
+  EXPECT_TRUE(fs::is_regular_file(dir + "/sheet.png"));
+  // The last range is frame 0 alone (its STEP must not overflow).
+  for (const char* range : {"0:3", "3:8", "5:", "1:8:3", "0:8:2147483647"}) {
+    const test::CommandResult part = sequenceCli(scene, dir + "/part", std::string("--frames ") + range);
+    ASSERT_EQ(part.exitCode, 0) << range << "\n" << part.output;
+  }
+  for (int i = 0; i < 8; ++i) {
+    const std::string name = framePath("", i, 8);
+    EXPECT_EQ(readBytes(dir + "/part/" + name), readBytes(dir + "/full/" + name)) << name;
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/full"), fs::directory_iterator()), 8);
+}
+
+TEST(SequenceCli, RenderOfAnAnimatedSceneIsFrameZero) {
+  const std::string dir = test::makeTempDir();
+  const std::string scene = writeSwitchingScene(dir);
+  ASSERT_EQ(sequenceCli(scene, dir + "/frames", "--frames 0:1").exitCode, 0);
+  const test::CommandResult render = test::runCli("render " + scene + " -o " + dir + "/still.png");
+  ASSERT_EQ(render.exitCode, 0) << render.output;
+  EXPECT_EQ(readBytes(dir + "/still.png"), readBytes(dir + "/frames/frame_0000.png"));
+}
+
+TEST(SequenceCli, BadFramesExitTwoAndWriteNothing) {
+  const std::string dir = test::makeTempDir();
+  const std::string scene = writeSwitchingScene(dir);
+  const std::string usage = "expected START:END or START:END:STEP (END excluded, like a Python slice)";
+  const std::pair<std::string, std::string> cases[] = {
+      {"5:3", "error: --frames 5:3: selects no frames (START must be < END)"},
+      {"4:4", "error: --frames 4:4: selects no frames (START must be < END)"},
+      {"0:9", "error: --frames 0:9: END 9 is out of range: the sequence has 8 frames, so END <= 8"},
+      {"8:", "error: --frames 8:: START 8 is out of range: the sequence has 8 frames, so START < 8"},
+      {"a:b", "error: --frames a:b: START 'a' is not a non-negative integer"},
+      {"1:2x", "error: --frames 1:2x: END '2x' is not a non-negative integer"},
+      {"0:4:0", "error: --frames 0:4:0: STEP must be >= 1"},
+      {"3", "error: --frames '3': " + usage},
+      {"1:2:3:4", "error: --frames '1:2:3:4': " + usage},
+      {"''", "--frames"},  // an empty value: CLI11's own usage error
+      {"-1:2", "error: --frames -1:2: START '-1' is not a non-negative integer"},
+  };
+  for (const auto& [range, message] : cases) {
+    // "--frames=X", so that "-1:2" is not read as an option.
+    const test::CommandResult result = sequenceCli(scene, dir + "/out", "--frames=" + range);
+    EXPECT_EQ(result.exitCode, 2) << range << "\n" << result.output;
+    EXPECT_NE(result.output.find(message), std::string::npos) << range << "\n" << result.output;
+    EXPECT_FALSE(fs::exists(dir + "/out")) << range;
+  }
+}
+
+TEST(SequenceCli, SceneErrorInALaterFrameWritesNothing) {
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/bad.json", R"({
+    "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 32, "height": 24},
+    "objects": [{"shape": "sphere", "material": {"ks": 0.5}}],
+    "animate": {"frames": 4, "tracks": [{"path": "objects[0].material.ks", "expression": "0.5 - i/4"}]}
+  })");
+  const test::CommandResult result = sequenceCli(dir + "/bad.json", dir + "/out", "");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("bad.json: frame 3: objects[0].material.ks: must be >= 0, got -0.25"), std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+}  // namespace
+}  // namespace phongvk
