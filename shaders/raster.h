@@ -274,6 +274,35 @@ struct TriangleSetup {
   uint pad2;
 };
 
+// True when no vertex is outside the near plane or the guard band: the polygon is the triangle.
+FN bool insideClipVolume(vec3 h0, vec3 h1, vec3 h2, float nearPlane) {
+  for (int plane = 0; plane < 5; ++plane) {
+    if (clipDistance(h0, plane, nearPlane) < 0.0f || clipDistance(h1, plane, nearPlane) < 0.0f ||
+        clipDistance(h2, plane, nearPlane) < 0.0f) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The rest of setupTriangle for a triangle that needs no clipping (nearly all of them): the same
+// operations in the same order as the general path, but only constant indices, so a SIMD CPU
+// keeps everything in registers instead of per-lane arrays in memory.
+FN bool setupUnclipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleSetup) t) {
+  t.count = 3;
+  t.zMin = min(min(h0.z, h1.z), h2.z);
+  t.zMax = max(max(h0.z, h1.z), h2.z);
+  i64vec2 v0 = snapToSubpixel(h0, frame.principal);
+  i64vec2 v1 = snapToSubpixel(h1, frame.principal);
+  i64vec2 v2 = snapToSubpixel(h2, frame.principal);
+  t.snapped[0] = ivec2(v0);
+  t.snapped[1] = ivec2(v1);
+  t.snapped[2] = ivec2(v2);
+  t.area = abs(float(edgeFunction(v0, v1, v2))) / float(2 * SUBPIXEL_ONE * SUBPIXEL_ONE);
+  t.bbox = pixelBounds(min(min(v0, v1), v2), max(max(v0, v1), v2), frame.width, frame.height);
+  return !isEmpty(t.bbox);
+}
+
 // Culls (off screen, edge-on or zero area, back face of a closed object, nothing in front of the
 // near plane, no pixel centre in the bounding box) and sets up the rest. False: draws nothing.
 FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
@@ -283,6 +312,7 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, F
   t.frontFacing = t.plane.h0n < 0.0f ? 1u : 0u;
   if (cullBack && t.frontFacing == 0u) return false;
   t.triangle = triangle;
+  if (insideClipVolume(h0, h1, h2, frame.nearPlane)) return setupUnclipped(h0, h1, h2, frame, t);
   vec3 poly[MAX_CLIP_VERTICES];
   t.count = clipTriangle(h0, h1, h2, frame.nearPlane, poly);
   if (t.count == 0) return false;
@@ -324,6 +354,12 @@ FN int rowsPerChunk(TriangleSetup t) {
 FN int chunkCount(TriangleSetup t) {
   int rows = t.bbox.w - t.bbox.y + 1;
   return (rows + rowsPerChunk(t) - 1) / rowsPerChunk(t);
+}
+
+// The only sub-triangle of an unclipped triangle (count == 3), with constant indices.
+FN bool setupSingle(TriangleSetup t, FrameData frame, OUT(EdgeSetup) s) {
+  return setupEdges(i64vec2(t.snapped[0]), i64vec2(t.snapped[1]), i64vec2(t.snapped[2]), t.frontFacing != 0u,
+                    frame.width, frame.height, s);
 }
 
 // Sub-triangle k (0 <= k < count - 2) of a set-up triangle's fan.

@@ -28,8 +28,12 @@ bool deferToLargePass(TriangleSetup t) {
 
 void rasterizeHere(TriangleSetup t) {
   markTiles(t.bbox);
+  EdgeSetup s;
+  if (t.count == 3) {  // unclipped: no dynamic indexing (see setupUnclipped)
+    if (setupSingle(t, frame, s)) rasterizeRows(t, s, s.bbox.y, s.bbox.w, 0, 1);
+    return;
+  }
   for (int k = 0; k + 2 < t.count; ++k) {
-    EdgeSetup s;
     if (setupFan(t, k, frame, s)) rasterizeRows(t, s, s.bbox.y, s.bbox.w, 0, 1);
   }
 }
