@@ -35,7 +35,8 @@ using ivec2 = glm::ivec2;
 using ivec4 = glm::ivec4;
 using i64vec2 = glm::i64vec2;
 inline uint32_t floatBitsToUint(float f) { return std::bit_cast<uint32_t>(f); }
-inline float pow(float x, float y) { return std::pow(x, y); }
+inline int32_t floatBitsToInt(float f) { return std::bit_cast<int32_t>(f); }
+inline float intBitsToFloat(int32_t i) { return std::bit_cast<float>(i); }
 }  // namespace phongvk::gpu
 #else
 #define FN

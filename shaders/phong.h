@@ -53,6 +53,42 @@ FN float lightDistance(vec3 v) {
   return d;
 }
 
+// x^n for x > 0 (up to a hair above 1) and n > 0, from additions, multiplications, one division
+// and exponent bits only. GLSL's pow is exp2(n * log2(x)) with device-specific precision and
+// C++'s powf is correctly rounded; they disagreed by one 8-bit level on a few pixels. This one
+// gives the reference and every IEEE-conforming device the same bits, accurate to about 2e-7.
+FN float log2Positive(float x) {
+  int bits = floatBitsToInt(x);
+  int e = ((bits >> 23) & 255) - 127;
+  PRECISE float m = intBitsToFloat((bits & 0x007FFFFF) | 0x3F800000);  // x = m 2^e, m in [1, 2)
+  if (m > 1.41421356f) {
+    m = m * 0.5f;
+    e = e + 1;
+  }
+  // log2(m) = (2 / ln 2) (t + t^3/3 + t^5/5 + t^7/7 + t^9/9 + ...), t = (m - 1)/(m + 1), |t| <= 0.172
+  PRECISE float t = (m - 1.0f) / (m + 1.0f);
+  PRECISE float t2 = t * t;
+  PRECISE float series =
+      t * (2.88539008f + t2 * (0.961796694f + t2 * (0.577078016f + t2 * (0.412198583f + t2 * 0.320598898f))));
+  PRECISE float result = float(e) + series;
+  return result;
+}
+
+FN float exp2Small(float y) {  // y < 0.5; results below 2^-125 are 0 (never subnormal)
+  if (y < -125.0f) return 0.0f;
+  PRECISE float i = floor(y + 0.5f);
+  PRECISE float f = y - i;  // in [-0.5, 0.5]: 2^f = e^(f ln 2), Taylor to degree 7
+  PRECISE float p =
+      1.0f + f * (0.693147181f +
+                  f * (0.240226507f +
+                       f * (0.0555041087f +
+                            f * (0.00961812911f + f * (0.00133335581f + f * (0.000154035304f + f * 0.0000152527338f))))));
+  PRECISE float result = p * intBitsToFloat((int(i) + 127) << 23);
+  return result;
+}
+
+FN float powPositive(float x, float n) { return exp2Small(n * log2Positive(x)); }
+
 // One light's diffuse + specular contribution at P (all positions relative to the lighting origin):
 // S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0.
 // `specular` and `constantAttenuation` let a shader specialized to the scene skip work whose
@@ -74,8 +110,8 @@ FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, 
   if (specular) {
     PRECISE vec3 r = 2.0f * NdotL * N - l;
     PRECISE float rV = max(dot3(r, V), 0.0f);
-    // max(r.V, 0)^n with n = 0 is 1; pow(0, n > 0) is 0 (GLSL's pow is undefined at x = 0).
-    PRECISE float highlight = m.n == 0.0f ? 1.0f : (rV > 0.0f ? pow(rV, m.n) : 0.0f);
+    // max(r.V, 0)^n with n = 0 is 1; 0^n is 0 for n > 0.
+    PRECISE float highlight = m.n == 0.0f ? 1.0f : (rV > 0.0f ? powPositive(rV, m.n) : 0.0f);
     shade = shade + held(m.ks * highlight);
   }
   PRECISE float weight = held(held(S * light.intensity) * shade);

@@ -103,3 +103,30 @@ TEST(Phong, AmbientUsesSceneAmbientColour) {
 
 }  // namespace
 }  // namespace phongvk::gpu
+
+namespace phongvk::gpu {
+namespace {
+
+TEST(Phong, SharedPowerMatchesTheLibraryToSevenDigits) {
+  // powPositive is built from +, *, / and exponent bits so every device gets the same bits; it
+  // must still be pow to float precision over the range specular highlights use. The bound grows
+  // with |n log2 x| because one float ulp of that exponent is already that much of the result
+  // (the same holds for GLSL's pow).
+  for (float n : {0.5f, 1.0f, 2.0f, 10.0f, 37.5f, 1000.0f}) {
+    for (float x = 1e-6f; x <= 1.0f; x *= 1.37f) {
+      const double want = std::pow(double(x), double(n));
+      const float got = powPositive(x, n);
+      if (want < 1e-30) {
+        EXPECT_LT(got, 1e-29f) << x << "^" << n;
+      } else {
+        const double exponent = std::abs(double(n) * std::log2(double(x)));
+        EXPECT_NEAR(got / want, 1.0, 2e-7 * (4.0 + exponent)) << x << "^" << n;
+      }
+    }
+    EXPECT_EQ(powPositive(1.0f, n), 1.0f);
+  }
+  EXPECT_EQ(powPositive(0.5f, 1000.0f), 0.0f);  // 2^-1000 underflows to exactly 0, never subnormal
+}
+
+}  // namespace
+}  // namespace phongvk::gpu
