@@ -146,13 +146,7 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(ShadedVertex);
   checkFits(context_, shadedBytes, "the shaded vertices");
   createBuffer(shaded_, context_, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
-  largeCapacity_ = triangleCount_ + LARGE_LIST_SPARE;
-  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(largeCapacity_) * sizeof(glm::uvec2);
-  checkFits(context_, largeBytes, "the large-triangle list");
-  createBuffer(large_, context_, largeBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
-  largeSetupCapacity_ = std::min(triangleCount_, LARGE_SETUPS_MAX);
-  createBuffer(largeSetups_, context_, VkDeviceSize(largeSetupCapacity_) * sizeof(TriangleSetup), STORAGE,
-               MemoryKind::DeviceLocal);
+
 }
 
 // Keys start cleared and tile flags unset once, here; from then on the resolve pass resets what a
@@ -162,7 +156,8 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   const VkDeviceSize tiles = VkDeviceSize(tilesAcross(width)) * tilesAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
-  for (Buffer* b : {&keys_, &tiles_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
+  for (Buffer* b : {&keys_, &tiles_, &colors_, &keyReadback_, &large_, &largeSetups_}) destroyBuffer(*b, context_);
+  createLargeBuffers(pixels);
   createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
   createBuffer(tiles_, context_, sizeof(TileList) + 2 * tiles * sizeof(uint32_t),
                STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
@@ -177,6 +172,17 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   width_ = width;
   height_ = height;
   updateDescriptors();
+}
+
+// The large pass's list and set-up records, sized by the image (shared.h LARGE_*).
+void GpuRenderer::createLargeBuffers(VkDeviceSize pixels) {
+  largeCapacity_ = uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS));
+  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(largeCapacity_) * sizeof(glm::uvec2);
+  createBuffer(large_, context_, largeBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+  largeSetupCapacity_ = std::min<uint32_t>(
+      std::max(triangleCount_, 1u), uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS)));
+  createBuffer(largeSetups_, context_, VkDeviceSize(largeSetupCapacity_) * sizeof(TriangleSetup), STORAGE,
+               MemoryKind::DeviceLocal);
 }
 
 void GpuRenderer::updateDescriptors() {

@@ -49,6 +49,7 @@ class GpuRenderer {
   void selectPipelines(const FrameInputs& in);
   void uploadScene(const SceneData& data);
   void ensureImageBuffers(uint32_t width, uint32_t height);
+  void createLargeBuffers(VkDeviceSize pixels);
   void updateDescriptors();
   void uploadFrame(const FrameInputs& in);
   void recordFrame(VkCommandBuffer cmd, const gpu::FrameData& frame, bool withKeys);

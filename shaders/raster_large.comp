@@ -17,6 +17,7 @@ void main() {
   int lane = int(gl_LocalInvocationID.x);
   for (uint e = gl_WorkGroupID.x; e < entries; e += gl_NumWorkGroups.x) {
     uvec2 entry = largeEntries[e];
+    if (entry.x == LARGE_ENTRY_SKIP) continue;  // part of a reservation that did not fit
     TriangleSetup t = largeSetups[entry.x];  // set up once, by the triangle pass
     // The chunk's rows split the lanes: each lane walks its own row's span with its row-mates.
     int rows = rowsPerChunk(t);

@@ -13,13 +13,18 @@
 layout(local_size_x = SETUP_GROUP_SIZE) in;
 
 // Stores the triangle's setup and appends its row chunks to the large list; false when either is
-// full (then it is drawn right here).
+// full (then it is drawn right here). A reservation that straddles the list's end still writes
+// the entries that fit, as skips: the large pass reads every entry below min(count, capacity),
+// and none of them may be left over from an earlier frame.
 bool deferToLargePass(TriangleSetup t) {
   uint slot = atomicAdd(large.setups, 1u);
   if (slot >= frame.largeSetupCapacity) return false;
   uint chunks = uint(chunkCount(t));
   uint first = atomicAdd(large.count, chunks);
-  if (first + chunks > frame.largeCapacity) return false;
+  if (first + chunks > frame.largeCapacity) {
+    for (uint e = first; e < frame.largeCapacity; ++e) largeEntries[e] = uvec2(LARGE_ENTRY_SKIP, 0u);
+    return false;
+  }
   largeSetups[slot] = t;
   for (uint c = 0u; c < chunks; ++c) largeEntries[first + c] = uvec2(slot, c);
   atomicMax(large.groupsX, min(first + chunks, frame.groupCap));

@@ -45,11 +45,16 @@ PHONGVK_CONST float GUARD_BAND = 524288.0f;  // 2^19 pixels
 // whole workgroup of the large pass. Small triangles stay one invocation each (no list traffic).
 PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 1024;
 PHONGVK_CONST uint LARGE_CHUNK_PIXELS = 4096;
-// The large list holds this many chunk entries beyond one per triangle, and the set-up records of
-// at most LARGE_SETUPS_MAX large triangles (128 bytes each); when a frame needs more, the triangle
-// pass rasterizes the overflow itself (slower, same result).
-PHONGVK_CONST uint LARGE_LIST_SPARE = 65536;
-PHONGVK_CONST uint LARGE_SETUPS_MAX = 65536;
+// The large pass's buffers grow with the image, not the triangle count (a large triangle covers
+// many pixels, so few fit on screen at once): room for one set-up record (128 bytes) per
+// LARGE_SETUP_PIXELS pixels and one chunk entry (8 bytes) per LARGE_ENTRY_PIXELS pixels, with
+// the minimums below. When a frame needs more, the triangle pass rasterizes the overflow itself
+// (slower, same result).
+PHONGVK_CONST uint LARGE_SETUP_PIXELS = 512;
+PHONGVK_CONST uint LARGE_SETUPS_MIN = 256;
+PHONGVK_CONST uint LARGE_ENTRY_PIXELS = 64;
+PHONGVK_CONST uint LARGE_ENTRIES_MIN = 4096;
+PHONGVK_CONST uint LARGE_ENTRY_SKIP = 0xFFFFFFFFu;  // an entry's slot when it is to be skipped
 // Dispatches are capped at the smallest maxComputeWorkGroupCount[0] Vulkan allows; the shaders
 // loop (grid-stride) when there is more work than that many groups. On a CPU device (lavapipe)
 // every workgroup costs about 0.6 us of scheduling however little it does, so there the cap is

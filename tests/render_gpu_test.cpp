@@ -100,6 +100,44 @@ TEST(GpuRender, SequenceOfFramesSkipsViewIndependentLightingAndStillMatches) {
   EXPECT_EQ(context.validation->count(), 0u);
 }
 
+TEST(GpuRender, OverflowingTheLargeTriangleListStillMatchesEveryRun) {
+  // 40 open cubes stacked in front of the camera, every face filling the 640x480 view: about
+  // 40 * 4 large triangles * 100+ row chunks, far more than the large list holds (640*480/64
+  // entries), so reservations straddle its end and the overflow is drawn in place. Whichever
+  // triangles overflow (thread order), the image must equal the reference, run after run.
+  std::string objects;
+  for (int i = 0; i < 40; ++i) {
+    objects += std::string(i ? "," : "") + R"({"shape": "cube", "closed": false, "size": 40, "center": [0, )" +
+               std::to_string(25 + i) + R"(, 0], "material": {"ks": 0, "color": [)" + std::to_string(0.02 * i) +
+               ", 0.5, 0.5]}}";
+  }
+  const Scene scene = parseScene(R"({"camera": {"position": [0, 0, 0], "direction": [0, 1, 0], "width": 640, "height": 480},
+                                     "lights": [{"position": [0, 1, 0]}], "objects": [)" +
+                                     objects + "]}",
+                                 "stack.json", ".");
+  const SceneData data = buildSceneData(scene);
+  const FrameInputs in = makeFrame(data, makeView(scene.camera));
+  const RenderOutput ref = renderReference(data, in);
+  // Between test frames, a frame from an oblique pose sets up more large triangles, so stale
+  // list entries from it would point at set-up records this frame never wrote.
+  CameraSpec oblique = scene.camera;
+  oblique.position = {6, 0, 4};
+  oblique.direction = {-0.3, 1, -0.2};
+  const FrameInputs other = makeFrame(data, makeView(oblique));
+  VulkanContext context = createContext({-1, true});
+  {
+    GpuRenderer gpu(context, data);
+    for (int run = 0; run < 4; ++run) {
+      gpu.render(other);
+      const RenderOutput out = gpu.render(in, true);
+      EXPECT_EQ(out.keys, ref.keys) << "run " << run;
+      EXPECT_EQ(out.image.rgb, ref.image.rgb) << "run " << run;
+    }
+  }
+  destroyContext(context);
+  EXPECT_EQ(context.validation->count(), 0u);
+}
+
 TEST(GpuRender, SpecularSceneReshadesWhenTheEyeMoves) {
   Scene scene = parseScene(R"({
     "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 96, "height": 64},
