@@ -3,6 +3,7 @@
 #include "obj_import.h"
 
 #include "normals.h"
+#include "scene_json.h"
 
 #include <tiny_obj_loader.h>
 
@@ -61,8 +62,18 @@ void checkIndices(const ObjData& data, const std::string& path, const std::strin
            "a face's normal index is out of range (the file has " + std::to_string(normalCount) +
                " normals)");
   }
-  for (float x : data.positions)
+}
+
+// Finite, and within the scene's coordinate range once scaled: a float position that overflowed
+// to inf would make NaN vertices.
+void checkPositions(const ObjData& data, double scale, const std::string& path, const std::string& where) {
+  for (float x : data.positions) {
     if (!std::isfinite(x)) fail(where, path, "a vertex position is not a finite number");
+    if (std::abs(double(x) * scale) > MAX_COORDINATE)
+      fail(where, path,
+           "a vertex coordinate times the scale is " + scenejson::formatNumber(double(x) * scale) +
+               ", beyond the " + scenejson::formatNumber(MAX_COORDINATE) + " m a scene may use");
+  }
 }
 
 glm::dvec3 at(const std::vector<float>& xyz, int index) {
@@ -117,6 +128,7 @@ Mesh importObj(const std::string& path, double scale, const std::string& where) 
   assert(scale > 0.0);
   ObjData data = parse(path, where);
   checkIndices(data, path, where);
+  checkPositions(data, scale, path, where);
   Mesh mesh = buildMesh(data, scale, hasFileNormals(data));
   if (mesh.triangles.empty()) fail(where, path, "every triangle is degenerate (zero area)");
   return mesh;

@@ -1,0 +1,347 @@
+// bad_input_test.cpp — every kind of bad input gets its exact, clear error, never a crash, a hang
+// or a NaN image. Complements scene_test.cpp (which covers the loader's basic cases): here are
+// the syntax corner cases, out-of-range values that used to reach the renderers as Inf/NaN,
+// broken OBJ files, unreadable and odd files, and the CLI's exit codes and output files.
+#include "reference/scene.h"
+#include "reference/scene_data.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "test_util.h"
+
+namespace phongvk {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kCamera = R"("camera": {"position": [0, 0, 0], "direction": [1, 0, 0]})";
+
+// A scene with the minimal camera, `rest` (JSON members) and a default sphere unless rest has
+// its own objects.
+std::string sceneWith(const std::string& rest) {
+  const bool hasObjects = rest.find("\"objects\"") != std::string::npos;
+  return std::string("{") + kCamera + (rest.empty() ? "" : ", " + rest) +
+         (hasObjects ? "" : R"(, "objects": [{"shape": "sphere"}])") + "}";
+}
+
+// The message of the SceneError `call` throws, or "(no error)".
+template <typename F>
+std::string sceneErrorOf(F&& call) {
+  try {
+    call();
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+// The error for scene text whose relative files resolve against `dir`.
+std::string errorFor(const std::string& text, const std::string& dir = ".") {
+  return sceneErrorOf([&] { parseScene(text, "a.json", dir); });
+}
+
+std::string loadError(const std::string& path) {
+  return sceneErrorOf([&] { loadScene(path); });
+}
+
+// ---- JSON syntax ----
+
+TEST(BadInputSyntax, ErrorsNameLineAndColumn) {
+  EXPECT_EQ(errorFor("{\n  \"camera\": \"abc\n}"),
+            "a.json: JSON syntax error at line 2, column 17: invalid string: control character U+000A (LF) must be "
+            "escaped to \\u000A or \\n");
+  EXPECT_EQ(errorFor("{\"camera\": {}} {}"),
+            "a.json: JSON syntax error at line 1, column 16: unexpected '{'; expected end of input");
+  // Windows line endings: the line count is the same.
+  EXPECT_EQ(errorFor("{\r\n\"objects\": [\r\n  1,,\r\n]}"),
+            "a.json: JSON syntax error at line 3, column 5: unexpected ','; expected '[', '{', or a literal");
+}
+
+// JSON has no NaN or Infinity: they are syntax errors, never numbers that reach the renderer.
+TEST(BadInputSyntax, NanAndInfinityLiterals) {
+  EXPECT_EQ(errorFor(R"({"camera": {"fov": NaN}})"), "a.json: JSON syntax error at line 1, column 20: invalid literal");
+  EXPECT_EQ(errorFor(R"({"camera": {"fov": Infinity}})"),
+            "a.json: JSON syntax error at line 1, column 20: invalid literal");
+  EXPECT_EQ(errorFor(R"({"camera": {"fov": -Infinity}})"),
+            "a.json: JSON syntax error at line 1, column 21: invalid number; expected digit after '-'");
+}
+
+TEST(BadInputSyntax, EmptyAndWhitespaceOnlyFiles) {
+  EXPECT_EQ(errorFor("  \n\t\n"),
+            "a.json: JSON syntax error at line 3, column 1: unexpected end of input; expected '[', '{', or a literal");
+  EXPECT_EQ(errorFor("null"), "a.json: top level: must be an object, got null");
+  EXPECT_EQ(errorFor("{}"), "a.json: top level: missing required field 'camera'");
+}
+
+// ---- types and keys the other suite does not reach ----
+
+TEST(BadInputTypes, WrongTypesNameTheirPath) {
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": {})")), "a.json: objects: must be an array, got object");
+  EXPECT_EQ(errorFor(sceneWith(R"("materials": [])")), "a.json: materials: must be an object, got array");
+  EXPECT_EQ(errorFor(sceneWith(R"("lights": [{"position": [0, 0, 1], "color": "white"}])")),
+            "a.json: lights[0].color: must be an array of 3 numbers, got string");
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "polyhedron", "points": [[0,0,0],[1,0,0],[0,1,0],7]}])")),
+            "a.json: objects[0].points[3]: must be an array of 3 numbers, got number");
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "cube", "subdivide": "2"}])")),
+            "a.json: objects[0].subdivide: must be an integer, got string");
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": 3}])")), "a.json: objects[0].shape: must be a string, got number");
+  EXPECT_EQ(errorFor(sceneWith(R"("render": "screen")")), "a.json: render: must be an object, got string");
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0], "up": {"z": 1}},
+                         "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.up: must be an array of 3 numbers, got object");
+}
+
+TEST(BadInputTypes, UnknownKeysInRenderAndInlineMaterials) {
+  EXPECT_EQ(errorFor(sceneWith(R"("render": {"mode": "screen"})")),
+            "a.json: render.mode: unknown key (allowed: interpolation)");
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "sphere"}, {"shape": "cube", "material": {"shine": 1}}])")),
+            "a.json: objects[1].material.shine: unknown key (allowed: ka, kd, ks, n, attenuation, color)");
+}
+
+// ---- numbers: out of range, overflowing, too large for the renderers ----
+
+TEST(BadInputNumbers, OverflowingLiteralsAnywhere) {
+  EXPECT_EQ(errorFor(sceneWith(R"("materials": {"m": {"kd": 1e999}})")),
+            "a.json: materials.m.kd: must be finite, got 1e999");
+  EXPECT_EQ(errorFor(sceneWith(R"("lights": [{"position": [0, 0, 1], "color": [1, -1e400, 1]}])")),
+            "a.json: lights[0].color[1]: must be finite, got -1e400");
+  EXPECT_EQ(errorFor(sceneWith(R"("lights": [{"position": [0, 0, 1], "intensity": 1e39}])")),
+            "a.json: lights[0].intensity: too large for a 32-bit float, got 1e+39");
+}
+
+TEST(BadInputNumbers, NegativeMaterialCoefficients) {
+  EXPECT_EQ(errorFor(sceneWith(R"("materials": {"m": {"ka": -0.1}})")), "a.json: materials.m.ka: must be >= 0, got -0.1");
+  EXPECT_EQ(errorFor(sceneWith(R"("materials": {"m": {"kd": -1}})")), "a.json: materials.m.kd: must be >= 0, got -1");
+  EXPECT_EQ(errorFor(sceneWith(R"("materials": {"m": {"n": -2}})")), "a.json: materials.m.n: must be >= 0, got -2");
+  EXPECT_EQ(errorFor(sceneWith(R"("materials": {"m": {"color": [0.5, -0.5, 0.5]}})")),
+            "a.json: materials.m.color[1]: must be >= 0, got -0.5");
+}
+
+// 0 - d + d^2 is negative for 0 < d < 1: no constant term to keep it positive near the light.
+TEST(BadInputNumbers, AttenuationNegativeNearTheLight) {
+  EXPECT_EQ(errorFor(sceneWith(R"("materials": {"m": {"attenuation": [0, -1, 1]}})")),
+            "a.json: materials.m.attenuation: a + b*d + c*d^2 must stay positive for all distances d > 0, got [0, "
+            "-1, 1]");
+}
+
+TEST(BadInputNumbers, FieldOfViewOutOfRange) {
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0], "fov": -10},
+                         "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.fov: must be > 0 and < 180, got -10");
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0], "fov": 200},
+                         "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.fov: must be > 0 and < 180, got 200");
+}
+
+// A positive fov so small that the focal length overflows float (it made Inf/NaN vertices), and
+// a near plane that rounds to 0 as a float (the renderers would divide by w = 0).
+TEST(BadInputNumbers, FovAndNearTooSmallForFloats) {
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0], "fov": 1e-40, "width": 64,
+                                    "height": 48}, "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.fov: must be >= 1e-06 degrees (a narrower view overflows 32-bit floats), got 1e-40");
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0], "near": 1e-50},
+                         "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.near: must be >= 1.1754944e-38 (the smallest normal 32-bit float), got 1e-50");
+}
+
+// Finite doubles that are no usable world coordinate: 1e300 m became an infinite float offset
+// from the eye and NaN vertex positions.
+TEST(BadInputNumbers, CoordinatesBeyondTheSceneRange) {
+  const std::string range = "must be between -1e+15 and 1e+15, got ";
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "sphere", "center": [1e300, 0, 0]}])")),
+            "a.json: objects[0].center[0]: " + range + "1e+300");
+  EXPECT_EQ(errorFor(sceneWith(R"("lights": [{"position": [0, -2e15, 0]}])")),
+            "a.json: lights[0].position[1]: " + range + "-2e+15");
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 1e16], "direction": [1, 0, 0]}, "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.position[2]: " + range + "1e+16");
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "look_at": [1e20, 0, 0]}, "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.look_at[0]: " + range + "1e+20");
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "polyhedron", "points": [[0,0,0],[1,0,0],[0,1,0],[0,0,5e15]]}])")),
+            "a.json: objects[0].points[3][2]: " + range + "5e+15");
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "sphere", "radius": 1e300}])")),
+            "a.json: objects[0].radius: must be <= 1e+15, got 1e+300");
+}
+
+// Direction lengths that cannot be normalized: one whose square underflows, one overflowing.
+TEST(BadInputNumbers, DirectionsThatCannotBeNormalized) {
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "direction": [1e-320, 0, 0]}, "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.direction: must have a non-zero finite length, got length 0");
+  EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "direction": [1e308, 1e308, 0]}, "objects": [{"shape": "sphere"}]})"),
+            "a.json: camera.direction: must have a non-zero finite length, got length inf");
+}
+
+TEST(BadInputNumbers, IntegersOutOfRange) {
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "sphere", "segments": 1e10}])")),
+            "a.json: objects[0].segments: must be between 3 and 4096, got 1e+10");
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "icosphere", "subdivide": -1}])")),
+            "a.json: objects[0].subdivide: must be between 0 and 10, got -1");
+}
+
+// ---- OBJ meshes ----
+
+class BadMesh : public ::testing::Test {
+ protected:
+  // The error for a scene whose only object is `obj` (written to mesh.obj) at `scale`.
+  std::string meshError(const std::string& obj, double scale = 1) {
+    test::writeFile(dir_ + "/mesh.obj", obj);
+    const std::string scene = sceneWith(R"("objects": [{"shape": "mesh", "file": "mesh.obj", "scale": )" +
+                                        std::to_string(scale) + "}]");
+    return sceneErrorOf([&] { buildSceneData(parseScene(scene, "a.json", dir_)); });
+  }
+
+  // What every OBJ error starts with.
+  std::string prefix() const { return "objects[0].file: " + dir_ + "/mesh.obj: "; }
+
+  const std::string dir_ = test::makeTempDir();
+};
+
+TEST_F(BadMesh, IndicesOutOfRange) {
+  EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
+            prefix() + "a face's vertex index is out of range (the file has 3 vertices)");
+  EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -9 1 2\n"),
+            prefix() + "a face's vertex index is out of range (the file has 3 vertices)");
+  EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n"),
+            prefix() + "a face's normal index is out of range (the file has 1 normals)");
+}
+
+TEST_F(BadMesh, NonFiniteOrOverflowingPositions) {
+  // 1e39 overflows the float tinyobjloader reads it into. ("nan" and other non-numbers it reads as 0.)
+  EXPECT_EQ(meshError("v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), prefix() + "a vertex position is not a finite number");
+  // Finite floats, but 1e10 * 1e10 m is beyond any scene (as a float it used to become inf).
+  EXPECT_EQ(meshError("v 1e10 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n", 1e10),
+            prefix() + "a vertex coordinate times the scale is 1e+20, beyond the 1e+15 m a scene may use");
+}
+
+TEST_F(BadMesh, NoUsableTriangles) {
+  EXPECT_EQ(meshError(""), prefix() + "no triangles (no 'f' lines)");
+  EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\n"), prefix() + "no triangles (no 'f' lines)");
+  EXPECT_EQ(meshError("v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\nf 1 1 2\n"),
+            prefix() + "every triangle is degenerate (zero area)");
+}
+
+TEST_F(BadMesh, BinaryGarbage) {
+  std::string garbage = "\x7f" "ELF\x02\x01\x01";
+  for (int i = 0; i < 256; ++i) garbage += char(i);
+  EXPECT_EQ(meshError(garbage), prefix() + "no triangles (no 'f' lines)");
+}
+
+// ---- files ----
+
+TEST(BadInputFiles, SceneFileThatIsAFolderOrAFifo) {
+  const std::string dir = test::makeTempDir();
+  EXPECT_EQ(loadError(dir), dir + ": cannot read file: Is a directory");
+  const std::string fifo = dir + "/pipe.json";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // Opening a FIFO for reading would block until a writer comes: refused before opening.
+  EXPECT_EQ(loadError(fifo), fifo + ": cannot read file: not a regular file");
+}
+
+TEST(BadInputFiles, MeshFileThatIsAFifo) {
+  const std::string dir = test::makeTempDir();
+  ASSERT_EQ(mkfifo((dir + "/mesh.obj").c_str(), 0600), 0);
+  EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "mesh", "file": "mesh.obj"}])"), dir),
+            "a.json: objects[0].file: cannot read 'mesh.obj': not a regular file");
+}
+
+// chmod 000 stops reads for everyone but root; tests may run as root (CI containers do).
+TEST(BadInputFiles, UnreadableSceneAndMeshFiles) {
+  if (geteuid() == 0) GTEST_SKIP() << "running as root: chmod 000 does not stop root from reading a file";
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/scene.json", sceneWith(R"("objects": [{"shape": "mesh", "file": "mesh.obj"}])"));
+  test::writeFile(dir + "/mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  chmod((dir + "/mesh.obj").c_str(), 0);
+  EXPECT_EQ(loadError(dir + "/scene.json"), dir + "/scene.json: objects[0].file: cannot read 'mesh.obj': Permission denied");
+  chmod((dir + "/scene.json").c_str(), 0);
+  EXPECT_EQ(loadError(dir + "/scene.json"), dir + "/scene.json: cannot read file: Permission denied");
+}
+
+// ---- the CLI: exit codes, messages, and no file left behind ----
+
+// Files in `dir` (temporary files of an interrupted write included).
+std::vector<std::string> filesIn(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  return names;
+}
+
+class BadCli : public ::testing::Test {
+ protected:
+  // Runs `phongvk args`, expecting `exitCode` and `message` in the output and no file in out_.
+  void expectFailure(const std::string& args, int exitCode, const std::string& message) {
+    const test::CommandResult result = test::runCli(args);
+    EXPECT_EQ(result.exitCode, exitCode) << args << "\n" << result.output;
+    EXPECT_NE(result.output.find(message), std::string::npos) << args << "\n" << result.output;
+    EXPECT_EQ(filesIn(out_), std::vector<std::string>{}) << args << ": a file was left behind";
+  }
+
+  std::string scene(const std::string& name) const { return test::sourcePath("scenes/stress/" + name); }
+
+  const std::string out_ = test::makeTempDir();
+};
+
+TEST_F(BadCli, UnwritableOutputPaths) {
+  const std::string one = scene("one_pixel.json");
+  expectFailure("render " + one + " -o " + out_ + "/missing/x.png", 2,
+                "error: cannot write '" + out_ + "/missing/x.png': folder '" + out_ + "/missing' does not exist");
+  expectFailure("render " + one + " -o " + out_, 2, "error: cannot write '" + out_ + "': it is a folder");
+  const std::string file = test::makeTempDir() + "/file";
+  test::writeFile(file, "");
+  expectFailure("render " + one + " -o " + file + "/x.png", 2, "error: cannot write '" + file + "/x.png'");
+  expectFailure("diff " + one + " --heatmap " + out_ + "/missing/h.png", 2, "error: cannot write");
+}
+
+TEST_F(BadCli, ReadOnlyOutputFolder) {
+  if (geteuid() == 0) GTEST_SKIP() << "running as root: a read-only folder does not stop root from writing";
+  chmod(out_.c_str(), 0555);
+  expectFailure("render " + scene("one_pixel.json") + " -o " + out_ + "/x.png", 2, "is not writable");
+  chmod(out_.c_str(), 0755);
+}
+
+TEST_F(BadCli, UnknownOrBadOptions) {
+  const std::string render = "render " + scene("one_pixel.json") + " -o " + out_ + "/x.png";
+  expectFailure(render + " --frobnicate", 2, "The following argument was not expected: --frobnicate");
+  expectFailure(render + " --width 0 --height 3", 2, "--width: Value 0 not in range 1 to 16384");
+  expectFailure(render + " --width 30", 2, "--width requires --height");
+  expectFailure(render + " --backend opengl", 2, "--backend");
+  expectFailure("render", 2, "scene is required");
+  expectFailure("", 2, "A subcommand is required");
+}
+
+TEST_F(BadCli, BadSceneWritesNothing) {
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/bad.json", sceneWith(R"("objects": [{"shape": "sphere", "radius": -1}])"));
+  for (const char* backend : {"cpu", "gpu"}) {
+    expectFailure("render " + dir + "/bad.json --backend " + backend + " -o " + out_ + "/x.png", 2,
+                  "error: " + dir + "/bad.json: objects[0].radius: must be > 0, got -1");
+  }
+}
+
+// The device's key buffer holds 4096x4096 on lavapipe (128 MiB maxStorageBufferRange, 8 bytes a
+// pixel): one row more is refused with the limit named, before any device memory is touched.
+TEST_F(BadCli, ImageLargerThanTheDeviceHolds) {
+  expectFailure("render " + scene("one_pixel.json") + " --width 4096 --height 4097 -o " + out_ + "/x.png", 4,
+                "the per-pixel depth keys need 134250496 bytes, more than maxStorageBufferRange (134217728)");
+}
+
+// 7 icospheres of 655362 vertices each: 147 MB of vertices, over lavapipe's 128 MiB buffer limit.
+TEST_F(BadCli, MoreVerticesThanTheDeviceHolds) {
+  std::string objects;
+  for (int i = 0; i < 7; ++i) {
+    objects += std::string(i ? ", " : "") + R"({"shape": "icosphere", "center": [)" + std::to_string(i) +
+               R"(, 0, 0], "subdivide": 8})";
+  }
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/big.json", sceneWith(R"("objects": [)" + objects + "]"));
+  expectFailure("render " + dir + "/big.json --width 8 --height 8 -o " + out_ + "/x.png", 4,
+                "the vertices need 146801088 bytes, more than maxStorageBufferRange (134217728)");
+}
+
+}  // namespace
+}  // namespace phongvk
