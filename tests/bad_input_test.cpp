@@ -250,16 +250,26 @@ TEST(BadInputFiles, MeshFileThatIsAFifo) {
             "a.json: objects[0].file: cannot read 'mesh.obj': not a regular file");
 }
 
-// chmod 000 stops reads for everyone but root; tests may run as root (CI containers do).
+// chmod 000 stops reads for everyone but root, and tests may run as root (CI containers do): the
+// CLI then runs as an unprivileged user (runCliUnprivileged), so the check is real either way.
 TEST(BadInputFiles, UnreadableSceneAndMeshFiles) {
-  if (geteuid() == 0) GTEST_SKIP() << "running as root: chmod 000 does not stop root from reading a file";
   const std::string dir = test::makeTempDir();
+  chmod(dir.c_str(), 0777);  // the unprivileged CLI may look for its output folder here
   test::writeFile(dir + "/scene.json", sceneWith(R"("objects": [{"shape": "mesh", "file": "mesh.obj"}])"));
   test::writeFile(dir + "/mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  chmod((dir + "/scene.json").c_str(), 0644);
   chmod((dir + "/mesh.obj").c_str(), 0);
-  EXPECT_EQ(loadError(dir + "/scene.json"), dir + "/scene.json: objects[0].file: cannot read 'mesh.obj': Permission denied");
+  const std::string render = "render " + dir + "/scene.json -o " + dir + "/x.png --backend cpu";
+  test::CommandResult r = test::runCliUnprivileged(render);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/scene.json: objects[0].file: cannot read 'mesh.obj': Permission denied"),
+            std::string::npos)
+      << r.output;
   chmod((dir + "/scene.json").c_str(), 0);
-  EXPECT_EQ(loadError(dir + "/scene.json"), dir + "/scene.json: cannot read file: Permission denied");
+  r = test::runCliUnprivileged(render);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/scene.json: cannot read file: Permission denied"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir + "/x.png"));
 }
 
 // ---- the CLI: exit codes, messages, and no file left behind ----
@@ -298,10 +308,14 @@ TEST_F(BadCli, UnwritableOutputPaths) {
 }
 
 TEST_F(BadCli, ReadOnlyOutputFolder) {
-  if (geteuid() == 0) GTEST_SKIP() << "running as root: a read-only folder does not stop root from writing";
+  // As root the CLI runs unprivileged (runCliUnprivileged), so the read-only folder really stops it.
   chmod(out_.c_str(), 0555);
-  expectFailure("render " + scene("one_pixel.json") + " -o " + out_ + "/x.png", 2, "is not writable");
+  const test::CommandResult r =
+      test::runCliUnprivileged("render " + scene("one_pixel.json") + " -o " + out_ + "/x.png --backend cpu");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("is not writable"), std::string::npos) << r.output;
   chmod(out_.c_str(), 0755);
+  EXPECT_EQ(filesIn(out_), std::vector<std::string>{});
 }
 
 TEST_F(BadCli, UnknownOrBadOptions) {

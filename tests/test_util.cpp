@@ -6,6 +6,7 @@
 #include <random>
 #include <stdexcept>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace phongvk::test {
 
@@ -27,8 +28,10 @@ void writeFile(const std::string& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
-CommandResult runCli(const std::string& args) {
-  std::string command = std::string(PHONGVK_CLI) + " " + args + " 2>&1";
+namespace {
+
+CommandResult run(const std::string& prefix, const std::string& args) {
+  std::string command = prefix + std::string(PHONGVK_CLI) + " " + args + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) throw std::runtime_error("popen failed: " + command);
@@ -38,6 +41,14 @@ CommandResult runCli(const std::string& args) {
   int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+}  // namespace
+
+CommandResult runCli(const std::string& args) { return run("", args); }
+
+CommandResult runCliUnprivileged(const std::string& args) {
+  return run(geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "", args);
 }
 
 }  // namespace phongvk::test

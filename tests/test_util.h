@@ -22,4 +22,8 @@ struct CommandResult {
 // Runs the phongvk CLI with `args` (a shell-quoted argument string) and captures its output.
 CommandResult runCli(const std::string& args);
 
+// The same, but as an unprivileged user when the tests run as root (CI containers do), so file
+// permissions apply: through `setpriv` (util-linux) as uid/gid 65534 (nobody).
+CommandResult runCliUnprivileged(const std::string& args);
+
 }  // namespace phongvk::test
