@@ -1,0 +1,78 @@
+#include "bench.h"
+
+#include "host/cli_support.h"
+#include "plot.h"
+#include "report.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace phongvk::bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Through a temporary file and a rename, so an interrupted run never leaves half a report.
+void writeText(const std::string& path, const std::string& text) {
+  const std::string temp = path + ".tmp";
+  {
+    std::ofstream file(temp, std::ios::binary);
+    file << text;
+    if (!file.flush()) throw OutputError("cannot write '" + temp + "'");
+  }
+  fs::rename(temp, path);
+}
+
+bool selected(const SuiteScene& scene, const BenchOptions& options) {
+  return scene.name.find(options.only) != std::string::npos;
+}
+
+std::vector<SceneResult> runSuite(const VulkanContext& context, const BenchOptions& options) {
+  std::vector<SceneResult> results;
+  for (const SuiteScene& scene : makeSuite(options.sourceDir, options.quick)) {
+    if (selected(scene, options)) results.push_back(measureScene(context, scene, options.repeat));
+  }
+  return results;
+}
+
+std::vector<SetupResult> runSetup(const BenchOptions& options) {
+  std::vector<SetupResult> results;
+  for (const SuiteScene& scene : makeSetupScenes(options.quick)) {
+    if (selected(scene, options)) results.push_back(measureSetup(scene, options.repeat));
+  }
+  return results;
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& options) {
+  return guarded([&] {
+    checkWritable(options.out);
+    checkWritable(options.plot);
+    ViewOptions view;
+    view.device = options.device;
+    GpuSession gpu(view);  // the context; each backend makes its own renderer per scene
+    Report report;
+    report.command = options.quick ? "phongvk_bench --quick" : "bash scripts/bench.sh";
+    report.quick = options.quick;
+    report.only = options.only;
+    report.repeat = options.repeat;
+    report.revision = options.revision;
+    report.machine = describeMachine(gpu.context);
+    std::printf("phongvk_bench on %s, %d timed frames per measurement\n", report.machine.device.c_str(), options.repeat);
+    report.scenes = runSuite(gpu.context, options);
+    report.setups = runSetup(options);
+    report.sweep = runErrorSweep(gpu.context, options.quick, options.repeat);
+    report.plotNote = plotErrorSweep(report.sweep, options.plot, gpu.context.report.name);
+    if (report.plotNote.empty()) {
+      report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
+    }
+    writeText(options.out, formatReport(report));
+    std::printf("wrote %s%s\n", options.out.c_str(), report.plotNote.empty() ? (" and " + options.plot).c_str() : "");
+    return int(EXIT_OK);
+  });
+}
+
+}  // namespace phongvk::bench

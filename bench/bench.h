@@ -1,0 +1,22 @@
+// bench.h — the benchmark run: the suite, mesh setup, the error sweep, then the report and plot.
+#pragma once
+
+#include <string>
+
+namespace phongvk::bench {
+
+struct BenchOptions {
+  bool quick = false;                        // a few small scenes: the CTest smoke test
+  int repeat = 5;                            // timed frames per measurement, after one warm-up
+  std::string out = "docs/BENCHMARKS.md";
+  std::string plot = "docs/bench_error.png";
+  std::string sourceDir;                     // repository root, for scenes/
+  std::string revision;                      // shown in the report when given
+  std::string only;                          // non-empty: only the suite and setup scenes whose name has it
+  int device = -1;                           // Vulkan device index, -1 = best
+};
+
+// Runs everything and writes the report and the plot. Returns the CLI's exit code (host/app.h).
+int runBench(const BenchOptions& options);
+
+}  // namespace phongvk::bench

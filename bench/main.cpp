@@ -1,0 +1,29 @@
+// phongvk_bench — the benchmark of issue 6. main parses arguments and calls bench/bench.h.
+// The documented way to run it is scripts/bench.sh, which builds in Release first.
+#include "bench.h"
+#include "host/app.h"
+
+#include <CLI/CLI.hpp>
+
+int main(int argc, char** argv) {
+  CLI::App app{"phongvk_bench: reference vs Vulkan compute vs graphics pipeline, and run time against error"};
+  phongvk::bench::BenchOptions options;
+  options.sourceDir = PHONGVK_SOURCE_DIR;
+  app.add_flag("--quick", options.quick, "A few small scenes, one timed frame (the smoke test)");
+  auto* repeat = app.add_option("--repeat", options.repeat, "Timed frames per measurement, after a warm-up (default 5)")
+                     ->check(CLI::Range(1, 1000));
+  app.add_option("--out", options.out, "Markdown report (default docs/BENCHMARKS.md)");
+  app.add_option("--plot", options.plot, "Run time against error plot, PNG (default docs/bench_error.png)");
+  app.add_option("--source", options.sourceDir, "Repository root, where scenes/ is (default: this build's)");
+  app.add_option("--revision", options.revision, "Source revision to show in the report");
+  app.add_option("--only", options.only, "Only the suite and mesh setup scenes whose name contains this (a partial run)");
+  app.add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")->check(CLI::NonNegativeNumber);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : phongvk::EXIT_BAD_INPUT;
+  }
+  if (options.quick && repeat->count() == 0) options.repeat = 1;
+  return phongvk::bench::runBench(options);
+}

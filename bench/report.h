@@ -1,0 +1,31 @@
+// report.h — docs/BENCHMARKS.md: the machine, the targets and whether each scene meets them (and
+// by how much not, and why), the suite, mesh setup, and the run time against error sweep.
+#pragma once
+
+#include "error_sweep.h"
+#include "machine.h"
+#include "scene_bench.h"
+
+#include <string>
+#include <vector>
+
+namespace phongvk::bench {
+
+struct Report {
+  std::string command;   // the one command that regenerates the report
+  bool quick = false;
+  std::string only;      // the run was limited to scenes whose name has this
+  int repeat = 0;
+  std::string revision;  // git revision of the sources, when known
+  Machine machine;
+  std::vector<SceneResult> scenes;
+  std::vector<SetupResult> setups;
+  SweepResult sweep;
+  std::string plotLink;  // the plot, relative to the report; empty when there is none
+  std::string plotNote;  // why there is no plot
+};
+
+// The whole markdown document.
+std::string formatReport(const Report& report);
+
+}  // namespace phongvk::bench

@@ -1,0 +1,40 @@
+// scene_bench.h — one suite scene on all three backends, and mesh setup times: the rows of
+// docs/BENCHMARKS.md's suite and mesh setup tables.
+#pragma once
+
+#include "measure.h"
+#include "suite.h"
+
+namespace phongvk::bench {
+
+struct SceneResult {
+  std::string name, group;
+  bool smallTriangles = false;
+  std::string failure;              // the scene itself could not be loaded or built
+  int width = 0, height = 0;
+  uint64_t triangles = 0, vertices = 0;
+  Timing reference, compute, raster;
+  PassTimes passes;                 // compute, device ms per pass
+  uint64_t computeSceneBytes = 0;   // device memory: geometry and per-vertex buffers
+  uint64_t computeImageBytes = 0;   // device memory: per-pixel buffers
+  bool shadedEveryFrame = true;
+  int computeVsReference = -1;      // largest channel difference (8-bit units); -1: not compared
+  int rasterVsReference = -1;
+  uint64_t hostPeakBytes = 0;       // process peak RSS after this scene (scenes run in table order)
+
+  uint64_t pixels() const { return uint64_t(width) * uint64_t(height); }
+};
+
+struct SetupResult {
+  std::string name;
+  uint64_t triangles = 0, vertices = 0;
+  double buildMs = NOT_MEASURED;    // median buildSceneData
+};
+
+// Loads, builds and renders the scene on the reference, the compute port and the baseline.
+// Prints one progress line. Never throws for a scene that fails: the result says why.
+SceneResult measureScene(const VulkanContext& context, const SuiteScene& scene, int repeat);
+
+SetupResult measureSetup(const SuiteScene& scene, int repeat);
+
+}  // namespace phongvk::bench

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Regenerates docs/BENCHMARKS.md and docs/bench_error.png: builds phongvk_bench in Release (in
+# build/, as scripts/test.sh does, so either reuses the other's work) and runs the benchmark
+# harness (bench/): every scene on the reference, the compute port and the graphics pipeline,
+# median of 5 frames after a warm-up. Run scripts/setup.sh first.
+# Extra arguments go to phongvk_bench, e.g. `--repeat 9`, `--device 1`.
+# It takes many minutes on a CPU-only machine (lavapipe); numbers are final only from a quiet one.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+echo "== build (Release)"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --target phongvk_bench -j"$(nproc)"
+
+echo "== benchmark"
+revision=$(git describe --always --dirty 2>/dev/null || echo unknown)
+./build/bench/phongvk_bench --revision "$revision" --out docs/BENCHMARKS.md --plot docs/bench_error.png "$@"
