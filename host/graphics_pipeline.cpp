@@ -199,15 +199,8 @@ VkRenderPass createColorDepthRenderPass(const VulkanContext& context, VkFormat c
 }
 
 GraphicsLayout createGraphicsLayout(const VulkanContext& context, std::span<const Binding> bindings) {
-  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-  for (const Binding& binding : bindings)
-    layoutBindings.push_back(
-        {binding.binding, binding.type, 1, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-  VkDescriptorSetLayoutCreateInfo setInfo = { VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO };
-  setInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
-  setInfo.pBindings = layoutBindings.data();
   GraphicsLayout result;
-  VK_CHECK(vkCreateDescriptorSetLayout(context.device, &setInfo, nullptr, &result.setLayout));
+  result.setLayout = createSetLayout(context, bindings, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
 
   VkPipelineLayoutCreateInfo layoutInfo = { VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO };
   layoutInfo.setLayoutCount = 1;

@@ -19,24 +19,6 @@ VkShaderModule createShaderModule(const VulkanContext& context, const uint32_t* 
   return module;
 }
 
-VkDescriptorSetLayout createSetLayout(const VulkanContext& context, std::span<const Binding> bindings) {
-  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
-  for (const Binding& binding : bindings) {
-    VkDescriptorSetLayoutBinding layoutBinding = {};
-    layoutBinding.binding = binding.binding;
-    layoutBinding.descriptorType = binding.type;
-    layoutBinding.descriptorCount = 1;
-    layoutBinding.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-    layoutBindings.push_back(layoutBinding);
-  }
-  VkDescriptorSetLayoutCreateInfo info = { VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO };
-  info.bindingCount = static_cast<uint32_t>(layoutBindings.size());
-  info.pBindings = layoutBindings.data();
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &setLayout));
-  return setLayout;
-}
-
 VkPipelineLayout createPipelineLayout(const VulkanContext& context, VkDescriptorSetLayout setLayout,
                                       uint32_t pushConstantBytes) {
   VkPushConstantRange pushConstants = {VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
@@ -78,13 +60,33 @@ VkPipeline createPipeline(const VulkanContext& context, VkShaderModule module, V
 
 }  // namespace
 
+VkDescriptorSetLayout createSetLayout(const VulkanContext& context, std::span<const Binding> bindings,
+                                      VkShaderStageFlags stages) {
+  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+  for (const Binding& binding : bindings) {
+    VkDescriptorSetLayoutBinding layoutBinding = {};
+    layoutBinding.binding = binding.binding;
+    layoutBinding.descriptorType = binding.type;
+    layoutBinding.descriptorCount = 1;
+    layoutBinding.stageFlags = stages;
+    layoutBindings.push_back(layoutBinding);
+  }
+  VkDescriptorSetLayoutCreateInfo info = { VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO };
+  info.bindingCount = static_cast<uint32_t>(layoutBindings.size());
+  info.pBindings = layoutBindings.data();
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateDescriptorSetLayout(context.device, &info, nullptr, &setLayout));
+  return setLayout;
+}
+
+
 ComputePipeline createComputePipeline(const VulkanContext& context, const uint32_t* spirv, size_t spirvBytes,
                                       std::span<const Binding> bindings, uint32_t pushConstantBytes,
                                       std::span<const SpecConstant> specs) {
   ComputePipeline result;
   VkShaderModule module = VK_NULL_HANDLE;
   try {
-    result.setLayout = createSetLayout(context, bindings);
+    result.setLayout = createSetLayout(context, bindings, VK_SHADER_STAGE_COMPUTE_BIT);
     result.layout = createPipelineLayout(context, result.setLayout, pushConstantBytes);
     module = createShaderModule(context, spirv, spirvBytes);
     result.pipeline = createPipeline(context, module, result.layout, specs);

@@ -39,6 +39,10 @@ ComputePipeline createComputePipeline(const VulkanContext& context, const uint32
 // Safe on a default or already destroyed pipeline.
 void destroyComputePipeline(ComputePipeline& pipeline, const VulkanContext& context);
 
+// The layout of a single descriptor set holding `bindings`, visible to `stages`.
+VkDescriptorSetLayout createSetLayout(const VulkanContext& context, std::span<const Binding> bindings,
+                                      VkShaderStageFlags stages);
+
 // A descriptor pool for a renderer's few sets; the sets are freed with the arena.
 struct DescriptorArena {
   VkDescriptorPool pool = VK_NULL_HANDLE;
