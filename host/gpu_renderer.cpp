@@ -293,6 +293,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   }
   bind(RESOLVE);
   vkCmdDispatchIndirect(cmd, tiles_.buffer, offsetof(TileList, groupsX));
+  computeBarrier(cmd);  // lavapipe writes a bottom-of-pipe timestamp before the dispatch ends otherwise
   writeTimestamp(cmd, timestamps_, 4);
 }
 
