@@ -39,6 +39,9 @@ void checkWritable(const std::string& path) {
   if (path.empty()) return;
   std::filesystem::path folder = std::filesystem::path(path).parent_path();
   if (folder.empty()) folder = ".";
+  if (std::filesystem::exists(folder) && !std::filesystem::is_directory(folder)) {
+    throw OutputError("cannot write '" + path + "': '" + folder.string() + "' is a file, not a folder");
+  }
   if (!std::filesystem::is_directory(folder)) {
     throw OutputError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
   }

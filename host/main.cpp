@@ -4,6 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <string>
+
 namespace {
 
 void addViewOptions(CLI::App* command, phongvk::ViewOptions& options) {
@@ -28,6 +31,18 @@ void addBackendOption(CLI::App* command, std::string& backend, bool withRaster =
     help = "gpu (Vulkan compute, default), cpu (the reference) or raster (Vulkan graphics pipeline)";
   }
   command->add_option("--backend", backend, help)->check(CLI::IsMember(choices));
+}
+
+// CLI11 reports an unknown first word as a missing subcommand; name it and the commands instead.
+int rejectUnknownCommand(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return 0;
+  std::string known;
+  for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (command->get_name() == argv[1]) return 0;
+    known += (known.empty() ? "" : ", ") + command->get_name();
+  }
+  std::fprintf(stderr, "error: unknown command '%s' (commands: %s; see phongvk --help)\n", argv[1], known.c_str());
+  return phongvk::EXIT_BAD_INPUT;
 }
 
 }  // namespace
@@ -65,6 +80,7 @@ int main(int argc, char** argv) {
 
   app.add_subcommand("devices", "List Vulkan devices and whether phongvk can use them");
 
+  if (const int code = rejectUnknownCommand(app, argc, argv)) return code;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -303,7 +303,8 @@ TEST_F(BadCli, UnwritableOutputPaths) {
   expectFailure("render " + one + " -o " + out_, 2, "error: cannot write '" + out_ + "': it is a folder");
   const std::string file = test::makeTempDir() + "/file";
   test::writeFile(file, "");
-  expectFailure("render " + one + " -o " + file + "/x.png", 2, "error: cannot write '" + file + "/x.png'");
+  expectFailure("render " + one + " -o " + file + "/x.png", 2,
+                "error: cannot write '" + file + "/x.png': '" + file + "' is a file, not a folder");
   expectFailure("diff " + one + " --heatmap " + out_ + "/missing/h.png", 2, "error: cannot write");
 }
 

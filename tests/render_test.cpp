@@ -131,6 +131,13 @@ TEST(Cli, UnknownOptionExitsTwo) {
   EXPECT_NE(r.output.find("--fast"), std::string::npos) << r.output;
 }
 
+TEST(Cli, UnknownCommandIsNamed) {
+  const auto r = runCli("frob scenes/basic.json");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("unknown command 'frob' (commands: render, diff, sequence, devices"), std::string::npos)
+      << r.output;
+}
+
 TEST(Cli, HelpOnEverySubcommandExitsZero) {
   for (const char* command : {"--help", "render --help", "diff --help", "devices --help"}) {
     const auto r = runCli(command);
