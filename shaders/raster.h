@@ -214,6 +214,87 @@ FN ivec2 rowSpan(EdgeSetup s, int y) {
   return span;
 }
 
+// ---- 32-bit edges for small triangles (the GPU's triangle pass) ----
+// A sub-triangle whose snapped extent is below SMALL_EXTENT subpixels in x and y has edge functions
+// that, taken relative to its own corner, fit 32-bit integers exactly (|dx|, |dy|, |p - a| < 2^14,
+// products < 2^28): the same values, signs and spans as the 64-bit setup above, without 64-bit
+// arithmetic, which SIMD CPUs (lavapipe) emulate. The reference uses the 64-bit code; tests check
+// that both give the same spans.
+PHONGVK_CONST int SMALL_EXTENT = 8192;  // subpixels: 32 pixels
+
+struct EdgeSetup32 {
+  ivec2 v0;      // relative to origin, oriented so that inside is positive
+  ivec2 v1;
+  ivec2 v2;
+  int bias0;
+  int bias1;
+  int bias2;
+  ivec4 bbox;    // pixels, clipped to the image (as EdgeSetup's)
+  ivec2 origin;  // subpixels: the sub-triangle's lower corner
+};
+
+FN int edgeFunction32(ivec2 a, ivec2 b, ivec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+
+FN int topLeftBias32(ivec2 a, ivec2 b) {
+  int dx = b.x - a.x;
+  int dy = b.y - a.y;
+  return (dy == 0 && dx > 0) || dy < 0 ? 0 : -1;
+}
+
+FN bool fitsSmallEdges(ivec2 a, ivec2 b, ivec2 c) {
+  ivec2 extent = max(a, max(b, c)) - min(a, min(b, c));
+  return extent.x < SMALL_EXTENT && extent.y < SMALL_EXTENT;
+}
+
+// setupEdges in 32 bits, for a sub-triangle that fitsSmallEdges.
+FN bool setupEdges32(ivec2 a, ivec2 b, ivec2 c, bool frontFacing, uint width, uint height, OUT(EdgeSetup32) s) {
+  s.origin = min(a, min(b, c));
+  ivec2 ra = a - s.origin;
+  ivec2 rb = b - s.origin;
+  ivec2 rc = c - s.origin;
+  int area = edgeFunction32(ra, rb, rc);
+  if (area == 0 || (area < 0) != frontFacing) return false;
+  s.v0 = ra;
+  s.v1 = frontFacing ? rc : rb;
+  s.v2 = frontFacing ? rb : rc;
+  s.bias0 = topLeftBias32(s.v1, s.v2);
+  s.bias1 = topLeftBias32(s.v2, s.v0);
+  s.bias2 = topLeftBias32(s.v0, s.v1);
+  s.bbox = pixelBounds(i64vec2(s.origin), i64vec2(max(a, max(b, c))), width, height);
+  return !isEmpty(s.bbox);
+}
+
+// clipSpanToEdge in 32 bits: E at pixel span.x (relative to origin) is c, and E(span.x + j) = c - k j.
+FN ivec2 clipSpanToEdge32(ivec2 span, ivec2 a, ivec2 b, int bias, int y, ivec2 origin) {
+  if (span.x > span.y) return span;
+  int dx = b.x - a.x;
+  int dy = b.y - a.y;
+  ivec2 p = ivec2(span.x * SUBPIXEL_ONE + SUBPIXEL_HALF, y * SUBPIXEL_ONE + SUBPIXEL_HALF) - origin;
+  int c = dx * (p.y - a.y) - dy * (p.x - a.x) + bias;
+  if (dy == 0) return c >= 0 ? span : ivec2(1, 0);
+  int k = dy * SUBPIXEL_ONE;
+  int last = span.y - span.x;
+  float estimate = floor(float(c) / float(k));
+  if (dy > 0) {  // passes for j <= c / k: the last such j in [0, last]
+    int q = int(clamp(estimate, -1.0f, float(last)));
+    while (q >= 0 && c - k * q < 0) --q;
+    while (q < last && c - k * (q + 1) >= 0) ++q;
+    return ivec2(span.x, span.x + q);
+  }
+  int q = int(clamp(estimate + 1.0f, 0.0f, float(last + 1)));  // passes for j >= c / k
+  while (q <= last && c - k * q < 0) ++q;
+  while (q > 0 && c - k * (q - 1) >= 0) --q;
+  return ivec2(span.x + q, span.y);
+}
+
+FN ivec2 rowSpan32(EdgeSetup32 s, int y) {
+  ivec2 span = ivec2(s.bbox.x, s.bbox.z);
+  span = clipSpanToEdge32(span, s.v1, s.v2, s.bias0, y, s.origin);
+  span = clipSpanToEdge32(span, s.v2, s.v0, s.bias1, y, s.origin);
+  span = clipSpanToEdge32(span, s.v0, s.v1, s.bias2, y, s.origin);
+  return span;
+}
+
 // ---- Depth and visibility key ----
 
 // The triangle's plane in pixel space: n = (h1 - h0) x (h2 - h0) and dot(h0, n). dot(h0, n) < 0

@@ -25,3 +25,13 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s, int rowLo, int rowHi, int lane,
     }
   }
 }
+
+// rasterizeRows for a small sub-triangle's 32-bit setup (raster.h EdgeSetup32), one invocation.
+void rasterizeSmall(TriangleSetup t, EdgeSetup32 s) {
+  for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
+    ivec2 span = rowSpan32(s, y);
+    for (int x = span.x; x <= span.y; ++x) {
+      atomicMin(keys[uint(y) * frame.width + uint(x)], coveredKey(t, x, y, frame));
+    }
+  }
+}

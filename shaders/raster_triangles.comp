@@ -35,6 +35,14 @@ void rasterizeHere(TriangleSetup t) {
   markTiles(t.bbox);
   EdgeSetup s;
   if (t.count == 3) {  // unclipped: no dynamic indexing (see setupUnclipped)
+    if (fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {  // 32-bit edges, same result
+      EdgeSetup32 small;
+      if (setupEdges32(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height,
+                       small)) {
+        rasterizeSmall(t, small);
+      }
+      return;
+    }
     if (setupSingle(t, frame, s)) rasterizeRows(t, s, s.bbox.y, s.bbox.w, 0, 1);
     return;
   }
