@@ -2,6 +2,7 @@
 
 #include "host/vk_check.h"
 
+#include "shaders/clip_triangles.spv.h"
 #include "shaders/raster_large.spv.h"
 #include "shaders/raster_triangles.spv.h"
 #include "shaders/resolve.spv.h"
@@ -31,6 +32,7 @@ constexpr Binding BINDINGS[] = {
     {BINDING_SHADED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},    {BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_CLIP_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
 };
 
 // The most workgroups one pass launches on this device (shared.h: CPU_DISPATCH_GROUPS).
@@ -65,7 +67,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data) : 
   try {
     current_[RASTER] = pipeline(RASTER, {});  // its set layout serves every pass (updateDescriptors)
     createDescriptorArena(arena_, context_, 1);
-    createTimestampPool(timestamps_, context_, PASS_COUNT + 1);
+    createTimestampPool(timestamps_, context_, TIMESTAMP_SLOTS);
     uploadScene(data);
   } catch (...) {
     release();
@@ -76,7 +78,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data) : 
 GpuRenderer::~GpuRenderer() { release(); }
 
 void GpuRenderer::release() {
-  for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &large_, &largeSetups_,
+  for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &clipList_, &large_, &largeSetups_,
                     &keys_, &tiles_, &colors_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
@@ -96,6 +98,7 @@ struct ShaderCode {
 constexpr ShaderCode SHADERS[] = {
     {spirv_shade_vertices, sizeof(spirv_shade_vertices)},
     {spirv_raster_triangles, sizeof(spirv_raster_triangles)},
+    {spirv_clip_triangles, sizeof(spirv_clip_triangles)},
     {spirv_raster_large, sizeof(spirv_raster_large)},
     {spirv_resolve, sizeof(spirv_resolve)},
 };
@@ -126,6 +129,7 @@ const ComputePipeline& GpuRenderer::pipeline(Pass pass, const std::vector<SpecCo
 void GpuRenderer::selectPipelines(const FrameInputs& in) {
   current_[SHADE] = pipeline(SHADE, shadeSpecs(in));
   current_[RASTER] = pipeline(RASTER, {});
+  current_[CLIP] = pipeline(CLIP, {});
   current_[LARGE] = pipeline(LARGE, {});
   current_[RESOLVE] = pipeline(RESOLVE, {{SPEC_INTERPOLATION, in.frame.interpolation}});
 }
@@ -146,6 +150,9 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(ShadedVertex);
   checkFits(context_, shadedBytes, "the shaded vertices");
   createBuffer(shaded_, context_, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
+  checkFits(context_, clipBytes, "the clip list");
+  createBuffer(clipList_, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
 
 }
 
@@ -203,6 +210,7 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_LARGE, storage, large_.buffer},
       {BINDING_TILES, storage, tiles_.buffer},
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
+      {BINDING_CLIP_LIST, storage, clipList_.buffer},
   };
   // Identically defined set layouts are compatible: one set serves all four pipelines.
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
@@ -262,6 +270,8 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   vkCmdUpdateBuffer(cmd, tiles_.buffer, 0, sizeof noTiles, &noTiles);
   const LargeList emptyList = {0, 0, 1, 1, 0, 0, 0, 0};
   vkCmdUpdateBuffer(cmd, large_.buffer, 0, sizeof emptyList, &emptyList);
+  const IdList noClipping = {0, 0, 1, 1};
+  vkCmdUpdateBuffer(cmd, clipList_.buffer, 0, sizeof noClipping, &noClipping);
   transferToComputeBarrier(cmd);
 
   auto bind = [&](Pass pass) {
@@ -276,6 +286,9 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   writeTimestamp(cmd, timestamps_, 1);
   bind(RASTER);
   vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
+  computeBarrier(cmd);
+  bind(CLIP);
+  vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, groupsX));
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 2);
   bind(LARGE);
@@ -299,12 +312,12 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
 
 void GpuRenderer::readTimes() {
   const std::vector<double> t = readTimestamps(context_, timestamps_);
-  if (t.size() < PASS_COUNT + 1) {
+  if (t.size() < TIMESTAMP_SLOTS) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     times_ = {nan, nan, nan, nan, nan};
     return;
   }
-  times_ = {t[1] - t[0], t[2] - t[1], t[3] - t[2], t[4] - t[3], t[4] - t[0]};
+  times_ = {t[1] - t[0], t[2] - t[1], t[3] - t[2], t[4] - t[3], t[4] - t[0]};  // raster: triangle + clip
 }
 
 RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {

@@ -18,7 +18,7 @@ namespace phongvk {
 // Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
 struct PassTimes {
   double shade = 0;
-  double raster = 0;  // triangle pass: setup, culling, small triangles
+  double raster = 0;  // triangle and clip passes: setup, culling, clipping, small triangles
   double large = 0;   // large-triangle pass
   double resolve = 0;
   double total = 0;
@@ -42,7 +42,9 @@ class GpuRenderer {
   uint64_t framesShaded() const { return framesShaded_; }
 
  private:
-  enum Pass { SHADE, RASTER, LARGE, RESOLVE, PASS_COUNT };
+  enum Pass { SHADE, RASTER, CLIP, LARGE, RESOLVE, PASS_COUNT };
+  // Before shade, after the triangle + clip passes, after large, after resolve: PassTimes.
+  static constexpr uint32_t TIMESTAMP_SLOTS = 5;
 
   void release();  // destroys whatever exists; safe to call twice
   const ComputePipeline& pipeline(Pass pass, const std::vector<SpecConstant>& specs);
@@ -63,7 +65,7 @@ class GpuRenderer {
   TimestampPool timestamps_;
   PassTimes times_;
 
-  Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, large_, largeSetups_;
+  Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, clipList_, large_, largeSetups_;
   Buffer keys_, tiles_, colors_, keyReadback_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;

@@ -15,6 +15,7 @@ layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 la
 // clears or scans the whole image.
 layout(std430, binding = BINDING_TILES) buffer Tiles { TileList tileList; uint tileData[]; };
 layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { TriangleSetup largeSetups[]; };
+layout(std430, binding = BINDING_CLIP_LIST) buffer ClipList { IdList clipList; uint clipIds[]; };
 
 // The three shaded vertices of triangle `id`.
 void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVertex c) {
@@ -24,11 +25,11 @@ void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVer
   c = shaded[t.z];
 }
 
-// Sets up triangle `id` for rasterization (raster.h); false when it draws nothing.
-bool setupTriangleById(uint id, out TriangleSetup t) {
+// Triangle `id`'s homogeneous vertices and whether its back face is culled.
+void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullBack) {
   uvec4 tri = triangles[id];
-  bool cullBack = (objects[tri.w].flags & OBJECT_CULL_BACK) != 0u;
-  return setupTriangle(shaded[tri.x].hpos.xyz, shaded[tri.y].hpos.xyz, shaded[tri.z].hpos.xyz, cullBack, id,
-                       frame, t);
+  cullBack = (objects[tri.w].flags & OBJECT_CULL_BACK) != 0u;
+  h0 = shaded[tri.x].hpos.xyz;
+  h1 = shaded[tri.y].hpos.xyz;
+  h2 = shaded[tri.z].hpos.xyz;
 }
-

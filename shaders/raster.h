@@ -384,16 +384,23 @@ FN bool setupUnclipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(Triangl
   return !isEmpty(t.bbox);
 }
 
-// Culls (off screen, edge-on or zero area, back face of a closed object, nothing in front of the
-// near plane, no pixel centre in the bounding box) and sets up the rest. False: draws nothing.
-FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
+// The part of the setup every triangle goes through: culled off screen, edge-on or zero area, or
+// as the back face of a closed object (false: draws nothing); otherwise its plane and facing.
+FN bool setupPlane(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
   if (outsideFrustum(h0, h1, h2, frame)) return false;
   t.plane = trianglePlane(h0, h1, h2);
   if (t.plane.h0n == 0.0f) return false;
   t.frontFacing = t.plane.h0n < 0.0f ? 1u : 0u;
   if (cullBack && t.frontFacing == 0u) return false;
   t.triangle = triangle;
-  if (insideClipVolume(h0, h1, h2, frame.nearPlane)) return setupUnclipped(h0, h1, h2, frame, t);
+  return true;
+}
+
+// The rest of the setup for a triangle that crosses the near plane or the guard band: clip, snap
+// the polygon. False when nothing is left in front of the near plane or no pixel centre is in the
+// bounding box. (The GPU runs this in a pass of its own, clip_triangles.comp: on SIMD CPUs its
+// per-lane arrays slow down every triangle of a pass that merely contains them.)
+FN bool setupClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleSetup) t) {
   vec3 poly[MAX_CLIP_VERTICES];
   t.count = clipTriangle(h0, h1, h2, frame.nearPlane, poly);
   if (t.count == 0) return false;
@@ -415,6 +422,13 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, F
   t.area = abs(float(twiceArea)) / float(2 * SUBPIXEL_ONE * SUBPIXEL_ONE);
   t.bbox = pixelBounds(lo, hi, frame.width, frame.height);
   return !isEmpty(t.bbox);
+}
+
+// Culls, clips and snaps a triangle for rasterization. False: it draws nothing.
+FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
+  if (!setupPlane(h0, h1, h2, cullBack, triangle, frame, t)) return false;
+  if (insideClipVolume(h0, h1, h2, frame.nearPlane)) return setupUnclipped(h0, h1, h2, frame, t);
+  return setupClipped(h0, h1, h2, frame, t);
 }
 
 FN int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }

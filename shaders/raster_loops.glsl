@@ -1,5 +1,5 @@
-// raster_loops.glsl — the loops both raster passes share (after bindings.glsl; needs
-// GL_EXT_shader_atomic_int64).
+// raster_loops.glsl — what the raster passes share (after bindings.glsl; needs
+// GL_EXT_shader_atomic_int64): tile marking, span loops, handing large triangles to the large pass.
 
 // Marks the tiles of pixel box (x0, y0, x1, y1) as touched: the first toucher of a tile appends
 // it to the list (the plain read skips the atomic for tiles already taken).
@@ -34,4 +34,23 @@ void rasterizeSmall(TriangleSetup t, EdgeSetup32 s) {
       atomicMin(keys[uint(y) * frame.width + uint(x)], coveredKey(t, x, y, frame));
     }
   }
+}
+
+// Stores the triangle's setup and appends its row chunks to the large list; false when either is
+// full (then the caller draws it itself). A reservation that straddles the list's end still writes
+// the entries that fit, as skips: the large pass reads every entry below min(count, capacity),
+// and none of them may be left over from an earlier frame.
+bool deferToLargePass(TriangleSetup t) {
+  uint slot = atomicAdd(large.setups, 1u);
+  if (slot >= frame.largeSetupCapacity) return false;
+  uint chunks = uint(chunkCount(t));
+  uint first = atomicAdd(large.count, chunks);
+  if (first + chunks > frame.largeCapacity) {
+    for (uint e = first; e < frame.largeCapacity; ++e) largeEntries[e] = uvec2(LARGE_ENTRY_SKIP, 0u);
+    return false;
+  }
+  largeSetups[slot] = t;
+  for (uint c = 0u; c < chunks; ++c) largeEntries[first + c] = uvec2(slot, c);
+  atomicMax(large.groupsX, min(first + chunks, frame.groupCap));
+  return true;
 }

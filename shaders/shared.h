@@ -27,6 +27,7 @@ using uvec4 = glm::uvec4;
 PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
 PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
 PHONGVK_CONST uint LARGE_GROUP_SIZE = 64;
+PHONGVK_CONST uint CLIP_GROUP_SIZE = 64;
 // Resolve works on 8x8 pixel tiles, one workgroup each: neighbouring pixels usually share a
 // triangle (cache reuse), and a tile no triangle touched is skipped by the whole group at once.
 PHONGVK_CONST uint TILE_SIZE = 8;
@@ -91,6 +92,7 @@ PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
 PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (triangle, chunk) entries
 PHONGVK_CONST uint BINDING_TILES = 10;       // TileList header, a flag per tile, the touched tiles' ids
 PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // TriangleSetup (raster.h) of each large triangle
+PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles that need clipping
 
 // ---- Buffer structs ----
 // A mesh vertex in its object's local frame (position relative to the object origin).
@@ -174,6 +176,14 @@ struct TileList {
   uint groupsZ;
 };
 
+// Header of a list of triangle ids that an indirect dispatch then walks (the clip list).
+struct IdList {
+  uint count;
+  uint groupsX;      // indirect dispatch (min(count / CLIP_GROUP_SIZE rounded up, groupCap), 1, 1)
+  uint groupsY;
+  uint groupsZ;
+};
+
 struct LargeList {
   uint count;        // entries reserved (may exceed the capacity; those were drawn in place)
   uint groupsX;      // indirect dispatch (min(entries, MAX_DISPATCH_GROUPS), 1, 1)
@@ -197,7 +207,7 @@ static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPla
 static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
 static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
 static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 160);
-static_assert(sizeof(LargeList) == 32 && sizeof(TileList) == 16);
+static_assert(sizeof(LargeList) == 32 && sizeof(TileList) == 16 && sizeof(IdList) == 16);
 }  // namespace phongvk::gpu
 #endif
 

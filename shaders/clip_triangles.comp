@@ -1,0 +1,31 @@
+// Clip pass: the triangles the triangle pass found crossing the near plane or the guard band
+// (usually few). Each is clipped to a polygon (raster.h setupClipped); its fan goes to the large
+// pass if it is large, else is rasterized here. Kept out of the triangle pass because the
+// clipping's per-lane arrays slow every triangle of a pass that contains them on SIMD CPUs.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+#include "shared.h"
+#include "raster.h"
+#include "bindings.glsl"
+#include "raster_loops.glsl"
+
+layout(local_size_x = CLIP_GROUP_SIZE) in;
+
+void main() {
+  for (uint k = gl_GlobalInvocationID.x; k < clipList.count; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
+    uint id = clipIds[k];
+    vec3 h0, h1, h2;
+    bool cullBack;
+    loadForSetup(id, h0, h1, h2, cullBack);
+    TriangleSetup t;
+    if (!setupPlane(h0, h1, h2, cullBack, id, frame, t) || !setupClipped(h0, h1, h2, frame, t)) continue;
+    if (uint(boxPixels(t.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(t)) continue;
+    markTiles(t.bbox);
+    for (int f = 0; f + 2 < t.count; ++f) {
+      EdgeSetup s;
+      if (setupFan(t, f, frame, s)) rasterizeRows(t, s, s.bbox.y, s.bbox.w, 0, 1);
+    }
+  }
+}
