@@ -451,6 +451,21 @@ FN int chunkCount(TriangleSetup t) {
   return (rows + rowsPerChunk(t) - 1) / rowsPerChunk(t);
 }
 
+// Fan sub-triangle k of a clipped polygon as a triangle setup of its own (same plane, depth range
+// and id; its own box and area), so later passes only ever see count == 3 and index constantly.
+FN TriangleSetup fanTriangle(TriangleSetup t, int k, FrameData frame) {
+  TriangleSetup sub = t;
+  sub.count = 3;
+  sub.snapped[1] = t.snapped[k + 1];
+  sub.snapped[2] = t.snapped[k + 2];
+  i64vec2 a = i64vec2(sub.snapped[0]);
+  i64vec2 b = i64vec2(sub.snapped[1]);
+  i64vec2 c = i64vec2(sub.snapped[2]);
+  sub.area = abs(float(edgeFunction(a, b, c))) / float(2 * SUBPIXEL_ONE * SUBPIXEL_ONE);
+  sub.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), frame.width, frame.height);
+  return sub;
+}
+
 // The only sub-triangle of an unclipped triangle (count == 3), with constant indices.
 FN bool setupSingle(TriangleSetup t, FrameData frame, OUT(EdgeSetup) s) {
   return setupEdges(i64vec2(t.snapped[0]), i64vec2(t.snapped[1]), i64vec2(t.snapped[2]), t.frontFacing != 0u,

@@ -18,16 +18,14 @@ void main() {
   for (uint e = gl_WorkGroupID.x; e < entries; e += gl_NumWorkGroups.x) {
     uvec2 entry = largeEntries[e];
     if (entry.x == LARGE_ENTRY_SKIP) continue;  // part of a reservation that did not fit
-    TriangleSetup t = largeSetups[entry.x];  // set up once, by the triangle pass
+    TriangleSetup t = largeSetups[entry.x];  // set up once, by the triangle or clip pass
     // The chunk's rows split the lanes: each lane walks its own row's span with its row-mates.
     int rows = rowsPerChunk(t);
     int lanesPerRow = int(LARGE_GROUP_SIZE) / rows;
     int rowLo = t.bbox.y + int(entry.y) * rows;
     int y = rowLo + lane / lanesPerRow;
     if (lane == 0) markTiles(ivec4(t.bbox.x, rowLo, t.bbox.z, min(rowLo + rows - 1, t.bbox.w)));
-    for (int k = 0; k + 2 < t.count; ++k) {
-      EdgeSetup s;
-      if (setupFan(t, k, frame, s)) rasterizeRows(t, s, y, y, lane % lanesPerRow, lanesPerRow);
-    }
+    EdgeSetup s;  // every stored setup is a single triangle (the clip pass splits fans)
+    if (setupSingle(t, frame, s)) rasterizeRows(t, s, y, y, lane % lanesPerRow, lanesPerRow);
   }
 }
