@@ -11,7 +11,7 @@ layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
 layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 largeEntries[]; };
 // Touched tiles (shared.h TileList): tileData[t] is tile t's flag, tileData[tileCount + k] the
-// k-th touched tile. Resolve visits only those, resetting their flags and keys, so a frame never
+// k-th touched tile as x | y << 16. Resolve visits only those, resetting their flags and keys, so a frame never
 // clears or scans the whole image.
 layout(std430, binding = BINDING_TILES) buffer Tiles { TileList tileList; uint tileData[]; };
 layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { TriangleSetup largeSetups[]; };

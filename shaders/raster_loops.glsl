@@ -9,7 +9,7 @@ void markTiles(ivec4 box) {
       uint tile = uint(ty) * frame.tilesX + uint(tx);
       if (tileData[tile] != 0u || atomicExchange(tileData[tile], 1u) != 0u) continue;
       uint k = atomicAdd(tileList.count, 1u);
-      tileData[frame.tileCount + k] = tile;
+      tileData[frame.tileCount + k] = uint(tx) | (uint(ty) << 16);  // resolve needs no division
       atomicMax(tileList.groupsX, min(k + 1u, frame.groupCap));
     }
   }

@@ -12,9 +12,9 @@
 layout(local_size_x = RESOLVE_GROUP_X, local_size_y = RESOLVE_GROUP_Y) in;
 layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
 
-// This invocation's pixel of tile `tile`.
-void resolveTile(uint tile) {
-  uvec2 pixel = uvec2(tile % frame.tilesX, tile / frame.tilesX) * TILE_SIZE + gl_LocalInvocationID.xy;
+// This invocation's pixel of the tile at `tile` (in tiles).
+void resolveTile(uvec2 tile) {
+  uvec2 pixel = tile * TILE_SIZE + gl_LocalInvocationID.xy;
   if (pixel.x >= frame.width || pixel.y >= frame.height) return;
   uint i = pixel.y * frame.width + pixel.x;
   uint64_t key = keys[i];
@@ -30,8 +30,9 @@ void resolveTile(uint tile) {
 
 void main() {
   for (uint k = gl_WorkGroupID.x; k < tileList.count; k += gl_NumWorkGroups.x) {
-    uint tile = tileData[frame.tileCount + k];
-    if (gl_LocalInvocationIndex == 0u) tileData[tile] = 0u;  // only this invocation reads it
+    uint packed = tileData[frame.tileCount + k];
+    uvec2 tile = uvec2(packed & 0xFFFFu, packed >> 16);
+    if (gl_LocalInvocationIndex == 0u) tileData[tile.y * frame.tilesX + tile.x] = 0u;  // only this one reads it
     resolveTile(tile);
   }
 }
