@@ -212,7 +212,7 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
       {BINDING_CLIP_LIST, storage, clipList_.buffer},
   };
-  // Identically defined set layouts are compatible: one set serves all four pipelines.
+  // Identically defined set layouts are compatible: one set serves every pass.
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
 }
 

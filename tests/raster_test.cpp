@@ -260,11 +260,6 @@ TEST(Raster, PackColorClampsAndRounds) {
   EXPECT_EQ(packColor(vec3(-1.0f, 2.0f, 0.2f)), 0xFF000000u | (51u << 16) | (255u << 8));
 }
 
-}  // namespace
-}  // namespace phongvk
-
-namespace phongvk {
-namespace {
 
 TEST(Raster, RowSpansHoldExactlyTheCoveredPixels) {
   // The GPU loops visit rowSpan(); the reference tests covers() on every box pixel. They must
@@ -292,11 +287,6 @@ TEST(Raster, RowSpansHoldExactlyTheCoveredPixels) {
   EXPECT_GT(rows, 10000);
 }
 
-}  // namespace
-}  // namespace phongvk
-
-namespace phongvk {
-namespace {
 
 TEST(Raster, ThirtyTwoBitSpansOfSmallTrianglesEqualTheSixtyFourBitOnes) {
   // The GPU's triangle pass rasterizes small triangles with 32-bit edges (EdgeSetup32); they must
