@@ -56,8 +56,7 @@ PassTimes medianPasses(const std::vector<PassTimes>& frames) {
     for (const PassTimes& p : frames) values.push_back(p.*member);
     return median(values);
   };
-  return {field(&PassTimes::shade), field(&PassTimes::raster), field(&PassTimes::large), field(&PassTimes::resolve),
-          field(&PassTimes::total)};
+  return {field(&PassTimes::shade), field(&PassTimes::raster), field(&PassTimes::resolve), field(&PassTimes::total)};
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include "host/vk_check.h"
 
 #include "shaders/clip_triangles.spv.h"
-#include "shaders/raster_large.spv.h"
 #include "shaders/raster_triangles.spv.h"
 #include "shaders/resolve.spv.h"
 #include "shaders/shade_vertices.spv.h"
@@ -31,7 +30,7 @@ constexpr Binding BINDINGS[] = {
     {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_SHADED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},    {BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    {BINDING_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_CLIP_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
 };
 
@@ -40,7 +39,7 @@ uint32_t groupCapFor(const VulkanContext& context) {
   return context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? CPU_DISPATCH_GROUPS : MAX_DISPATCH_GROUPS;
 }
 
-uint32_t tilesAcross(uint32_t pixels) { return groupCount(pixels, TILE_SIZE); }
+uint32_t binsAcross(uint32_t pixels) { return groupCount(pixels, BIN_SIZE); }
 
 // Throws when one array would exceed the device's largest storage buffer binding.
 void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
@@ -63,7 +62,11 @@ void createAndUpload(Buffer& buffer, const VulkanContext& context, const std::ve
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data) : context_(context) {
+GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout)
+    : context_(context) {
+  const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool columns = layout == ResolveLayout::ColumnPerLane || (layout == ResolveLayout::Auto && cpu);
+  resolveLaneRows_ = columns ? 1u : TILE_SIZE;
   try {
     current_[RASTER] = pipeline(RASTER, {});  // its set layout serves every pass (updateDescriptors)
     createDescriptorArena(arena_, context_, 1);
@@ -79,7 +82,7 @@ GpuRenderer::~GpuRenderer() { release(); }
 
 void GpuRenderer::release() {
   for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &clipList_, &large_, &largeSetups_,
-                    &keys_, &tiles_, &colors_, &keyReadback_}) {
+                    &keys_, &bins_, &colors_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
   destroyTimestampPool(timestamps_, context_);
@@ -99,7 +102,6 @@ constexpr ShaderCode SHADERS[] = {
     {spirv_shade_vertices, sizeof(spirv_shade_vertices)},
     {spirv_raster_triangles, sizeof(spirv_raster_triangles)},
     {spirv_clip_triangles, sizeof(spirv_clip_triangles)},
-    {spirv_raster_large, sizeof(spirv_raster_large)},
     {spirv_resolve, sizeof(spirv_resolve)},
 };
 
@@ -130,8 +132,8 @@ void GpuRenderer::selectPipelines(const FrameInputs& in) {
   current_[SHADE] = pipeline(SHADE, shadeSpecs(in));
   current_[RASTER] = pipeline(RASTER, {});
   current_[CLIP] = pipeline(CLIP, {});
-  current_[LARGE] = pipeline(LARGE, {});
-  current_[RESOLVE] = pipeline(RESOLVE, {{SPEC_INTERPOLATION, in.frame.interpolation}});
+  current_[RESOLVE] = pipeline(RESOLVE, {{SPEC_INTERPOLATION, in.frame.interpolation},
+                                         {SPEC_RESOLVE_LANE_ROWS, resolveLaneRows_}});
 }
 
 void GpuRenderer::uploadScene(const SceneData& data) {
@@ -156,17 +158,17 @@ void GpuRenderer::uploadScene(const SceneData& data) {
 
 }
 
-// Keys start cleared and tile flags unset once, here; from then on the resolve pass resets what a
-// frame touched, so no frame pays for clearing or scanning the whole image.
+// Keys start cleared once, here; from then on the resolve pass resets the keys a frame wrote, so no
+// frame pays for clearing or scanning the whole key buffer.
 void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   if (width == width_ && height == height_) return;
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
-  const VkDeviceSize tiles = VkDeviceSize(tilesAcross(width)) * tilesAcross(height);
+  const VkDeviceSize bins = VkDeviceSize(binsAcross(width)) * binsAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
-  for (Buffer* b : {&keys_, &tiles_, &colors_, &keyReadback_, &large_, &largeSetups_}) destroyBuffer(*b, context_);
+  for (Buffer* b : {&keys_, &bins_, &colors_, &keyReadback_, &large_, &largeSetups_}) destroyBuffer(*b, context_);
   createLargeBuffers(pixels);
   createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
-  createBuffer(tiles_, context_, sizeof(TileList) + 2 * tiles * sizeof(uint32_t),
+  createBuffer(bins_, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
                STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
   // Resolve writes the colours straight into host-visible memory: no device copy and no second
   // buffer (12 bytes per pixel in all: keys and colours), and the host reads them in place.
@@ -174,21 +176,20 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
                MemoryKind::HostVisible);
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
-  vkCmdFillBuffer(cmd, tiles_.buffer, 0, VK_WHOLE_SIZE, 0u);            // no tile touched
   submitAndWait(context_, cmd);
   width_ = width;
   height_ = height;
   updateDescriptors();
 }
 
-// The large pass's list and set-up records, sized by the image (shared.h LARGE_*).
+// The large triangles' bin entries and set-up records, sized by the image (shared.h LARGE_*).
 void GpuRenderer::createLargeBuffers(VkDeviceSize pixels) {
   largeCapacity_ = uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS));
   const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(largeCapacity_) * sizeof(glm::uvec2);
   createBuffer(large_, context_, largeBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
   largeSetupCapacity_ = std::min<uint32_t>(
       std::max(triangleCount_, 1u), uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS)));
-  createBuffer(largeSetups_, context_, VkDeviceSize(largeSetupCapacity_) * sizeof(TriangleSetup), STORAGE,
+  createBuffer(largeSetups_, context_, VkDeviceSize(largeSetupCapacity_) * sizeof(LargeTriangle), STORAGE,
                MemoryKind::DeviceLocal);
 }
 
@@ -208,7 +209,7 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_KEYS, storage, keys_.buffer},
       {BINDING_COLOR, storage, colors_.buffer},
       {BINDING_LARGE, storage, large_.buffer},
-      {BINDING_TILES, storage, tiles_.buffer},
+      {BINDING_BINS, storage, bins_.buffer},
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
       {BINDING_CLIP_LIST, storage, clipList_.buffer},
   };
@@ -240,7 +241,7 @@ bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::ve
 
 // Sends only what changed since the last frame. Vertex colours are recomputed only when their
 // inputs changed: materials, lights, ambient, or the eye when some material is specular.
-void GpuRenderer::uploadFrame(const FrameInputs& in) {
+void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   const bool materialsChanged = uploadIfChanged(context_, materials_, in.materials, lastMaterials_, "materials");
   const bool lightsChanged = uploadIfChanged(context_, lights_, in.lights, lastLights_, "lights");
   uploadIfChanged(context_, objects_, in.objects, lastObjects_, "objects");
@@ -251,10 +252,11 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
                            (eyeMoved && !lightingIsViewIndependent(in));
   FrameData frame = f;
   frame.largeCapacity = largeCapacity_;
-  frame.tilesX = tilesAcross(frame.width);
+  frame.binsX = binsAcross(frame.width);
   frame.largeSetupCapacity = largeSetupCapacity_;
   frame.groupCap = groupCapFor(context_);
-  frame.tileCount = tilesAcross(frame.width) * tilesAcross(frame.height);
+  frame.binCount = binsAcross(frame.width) * binsAcross(frame.height);
+  frame.keepKeys = withKeys ? 1u : 0u;
   frame.shadeColors = colorsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
   lastFrame_ = frame;
@@ -264,11 +266,14 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
 
 void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool withKeys) {
   resetTimestamps(cmd, timestamps_);
-  // Untouched tiles are not resolved: their pixels keep this fill.
+  // Untouched bins are not resolved: their pixels keep this fill.
   vkCmdFillBuffer(cmd, colors_.buffer, 0, VK_WHOLE_SIZE, packColor(frame.background));
-  const TileList noTiles = {0, 0, 1, 1};  // the flags were reset by the last resolve
-  vkCmdUpdateBuffer(cmd, tiles_.buffer, 0, sizeof noTiles, &noTiles);
-  const LargeList emptyList = {0, 0, 1, 1, 0, 0, 0, 0};
+  const VkDeviceSize binBytes = VkDeviceSize(frame.binCount) * sizeof(uint32_t);
+  vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList), binBytes, 0u);                   // no flags
+  vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList) + binBytes, binBytes, LIST_END);  // empty lists
+  const BinList noBins = {0, 0, 1, 1};
+  vkCmdUpdateBuffer(cmd, bins_.buffer, 0, sizeof noBins, &noBins);
+  const LargeList emptyList = {0, 0, 0, 0};
   vkCmdUpdateBuffer(cmd, large_.buffer, 0, sizeof emptyList, &emptyList);
   const IdList noClipping = {0, 0, 1, 1};
   vkCmdUpdateBuffer(cmd, clipList_.buffer, 0, sizeof noClipping, &noClipping);
@@ -291,33 +296,29 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, groupsX));
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 2);
-  bind(LARGE);
-  vkCmdDispatchIndirect(cmd, large_.buffer, offsetof(LargeList, groupsX));
-  computeBarrier(cmd);
-  writeTimestamp(cmd, timestamps_, 3);
-  const VkDeviceSize pixels = VkDeviceSize(frame.width) * frame.height;
-  if (withKeys) {  // before resolve, which resets the keys it reads
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_ACCESS_TRANSFER_READ_BIT);
-    VkBufferCopy keyCopy = {0, 0, pixels * sizeof(uint64_t)};
-    vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_SHADER_WRITE_BIT);
-  }
   bind(RESOLVE);
-  vkCmdDispatchIndirect(cmd, tiles_.buffer, offsetof(TileList, groupsX));
+  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
   computeBarrier(cmd);  // lavapipe writes a bottom-of-pipe timestamp before the dispatch ends otherwise
-  writeTimestamp(cmd, timestamps_, 4);
+  writeTimestamp(cmd, timestamps_, 3);
+  if (withKeys) {  // resolve left the final keys (frame.keepKeys): copy them, then clear for the next frame
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+    VkBufferCopy keyCopy = {0, 0, VkDeviceSize(frame.width) * frame.height * sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
+  }
 }
 
 void GpuRenderer::readTimes() {
   const std::vector<double> t = readTimestamps(context_, timestamps_);
   if (t.size() < TIMESTAMP_SLOTS) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    times_ = {nan, nan, nan, nan, nan};
+    times_ = {nan, nan, nan, nan};
     return;
   }
-  times_ = {t[1] - t[0], t[2] - t[1], t[3] - t[2], t[4] - t[3], t[4] - t[0]};  // raster: triangle + clip
+  times_ = {t[1] - t[0], t[2] - t[1], t[3] - t[2], t[3] - t[0]};  // raster: triangle + clip
 }
 
 RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
@@ -327,10 +328,10 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
     createBuffer(keyReadback_, context_, pixels * sizeof(uint64_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  MemoryKind::HostVisible);
   }
-  uploadFrame(in);
+  uploadFrame(in, withKeys);
   selectPipelines(in);
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
-  recordFrame(cmd, in.frame, withKeys);
+  recordFrame(cmd, lastFrame_, withKeys);  // as uploaded (bin counts included)
   submitAndWait(context_, cmd);
   readTimes();
 

@@ -18,17 +18,21 @@ namespace phongvk {
 // Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
 struct PassTimes {
   double shade = 0;
-  double raster = 0;  // triangle and clip passes: setup, culling, clipping, small triangles
-  double large = 0;   // large-triangle pass
-  double resolve = 0;
+  double raster = 0;   // triangle and clip passes: setup, culling, clipping, small triangles
+  double resolve = 0;  // large triangles (binned), then colours
   double total = 0;
 };
+
+// How resolve spreads an 8x8 tile over its lanes (resolve.comp): a column of 8 pixels per lane,
+// so a CPU device's 8-wide SIMD batch is one tile and per-tile work runs once; or a lane per
+// pixel, for GPUs. Auto picks by device type; tests force either on any device.
+enum class ResolveLayout { Auto, ColumnPerLane, PixelPerLane };
 
 class GpuRenderer {
  public:
   // Uploads the scene's vertices, triangles and materials. Throws std::runtime_error when the
   // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
-  GpuRenderer(const VulkanContext& context, const SceneData& data);
+  GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout = ResolveLayout::Auto);
   ~GpuRenderer();
   GpuRenderer(const GpuRenderer&) = delete;
   GpuRenderer& operator=(const GpuRenderer&) = delete;
@@ -42,9 +46,9 @@ class GpuRenderer {
   uint64_t framesShaded() const { return framesShaded_; }
 
  private:
-  enum Pass { SHADE, RASTER, CLIP, LARGE, RESOLVE, PASS_COUNT };
-  // Before shade, after the triangle + clip passes, after large, after resolve: PassTimes.
-  static constexpr uint32_t TIMESTAMP_SLOTS = 5;
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE, PASS_COUNT };
+  // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
+  static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 
   void release();  // destroys whatever exists; safe to call twice
   const ComputePipeline& pipeline(Pass pass, const std::vector<SpecConstant>& specs);
@@ -53,11 +57,12 @@ class GpuRenderer {
   void ensureImageBuffers(uint32_t width, uint32_t height);
   void createLargeBuffers(VkDeviceSize pixels);
   void updateDescriptors();
-  void uploadFrame(const FrameInputs& in);
+  void uploadFrame(const FrameInputs& in, bool withKeys);
   void recordFrame(VkCommandBuffer cmd, const gpu::FrameData& frame, bool withKeys);
   void readTimes();
 
   const VulkanContext& context_;
+  uint32_t resolveLaneRows_ = 1;  // SPEC_RESOLVE_LANE_ROWS
   std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
   ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
   DescriptorArena arena_;
@@ -66,7 +71,7 @@ class GpuRenderer {
   PassTimes times_;
 
   Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, clipList_, large_, largeSetups_;
-  Buffer keys_, tiles_, colors_, keyReadback_;
+  Buffer keys_, bins_, colors_, keyReadback_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
   uint32_t largeCapacity_ = 0;

@@ -10,11 +10,11 @@ layout(std430, binding = BINDING_SHADED) buffer Shaded { ShadedVertex shaded[]; 
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
 layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 largeEntries[]; };
-// Touched tiles (shared.h TileList): tileData[t] is tile t's flag, tileData[tileCount + k] the
-// k-th touched tile as x | y << 16. Resolve visits only those, resetting their flags and keys, so a frame never
-// clears or scans the whole image.
-layout(std430, binding = BINDING_TILES) buffer Tiles { TileList tileList; uint tileData[]; };
-layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { TriangleSetup largeSetups[]; };
+// Bins (shared.h BinList): binData[b] is bin b's flags, binData[binCount + b] the head of its
+// large-triangle list, binData[2 binCount + k] the k-th touched bin as x | y << 16. Resolve visits
+// only those, resetting the keys it read, so a frame never clears or scans the whole key buffer.
+layout(std430, binding = BINDING_BINS) buffer Bins { BinList binList; uint binData[]; };
+layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { LargeTriangle largeSetups[]; };
 layout(std430, binding = BINDING_CLIP_LIST) buffer ClipList { IdList clipList; uint clipIds[]; };
 
 // The three shaded vertices of triangle `id`.

@@ -1,8 +1,8 @@
 // Clip pass: the triangles the triangle pass found crossing the near plane or the guard band
 // (usually few). Each is clipped to a polygon (raster.h setupClipped) whose fan sub-triangles
-// become triangle setups of their own: large ones go to the large pass, small ones are rasterized
-// here. Kept out of the triangle pass because the clipping's per-lane arrays slow every triangle
-// of a pass that contains them on SIMD CPUs.
+// become triangle setups of their own: large ones go to resolve's bin lists, small ones are
+// rasterized here. Kept out of the triangle pass because the clipping's per-lane arrays slow
+// every triangle of a pass that contains them on SIMD CPUs.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -24,12 +24,8 @@ void main() {
     if (!setupPlane(h0, h1, h2, cullBack, id, frame, t) || !setupClipped(h0, h1, h2, frame, t)) continue;
     for (int f = 0; f + 2 < t.count; ++f) {
       TriangleSetup sub = fanTriangle(t, f, frame);
-      if (isEmpty(sub.bbox)) continue;
-      if (uint(boxPixels(sub.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(sub)) continue;
       EdgeSetup s;
-      if (!setupSingle(sub, frame, s)) continue;
-      markTiles(s.bbox);
-      rasterizeRows(sub, s, s.bbox.y, s.bbox.w, 0, 1);
+      if (setupSingle(sub, frame, s)) drawOrDefer(sub, s);
     }
   }
 }

@@ -433,24 +433,6 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, F
 
 FN int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
 
-// Rows per large-pass chunk: a power of two, at most LARGE_GROUP_SIZE, so a chunk covers about
-// LARGE_CHUNK_PIXELS pixels and its rows split the workgroup's lanes evenly (LARGE_GROUP_SIZE /
-// rows lanes per row). Sized by the average row span (area / rows), not the box width, so a
-// sliver gets a lane per row instead of many lanes sharing a few pixels.
-FN int rowsPerChunk(TriangleSetup t) {
-  float rows = float(t.bbox.w - t.bbox.y + 1);
-  float span = max(1.0f, t.area / rows);
-  int target = int(clamp(float(LARGE_CHUNK_PIXELS) / span, 1.0f, float(LARGE_GROUP_SIZE)));
-  int chunkRows = 1;
-  while (chunkRows * 2 <= target) chunkRows *= 2;
-  return chunkRows;
-}
-
-FN int chunkCount(TriangleSetup t) {
-  int rows = t.bbox.w - t.bbox.y + 1;
-  return (rows + rowsPerChunk(t) - 1) / rowsPerChunk(t);
-}
-
 // Fan sub-triangle k of a clipped polygon as a triangle setup of its own (same plane, depth range
 // and id; its own box and area), so later passes only ever see count == 3 and index constantly.
 FN TriangleSetup fanTriangle(TriangleSetup t, int k, FrameData frame) {
@@ -478,10 +460,105 @@ FN bool setupFan(TriangleSetup t, int k, FrameData frame, OUT(EdgeSetup) s) {
                     t.frontFacing != 0u, frame.width, frame.height, s);
 }
 
-// The key the triangle offers pixel (x, y), which it covers.
+// The key a triangle with this plane, depth range and id offers pixel (x, y), which it covers.
+FN uint64_t planeKey(TrianglePlane plane, float zMin, float zMax, uint triangle, int x, int y, FrameData frame) {
+  float z = depthAt(plane, pixelRay(x, y, frame.principal));
+  return depthKey(z, zMin, zMax, frame.farPlane, triangle);
+}
+
 FN uint64_t coveredKey(TriangleSetup t, int x, int y, FrameData frame) {
-  float z = depthAt(t.plane, pixelRay(x, y, frame.principal));
-  return depthKey(z, t.zMin, t.zMax, frame.farPlane, t.triangle);
+  return planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, y, frame);
+}
+
+// ---- Large triangles, a block of pixels at a time (the GPU's resolve pass) ----
+
+// What resolve needs of a large sub-triangle, set up once by the triangle or clip pass (std430,
+// 80 bytes): its oriented vertices and edge biases (EdgeSetup in 32 bits: snapped coordinates
+// stay below 2^28), box, plane, depth range and id.
+struct LargeTriangle {
+  ivec4 bbox;
+  TrianglePlane plane;
+  ivec2 v0;
+  ivec2 v1;
+  ivec2 v2;
+  int bias0;
+  int bias1;
+  int bias2;
+  float zMin;
+  float zMax;
+  uint triangle;
+};
+
+FN LargeTriangle largeTriangle(TriangleSetup t, EdgeSetup s) {
+  LargeTriangle l;
+  l.bbox = s.bbox;
+  l.plane = t.plane;
+  l.v0 = ivec2(s.v0);
+  l.v1 = ivec2(s.v1);
+  l.v2 = ivec2(s.v2);
+  l.bias0 = int(s.bias0);
+  l.bias1 = int(s.bias1);
+  l.bias2 = int(s.bias2);
+  l.zMin = t.zMin;
+  l.zMax = t.zMax;
+  l.triangle = t.triangle;
+  return l;
+}
+
+// The three edge functions (plus biases) at the centre of pixel `origin`, the first of a block.
+struct BlockEdges {
+  int64_t e0;
+  int64_t e1;
+  int64_t e2;
+};
+
+FN BlockEdges blockEdges(LargeTriangle t, ivec2 origin) {
+  i64vec2 p = pixelCentre(origin.x, origin.y);
+  BlockEdges e;
+  e.e0 = edgeFunction(i64vec2(t.v1), i64vec2(t.v2), p) + int64_t(t.bias0);
+  e.e1 = edgeFunction(i64vec2(t.v2), i64vec2(t.v0), p) + int64_t(t.bias1);
+  e.e2 = edgeFunction(i64vec2(t.v0), i64vec2(t.v1), p) + int64_t(t.bias2);
+  return e;
+}
+
+// Edge a -> b's function at pixel origin + (i, j), from its value e there: one pixel right adds
+// 256 (a.y - b.y), one down 256 (b.x - a.x). Exact, so it equals edgeFunction at that centre.
+FN int64_t edgeStep(ivec2 a, ivec2 b, int64_t e, int i, int j) {
+  return e + int64_t(a.y - b.y) * int64_t(SUBPIXEL_ONE * i) + int64_t(b.x - a.x) * int64_t(SUBPIXEL_ONE * j);
+}
+
+// How a block relates to a large triangle's pixel centres: none covered, some may be, all covered.
+PHONGVK_CONST int BLOCK_OUTSIDE = 0;
+PHONGVK_CONST int BLOCK_PARTIAL = 1;
+PHONGVK_CONST int BLOCK_INSIDE = 2;
+
+// One edge over the size x size block at pixel `origin`: the function is affine, so its extremes
+// are at the corner pixels, reached by stepping from e.
+FN int classifyEdge(ivec2 a, ivec2 b, int64_t e, int size) {
+  int64_t right = edgeStep(a, b, int64_t(0), size - 1, 0);
+  int64_t down = edgeStep(a, b, int64_t(0), 0, size - 1);
+  int64_t lo = e + min(right, int64_t(0)) + min(down, int64_t(0));
+  int64_t hi = e + max(right, int64_t(0)) + max(down, int64_t(0));
+  if (hi < int64_t(0)) return BLOCK_OUTSIDE;
+  return lo >= int64_t(0) ? BLOCK_INSIDE : BLOCK_PARTIAL;
+}
+
+// BLOCK_INSIDE: covers() holds at every pixel centre of the size x size block at `origin` (which
+// may reach past the image); BLOCK_OUTSIDE: at none (within the image); else test each pixel.
+FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
+  if (origin.x > t.bbox.z || origin.x + size - 1 < t.bbox.x || origin.y > t.bbox.w || origin.y + size - 1 < t.bbox.y) {
+    return BLOCK_OUTSIDE;
+  }
+  int c0 = classifyEdge(t.v1, t.v2, e.e0, size);
+  int c1 = classifyEdge(t.v2, t.v0, e.e1, size);
+  int c2 = classifyEdge(t.v0, t.v1, e.e2, size);
+  return min(c0, min(c1, c2));
+}
+
+// covers() at pixel origin + (i, j), from the block's edge values.
+FN bool coversInBlock(LargeTriangle t, BlockEdges e, int i, int j) {
+  return edgeStep(t.v1, t.v2, e.e0, i, j) >= int64_t(0) && edgeStep(t.v2, t.v0, e.e1, i, j) >= int64_t(0) &&
+         edgeStep(t.v0, t.v1, e.e2, i, j) >= int64_t(0);
 }
 
 // The key the triangle offers pixel (x, y), or KEY_CLEAR if it does not cover it.
@@ -492,29 +569,62 @@ FN uint64_t fragmentKey(TriangleSetup t, EdgeSetup s, int x, int y, FrameData fr
 
 // ---- Gouraud ----
 
-// Vertex colour interpolated at pixel ray p, perspective-correct or linear in screen space.
-FN vec3 interpolateColor(vec3 h0, vec3 h1, vec3 h2, vec3 c0, vec3 c1, vec3 c2, vec3 p, uint mode) {
+// What Gouraud interpolation needs of one triangle, whatever the pixel: the plane normal n, the
+// planes whose dot with the pixel ray give the barycentrics of vertices 1 and 2 (up to a common
+// factor), the vertex colours as c0 + b1 dc1 + b2 dc2, and for screen-space interpolation
+// dot(h0, n) and the vertices' W.
+struct GouraudTriangle {
+  vec3 n;
+  float det;
+  vec3 u1;
+  float w1;
+  vec3 u2;
+  float w2;
+  vec3 c0;
+  vec3 dc1;
+  vec3 dc2;
+};
+
+FN GouraudTriangle gouraudTriangle(ShadedVertex a, ShadedVertex b, ShadedVertex c) {
+  vec3 h0 = vec3(a.hpos);
+  vec3 h1 = vec3(b.hpos);
+  vec3 h2 = vec3(c.hpos);
   PRECISE vec3 e1 = h1 - h0;
   PRECISE vec3 e2 = h2 - h0;
-  PRECISE vec3 n = cross3(e1, e2);
-  PRECISE float d1 = dot3(p, cross3(e2, h0));  // proportional to the barycentric of vertex 1
-  PRECISE float d2 = dot3(p, cross3(h0, e1));  // ... of vertex 2
+  GouraudTriangle g;
+  g.n = cross3(e1, e2);
+  g.det = dot3(h0, g.n);
+  g.u1 = cross3(e2, h0);  // dot(p, u1) is proportional to the barycentric of vertex 1
+  g.u2 = cross3(h0, e1);  // ... of vertex 2
+  g.w1 = h1.z;
+  g.w2 = h2.z;
+  g.c0 = vec3(a.color);
+  PRECISE vec3 dc1 = vec3(b.color) - g.c0;
+  PRECISE vec3 dc2 = vec3(c.color) - g.c0;
+  g.dc1 = dc1;
+  g.dc2 = dc2;
+  return g;
+}
+
+// The colour interpolated at pixel ray p, perspective-correct or linear in screen space.
+FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
+  PRECISE float d1 = dot3(p, g.u1);
+  PRECISE float d2 = dot3(p, g.u2);
   PRECISE float b1;
   PRECISE float b2;
   if (mode == INTERP_SCREEN) {
     // Screen-space barycentrics are the perspective ones times W / (interpolated W).
-    PRECISE float det = dot3(h0, n);
-    b1 = d1 * h1.z / det;
-    b2 = d2 * h2.z / det;
+    b1 = d1 * g.w1 / g.det;
+    b2 = d2 * g.w2 / g.det;
   } else {
-    PRECISE float pn = dot3(p, n);
+    PRECISE float pn = dot3(p, g.n);
     b1 = d1 / pn;
     b2 = d2 / pn;
   }
   // Held to [0, 1] (NaN to 0): only pixels covered thanks to snapping extrapolate.
   b1 = b1 >= 0.0f ? (b1 <= 1.0f ? b1 : 1.0f) : 0.0f;
   b2 = b2 >= 0.0f ? (b2 <= 1.0f ? b2 : 1.0f) : 0.0f;
-  PRECISE vec3 c = c0 + b1 * (c1 - c0) + b2 * (c2 - c0);
+  PRECISE vec3 c = g.c0 + b1 * g.dc1 + b2 * g.dc2;
   return c;
 }
 
@@ -524,12 +634,15 @@ FN uint packColor(vec3 c) {
   return uint(q.x) | (uint(q.y) << 8) | (uint(q.z) << 16) | (255u << 24);
 }
 
-// The final RGBA8 of pixel (x, y) won by the triangle with these vertices; `mode` is
-// frame.interpolation (a specialization constant in the shader).
+// The final RGBA8 of pixel (x, y) won by triangle g; `mode` is frame.interpolation (a
+// specialization constant in the shader).
+FN uint shadePixel(GouraudTriangle g, int x, int y, FrameData frame, uint mode) {
+  return packColor(interpolateColor(g, pixelRay(x, y, frame.principal), mode));
+}
+
+// shadePixel for the triangle with these vertices.
 FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int y, FrameData frame, uint mode) {
-  vec3 p = pixelRay(x, y, frame.principal);
-  return packColor(interpolateColor(vec3(a.hpos), vec3(b.hpos), vec3(c.hpos), vec3(a.color),
-                                    vec3(b.color), vec3(c.color), p, mode));
+  return shadePixel(gouraudTriangle(a, b, c), x, y, frame, mode);
 }
 
 SHARED_END
@@ -538,6 +651,8 @@ SHARED_END
 static_assert(sizeof(phongvk::gpu::TriangleSetup) == 128 && offsetof(phongvk::gpu::TriangleSetup, bbox) == 64);
 static_assert(offsetof(phongvk::gpu::TriangleSetup, plane) == 80 && offsetof(phongvk::gpu::TriangleSetup, count) == 96);
 static_assert(offsetof(phongvk::gpu::TriangleSetup, triangle) == 112);
+static_assert(sizeof(phongvk::gpu::LargeTriangle) == 80 && offsetof(phongvk::gpu::LargeTriangle, v0) == 32);
+static_assert(offsetof(phongvk::gpu::LargeTriangle, zMin) == 68 && offsetof(phongvk::gpu::LargeTriangle, triangle) == 76);
 #endif
 
 #endif  // PHONGVK_RASTER_H

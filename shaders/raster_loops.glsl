@@ -1,26 +1,42 @@
 // raster_loops.glsl — what the raster passes share (after bindings.glsl; needs
-// GL_EXT_shader_atomic_int64): tile marking, span loops, handing large triangles to the large pass.
+// GL_EXT_shader_atomic_int64): bin marking, span loops, handing large triangles to resolve.
 
-// Marks the tiles of pixel box (x0, y0, x1, y1) as touched: the first toucher of a tile appends
-// it to the list (the plain read skips the atomic for tiles already taken).
-void markTiles(ivec4 box) {
-  for (int ty = box.y / int(TILE_SIZE); ty <= box.w / int(TILE_SIZE); ++ty) {
-    for (int tx = box.x / int(TILE_SIZE); tx <= box.z / int(TILE_SIZE); ++tx) {
-      uint tile = uint(ty) * frame.tilesX + uint(tx);
-      if (tileData[tile] != 0u || atomicExchange(tileData[tile], 1u) != 0u) continue;
-      uint k = atomicAdd(tileList.count, 1u);
-      tileData[frame.tileCount + k] = uint(tx) | (uint(ty) << 16);  // resolve needs no division
-      atomicMax(tileList.groupsX, min(k + 1u, frame.groupCap));
+// Records that bin b needs resolving, with `flags` (the tiles whose keys were written, if any):
+// the first toucher appends it to the touched list (the plain read skips the atomics for bins
+// already marked so).
+void touchBin(uvec2 b, uint flags) {
+  uint bin = b.y * frame.binsX + b.x;
+  uint want = BIN_LISTED | flags;
+  if ((binData[bin] & want) == want) return;
+  if ((atomicOr(binData[bin], want) & BIN_LISTED) != 0u) return;
+  uint k = atomicAdd(binList.count, 1u);
+  binData[2u * frame.binCount + k] = b.x | (b.y << 16);  // resolve needs no division
+  atomicMax(binList.groupsX, min(k + 1u, frame.groupCap));
+}
+
+// The bins of pixel box (x0, y0, x1, y1), as (bx0, by0, bx1, by1).
+ivec4 binsOf(ivec4 box) { return box / int(BIN_SIZE); }
+
+// Marks the tiles of pixel box as touched by a triangle whose keys went into the key buffer.
+void markBins(ivec4 box) {
+  ivec4 tiles = box / int(TILE_SIZE);
+  ivec4 bins = tiles / int(BIN_TILES);
+  for (int by = bins.y; by <= bins.w; ++by) {
+    for (int bx = bins.x; bx <= bins.z; ++bx) {
+      ivec4 inBin = clamp(tiles - ivec4(bx, by, bx, by) * int(BIN_TILES), 0, int(BIN_TILES) - 1);
+      uint row = ((2u << inBin.z) - 1u) & ~((1u << inBin.x) - 1u);  // tiles x0..x1 of one row
+      uint mask = 0u;
+      for (int ty = inBin.y; ty <= inBin.w; ++ty) mask |= row << (uint(ty) * BIN_TILES);
+      touchBin(uvec2(bx, by), mask << BIN_KEYS_SHIFT);
     }
   }
 }
 
-// Rasterizes rows [rowLo, rowHi] of sub-triangle s, row span by row span; the `lanes`
-// invocations starting at `lane` share each span.
-void rasterizeRows(TriangleSetup t, EdgeSetup s, int rowLo, int rowHi, int lane, int lanes) {
-  for (int y = max(rowLo, s.bbox.y); y <= min(rowHi, s.bbox.w); ++y) {
+// Rasterizes sub-triangle s, row span by row span, one invocation.
+void rasterizeRows(TriangleSetup t, EdgeSetup s) {
+  for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     ivec2 span = rowSpan(s, y);
-    for (int x = span.x + lane; x <= span.y; x += lanes) {
+    for (int x = span.x; x <= span.y; ++x) {
       atomicMin(keys[uint(y) * frame.width + uint(x)], coveredKey(t, x, y, frame));
     }
   }
@@ -36,21 +52,45 @@ void rasterizeSmall(TriangleSetup t, EdgeSetup32 s) {
   }
 }
 
-// Stores the triangle's setup and appends its row chunks to the large list; false when either is
-// full (then the caller draws it itself). A reservation that straddles the list's end still writes
-// the entries that fit, as skips: the large pass reads every entry below min(count, capacity),
-// and none of them may be left over from an earlier frame.
-bool deferToLargePass(TriangleSetup t) {
-  uint slot = atomicAdd(large.setups, 1u);
-  if (slot >= frame.largeSetupCapacity) return false;
-  uint chunks = uint(chunkCount(t));
-  uint first = atomicAdd(large.count, chunks);
-  if (first + chunks > frame.largeCapacity) {
-    for (uint e = first; e < frame.largeCapacity; ++e) largeEntries[e] = uvec2(LARGE_ENTRY_SKIP, 0u);
-    return false;
+// Reserves `count` of a list's slots unless that would pass `capacity`; LIST_END if not. The
+// plain read first keeps a full list's counter from growing (and wrapping) frame after frame.
+uint reserve(uint count, uint capacity, bool entries) {
+  uint used = entries ? large.count : large.setups;
+  if (used >= capacity || count > capacity - used) return LIST_END;
+  uint first = entries ? atomicAdd(large.count, count) : atomicAdd(large.setups, count);
+  return first < capacity && count <= capacity - first ? first : LIST_END;
+}
+
+// Stores sub-triangle s's set-up and links it into the list of every bin whose pixels it may
+// cover; resolve rasterizes it there. False when the set-up records or the bin entries are full
+// (the caller then draws it itself; entries already linked stay valid, as the record is written
+// before any entry points at it, and drawing a triangle twice gives the same smallest keys).
+bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
+  ivec4 bins = binsOf(s.bbox);
+  uint slot = reserve(1u, frame.largeSetupCapacity, false);
+  if (slot == LIST_END) return false;
+  uint first = reserve(uint((bins.z - bins.x + 1) * (bins.w - bins.y + 1)), frame.largeCapacity, true);
+  if (first == LIST_END) return false;
+  LargeTriangle large = largeTriangle(t, s);
+  largeSetups[slot] = large;
+  uint e = first;
+  for (int by = bins.y; by <= bins.w; ++by) {
+    for (int bx = bins.x; bx <= bins.z; ++bx) {
+      ivec2 origin = ivec2(bx, by) * int(BIN_SIZE);
+      if (classifyBlock(large, blockEdges(large, origin), origin, int(BIN_SIZE)) == BLOCK_OUTSIDE) continue;  // entry unused
+      uint bin = uint(by) * frame.binsX + uint(bx);
+      largeEntries[e] = uvec2(slot, atomicExchange(binData[frame.binCount + bin], e));
+      ++e;
+      touchBin(uvec2(bx, by), 0u);
+    }
   }
-  largeSetups[slot] = t;
-  for (uint c = 0u; c < chunks; ++c) largeEntries[first + c] = uvec2(slot, c);
-  atomicMax(large.groupsX, min(first + chunks, frame.groupCap));
   return true;
+}
+
+// A sub-triangle with 64-bit edges: deferred to resolve when large (and there is room), else
+// drawn here.
+void drawOrDefer(TriangleSetup t, EdgeSetup s) {
+  if (uint(boxPixels(s.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(t, s)) return;
+  markBins(s.bbox);
+  rasterizeRows(t, s);
 }

@@ -1,7 +1,7 @@
 // Triangle pass: one invocation per triangle. Cull and snap (raster.h); a triangle that crosses
 // the near plane or the guard band goes to the clip list (clip_triangles.comp); a small one is
-// rasterized right here; a large one is cut into row chunks that the large pass spreads over whole
-// workgroups (raster_large.comp).
+// rasterized right here; a large one is linked into the lists of the bins it overlaps, and resolve
+// rasterizes it there (resolve.comp).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -13,19 +13,14 @@
 
 layout(local_size_x = SETUP_GROUP_SIZE) in;
 
-// An unclipped triangle (one sub-triangle), with 32-bit edges when it is small enough.
-void rasterizeHere(TriangleSetup t) {
-  markTiles(t.bbox);
-  if (fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {
-    EdgeSetup32 small;
-    if (setupEdges32(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height,
-                     small)) {
-      rasterizeSmall(t, small);
-    }
+// A small unclipped triangle, with 32-bit edges.
+void rasterizeSmallTriangle(TriangleSetup t) {
+  EdgeSetup32 small;
+  if (!setupEdges32(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height, small)) {
     return;
   }
-  EdgeSetup s;
-  if (setupSingle(t, frame, s)) rasterizeRows(t, s, s.bbox.y, s.bbox.w, 0, 1);
+  markBins(small.bbox);
+  rasterizeSmall(t, small);
 }
 
 void main() {
@@ -43,7 +38,11 @@ void main() {
       continue;
     }
     if (!setupUnclipped(h0, h1, h2, frame, t)) continue;
-    if (uint(boxPixels(t.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(t)) continue;
-    rasterizeHere(t);
+    if (fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {
+      rasterizeSmallTriangle(t);
+      continue;
+    }
+    EdgeSetup s;
+    if (setupSingle(t, frame, s)) drawOrDefer(t, s);
   }
 }

@@ -26,13 +26,14 @@ using uvec4 = glm::uvec4;
 // 64 threads: a multiple of NVIDIA's 32-wide warps and of lavapipe's 8-wide AVX2 SIMD lanes.
 PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
 PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
-PHONGVK_CONST uint LARGE_GROUP_SIZE = 64;
 PHONGVK_CONST uint CLIP_GROUP_SIZE = 64;
-// Resolve works on 8x8 pixel tiles, one workgroup each: neighbouring pixels usually share a
-// triangle (cache reuse), and a tile no triangle touched is skipped by the whole group at once.
+// The image is cut into 32x32 pixel bins. Resolve takes one touched bin per workgroup and walks
+// it as 4x4 tiles of 8x8 pixels, a lane per pixel: the bin's large triangles are tested against a
+// whole tile at once (all in, all out, or per pixel), so their loads and set-up are shared by the
+// workgroup, and a bin nothing touched is skipped whole.
 PHONGVK_CONST uint TILE_SIZE = 8;
-PHONGVK_CONST uint RESOLVE_GROUP_X = TILE_SIZE;
-PHONGVK_CONST uint RESOLVE_GROUP_Y = TILE_SIZE;
+PHONGVK_CONST uint BIN_SIZE = 32;
+PHONGVK_CONST uint BIN_TILES = BIN_SIZE / TILE_SIZE;  // tiles per bin side
 
 // ---- Raster constants ----
 PHONGVK_CONST uint SUBPIXEL_BITS = 8;        // 1/256 pixel, as Vulkan/D3D hardware
@@ -42,20 +43,24 @@ PHONGVK_CONST int SUBPIXEL_HALF = 128;       // pixel centres sit at (x + 0.5, y
 // principal point, so snapped coordinates stay below 2^28 subpixels and edge functions in int64.
 PHONGVK_CONST float GUARD_BAND = 524288.0f;  // 2^19 pixels
 // A triangle whose pixel bounding box has more than this many pixels is not rasterized by its
-// own invocation: it is cut into row chunks of about LARGE_CHUNK_PIXELS pixels, each shared by a
-// whole workgroup of the large pass. Small triangles stay one invocation each (no list traffic).
+// own invocation: its set-up is stored and linked into the list of every bin it overlaps, and
+// resolve rasterizes it there, tile by tile, keeping the smallest key in registers (no atomics).
+// Small triangles stay one invocation each, with atomicMin on the key buffer.
 PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 1024;
-PHONGVK_CONST uint LARGE_CHUNK_PIXELS = 4096;
-// The large pass's buffers grow with the image, not the triangle count (a large triangle covers
-// many pixels, so few fit on screen at once): room for one set-up record (128 bytes) per
-// LARGE_SETUP_PIXELS pixels and one chunk entry (8 bytes) per LARGE_ENTRY_PIXELS pixels, with
-// the minimums below. When a frame needs more, the triangle pass rasterizes the overflow itself
-// (slower, same result).
+// The large triangles' buffers grow with the image, not the triangle count (a large triangle
+// covers many pixels, so few fit on screen at once): room for one set-up record (80 bytes) per
+// LARGE_SETUP_PIXELS pixels and one bin entry (8 bytes) per LARGE_ENTRY_PIXELS pixels, with the
+// minimums below. When a frame needs more, the triangle pass rasterizes the overflow itself with
+// atomics (slower, same result).
 PHONGVK_CONST uint LARGE_SETUP_PIXELS = 512;
 PHONGVK_CONST uint LARGE_SETUPS_MIN = 256;
 PHONGVK_CONST uint LARGE_ENTRY_PIXELS = 64;
 PHONGVK_CONST uint LARGE_ENTRIES_MIN = 4096;
-PHONGVK_CONST uint LARGE_ENTRY_SKIP = 0xFFFFFFFFu;  // an entry's slot when it is to be skipped
+PHONGVK_CONST uint LIST_END = 0xFFFFFFFFu;  // the end of a bin's list of large triangles
+// Bin flags (bindings.glsl binData): bit 0, listed for resolve; bit BIN_KEYS_SHIFT + t, some key of
+// the bin's tile t (row-major, BIN_TILES x BIN_TILES) was written by atomicMin.
+PHONGVK_CONST uint BIN_LISTED = 1;
+PHONGVK_CONST uint BIN_KEYS_SHIFT = 1;
 // Dispatches are capped at the smallest maxComputeWorkGroupCount[0] Vulkan allows; the shaders
 // loop (grid-stride) when there is more work than that many groups. On a CPU device (lavapipe)
 // every workgroup costs about 0.6 us of scheduling however little it does, so there the cap is
@@ -71,6 +76,8 @@ PHONGVK_CONST uint SPEC_LIGHT_COUNT = 0;
 PHONGVK_CONST uint SPEC_SPECULAR = 1;
 PHONGVK_CONST uint SPEC_CONSTANT_ATTENUATION = 2;
 PHONGVK_CONST uint SPEC_INTERPOLATION = 0;
+// resolve: workgroup rows per 8x8 tile (local_size_y): 1 on CPU devices, TILE_SIZE on GPUs.
+PHONGVK_CONST uint SPEC_RESOLVE_LANE_ROWS = 1;
 
 // Interpolation modes (FrameData.interpolation).
 PHONGVK_CONST uint INTERP_PERSPECTIVE = 0;
@@ -89,9 +96,9 @@ PHONGVK_CONST uint BINDING_LIGHTS = 5;       // LightData[]
 PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex[]
 PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
 PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
-PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (triangle, chunk) entries
-PHONGVK_CONST uint BINDING_TILES = 10;       // TileList header, a flag per tile, the touched tiles' ids
-PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // TriangleSetup (raster.h) of each large triangle
+PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (set-up slot, next) bin entries
+PHONGVK_CONST uint BINDING_BINS = 10;        // BinList header, flags and list heads per bin, touched bins
+PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeTriangle (raster.h) of each large triangle
 PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles that need clipping
 
 // ---- Buffer structs ----
@@ -154,23 +161,23 @@ struct FrameData {
   uint interpolation;
   uint triangleCount;
   uint vertexCount;
-  uint largeCapacity;  // entries the large list can hold
-  uint tilesX;         // tiles per row: ceil(width / TILE_SIZE)
+  uint largeCapacity;  // bin entries the large list can hold
+  uint binsX;          // bins per row: ceil(width / BIN_SIZE)
   uint largeSetupCapacity;  // set-up records the large pass's buffer can hold
   vec3 eye;            // eye - lighting origin, for the view vector
   uint shadeColors;    // 0: colours from the previous frame are still right, only transform
   uint groupCap;       // most workgroups a pass launches; the passes grid-stride beyond it
-  uint tileCount;      // tilesX * tiles down
-  uint pad1;
+  uint binCount;       // binsX * bins down
+  uint keepKeys;       // 1: resolve leaves each pixel's final key in the key buffer (for diffs)
   uint pad2;
 };
 
-// Header of the large-triangle list; (set-up slot, row chunk) entries follow it in the buffer.
-// Header of the touched-tile list. The tile buffer holds this header, then one flag per tile
-// (1 once a triangle touched it this frame), then the ids of the touched tiles in the order
-// they were first touched; resolve is an indirect dispatch over that list.
-struct TileList {
-  uint count;        // tiles touched
+// Header of the touched-bin list. The bin buffer holds this header, then per bin its flags
+// (BIN_LISTED, BIN_KEYS), then per bin the first entry of its large-triangle list (LIST_END when
+// empty), then the touched bins as x | y << 16 in the order they were first touched; resolve is an
+// indirect dispatch over those. The host resets flags and heads before each frame.
+struct BinList {
+  uint count;        // bins touched
   uint groupsX;      // indirect dispatch (min(count, frame.groupCap), 1, 1)
   uint groupsY;
   uint groupsZ;
@@ -184,15 +191,13 @@ struct IdList {
   uint groupsZ;
 };
 
+// Header of the large triangles' bin entries: uvec2 (set-up slot, next entry of the same bin)
+// follow it in the buffer, each bin's list threaded through them from its head.
 struct LargeList {
-  uint count;        // entries reserved (may exceed the capacity; those were drawn in place)
-  uint groupsX;      // indirect dispatch (min(entries, MAX_DISPATCH_GROUPS), 1, 1)
-  uint groupsY;
-  uint groupsZ;
+  uint count;        // entries reserved (may exceed the capacity; those triangles were drawn in place)
   uint setups;       // set-up slots reserved (likewise)
   uint pad0;
   uint pad1;
-  uint pad2;
 };
 
 #ifdef __cplusplus
@@ -207,7 +212,7 @@ static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPla
 static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
 static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
 static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 160);
-static_assert(sizeof(LargeList) == 32 && sizeof(TileList) == 16 && sizeof(IdList) == 16);
+static_assert(sizeof(LargeList) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 16);
 }  // namespace phongvk::gpu
 #endif
 

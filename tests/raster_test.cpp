@@ -319,5 +319,49 @@ TEST(Raster, ThirtyTwoBitSpansOfSmallTrianglesEqualTheSixtyFourBitOnes) {
   EXPECT_GT(rows, 20000);
 }
 
+TEST(Raster, BlockClassificationAndSteppedEdgesAgreeWithCovers) {
+  // Resolve rasterizes large triangles a block at a time (LargeTriangle): a block called inside
+  // must have every pixel covered, one called outside none, and the edge functions stepped from the
+  // block's corner must decide each pixel exactly as covers() does. Vertices reach the guard band
+  // (2^27 subpixels), where the edge functions need all 64 bits.
+  std::mt19937 rng(17);
+  std::uniform_int_distribution<int> near(-200 * 256, 1200 * 256);
+  std::uniform_int_distribution<int> far(-(1 << 27), 1 << 27);
+  std::uniform_int_distribution<int> blockAt(0, 1000);
+  const uint width = 1024, height = 1024;
+  int counts[3] = {0, 0, 0};
+  for (int trial = 0; trial < 4000; ++trial) {
+    i64vec2 v[3];
+    for (int k = 0; k < 3; ++k) v[k] = trial % 4 == k ? i64vec2(far(rng), far(rng)) : i64vec2(near(rng), near(rng));
+    EdgeSetup s;
+    if (!setupEdges(v[0], v[1], v[2], trial % 2 == 0, width, height, s)) continue;
+    TriangleSetup t{};
+    const LargeTriangle large = largeTriangle(t, s);
+    for (int b = 0; b < 8; ++b) {
+      const int size = b % 2 ? int(TILE_SIZE) : int(BIN_SIZE);
+      // Half the blocks inside the triangle's box, half anywhere in the image.
+      const ivec2 origin = b < 4 ? ivec2(std::uniform_int_distribution<int>(s.bbox.x, s.bbox.z)(rng),
+                                          std::uniform_int_distribution<int>(s.bbox.y, s.bbox.w)(rng))
+                                  : ivec2(blockAt(rng), blockAt(rng));
+      const BlockEdges e = blockEdges(large, origin);
+      const int block = classifyBlock(large, e, origin, size);
+      ++counts[block];
+      for (int j = 0; j < size; ++j) {
+        for (int i = 0; i < size; ++i) {
+          const bool covered = covers(s, pixelCentre(origin.x + i, origin.y + j));
+          ASSERT_EQ(coversInBlock(large, e, i, j), covered) << "trial " << trial << " pixel " << i << "," << j;
+          const bool inImage = origin.x + i < int(width) && origin.y + j < int(height);
+          ASSERT_FALSE(block == BLOCK_INSIDE && !covered) << "trial " << trial;
+          ASSERT_FALSE(block == BLOCK_OUTSIDE && inImage && covered) << "trial " << trial;
+        }
+      }
+    }
+  }
+  // Every kind of block occurs often, so none of the assertions above is vacuous.
+  EXPECT_GT(counts[BLOCK_OUTSIDE], 1000);
+  EXPECT_GT(counts[BLOCK_PARTIAL], 1000);
+  EXPECT_GT(counts[BLOCK_INSIDE], 1000);
+}
+
 }  // namespace
 }  // namespace phongvk
