@@ -4,7 +4,8 @@
 
 #include "shaders/clip_triangles.spv.h"
 #include "shaders/raster_triangles.spv.h"
-#include "shaders/resolve.spv.h"
+#include "shaders/resolve_large.spv.h"
+#include "shaders/resolve_small.spv.h"
 #include "shaders/shade_vertices.spv.h"
 #include "shaders/raster.h"
 #include "shaders/shared.h"
@@ -65,8 +66,8 @@ void createAndUpload(Buffer& buffer, const VulkanContext& context, const std::ve
 GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout)
     : context_(context) {
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const bool columns = layout == ResolveLayout::ColumnPerLane || (layout == ResolveLayout::Auto && cpu);
-  resolveLaneRows_ = columns ? 1u : TILE_SIZE;
+  const bool one = layout == ResolveLayout::OneTilePerGroup || (layout == ResolveLayout::Auto && cpu);
+  resolveTiles_ = one ? 1u : 8u;
   try {
     current_[RASTER] = pipeline(RASTER, {});  // its set layout serves every pass (updateDescriptors)
     createDescriptorArena(arena_, context_, 1);
@@ -102,7 +103,8 @@ constexpr ShaderCode SHADERS[] = {
     {spirv_shade_vertices, sizeof(spirv_shade_vertices)},
     {spirv_raster_triangles, sizeof(spirv_raster_triangles)},
     {spirv_clip_triangles, sizeof(spirv_clip_triangles)},
-    {spirv_resolve, sizeof(spirv_resolve)},
+    {spirv_resolve_small, sizeof(spirv_resolve_small)},
+    {spirv_resolve_large, sizeof(spirv_resolve_large)},
 };
 
 // The specialization constants a frame's shading asks for (shared.h SPEC_*).
@@ -132,8 +134,9 @@ void GpuRenderer::selectPipelines(const FrameInputs& in) {
   current_[SHADE] = pipeline(SHADE, shadeSpecs(in));
   current_[RASTER] = pipeline(RASTER, {});
   current_[CLIP] = pipeline(CLIP, {});
-  current_[RESOLVE] = pipeline(RESOLVE, {{SPEC_INTERPOLATION, in.frame.interpolation},
-                                         {SPEC_RESOLVE_LANE_ROWS, resolveLaneRows_}});
+  current_[RESOLVE_SMALL] = pipeline(RESOLVE_SMALL, {{SPEC_INTERPOLATION, in.frame.interpolation}});
+  current_[RESOLVE_LARGE] = pipeline(RESOLVE_LARGE, {{SPEC_INTERPOLATION, in.frame.interpolation},
+                                                     {SPEC_RESOLVE_TILES, resolveTiles_}});
 }
 
 void GpuRenderer::uploadScene(const SceneData& data) {
@@ -296,9 +299,11 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, groupsX));
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 2);
-  bind(RESOLVE);
-  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
-  computeBarrier(cmd);  // lavapipe writes a bottom-of-pipe timestamp before the dispatch ends otherwise
+  for (Pass pass : {RESOLVE_LARGE, RESOLVE_SMALL}) {  // small reads the keys large left
+    bind(pass);
+    vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+    computeBarrier(cmd);
+  }  // lavapipe writes a bottom-of-pipe timestamp before the dispatch ends otherwise
   writeTimestamp(cmd, timestamps_, 3);
   if (withKeys) {  // resolve left the final keys (frame.keepKeys): copy them, then clear for the next frame
     memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,

@@ -23,10 +23,10 @@ struct PassTimes {
   double total = 0;
 };
 
-// How resolve spreads an 8x8 tile over its lanes (resolve.comp): a column of 8 pixels per lane,
-// so a CPU device's 8-wide SIMD batch is one tile and per-tile work runs once; or a lane per
-// pixel, for GPUs. Auto picks by device type; tests force either on any device.
-enum class ResolveLayout { Auto, ColumnPerLane, PixelPerLane };
+// How many 8x8 tiles a resolve workgroup takes at once (resolve.comp; 8 lanes per tile): one, so
+// a CPU device's 8-wide SIMD batch is a whole workgroup and per-tile work runs once per tile; or
+// eight, so a GPU's warps are full. Auto picks by device type; tests force either on any device.
+enum class ResolveLayout { Auto, OneTilePerGroup, EightTilesPerGroup };
 
 class GpuRenderer {
  public:
@@ -46,7 +46,7 @@ class GpuRenderer {
   uint64_t framesShaded() const { return framesShaded_; }
 
  private:
-  enum Pass { SHADE, RASTER, CLIP, RESOLVE, PASS_COUNT };
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 
@@ -62,7 +62,7 @@ class GpuRenderer {
   void readTimes();
 
   const VulkanContext& context_;
-  uint32_t resolveLaneRows_ = 1;  // SPEC_RESOLVE_LANE_ROWS
+  uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
   std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
   ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
   DescriptorArena arena_;

@@ -76,8 +76,8 @@ PHONGVK_CONST uint SPEC_LIGHT_COUNT = 0;
 PHONGVK_CONST uint SPEC_SPECULAR = 1;
 PHONGVK_CONST uint SPEC_CONSTANT_ATTENUATION = 2;
 PHONGVK_CONST uint SPEC_INTERPOLATION = 0;
-// resolve: workgroup rows per 8x8 tile (local_size_y): 1 on CPU devices, TILE_SIZE on GPUs.
-PHONGVK_CONST uint SPEC_RESOLVE_LANE_ROWS = 1;
+// resolve: tiles a workgroup takes at once (local_size_y; 8 lanes each): 1 on CPU devices, 8 on GPUs.
+PHONGVK_CONST uint SPEC_RESOLVE_TILES = 1;
 
 // Interpolation modes (FrameData.interpolation).
 PHONGVK_CONST uint INTERP_PERSPECTIVE = 0;

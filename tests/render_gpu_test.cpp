@@ -52,7 +52,7 @@ TEST_P(SceneDiff, GpuMatchesReference) {
   const RenderOutput second = gpu->render(in, true);
   // The resolve layout this device does not use by default must give the same bytes.
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  gpu.emplace(context_, data, cpu ? ResolveLayout::PixelPerLane : ResolveLayout::ColumnPerLane);
+  gpu.emplace(context_, data, cpu ? ResolveLayout::EightTilesPerGroup : ResolveLayout::OneTilePerGroup);
   const RenderOutput otherLayout = gpu->render(in, true);
   gpu.reset();
 

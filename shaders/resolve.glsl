@@ -1,0 +1,35 @@
+// resolve.glsl — what the two resolve passes share (after bindings.glsl): both walk the touched
+// bins (bindings.glsl), one workgroup per bin at a time (grid-stride): resolve_large the bins with
+// large triangles, then resolve_small the tiles small triangles touched.
+
+layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
+
+// A touched bin: its first pixel, its flags (shared.h BIN_*) and the head of its large-triangle list.
+struct Bin {
+  uvec2 origin;
+  uint flags;
+  uint head;
+};
+
+Bin touchedBin(uint k) {
+  uint packed = binData[2u * frame.binCount + k];
+  uvec2 bin = uvec2(packed & 0xFFFFu, packed >> 16);
+  uint index = bin.y * frame.binsX + bin.x;
+  return Bin(bin * BIN_SIZE, binData[index], binData[frame.binCount + index]);
+}
+
+// The first pixel of the bin's tile t (row-major), and whether small triangles wrote keys in it.
+uvec2 tileOrigin(Bin b, uint t) { return b.origin + uvec2(t % BIN_TILES, t / BIN_TILES) * TILE_SIZE; }
+
+bool tileKeysWritten(Bin b, uint t) { return ((b.flags >> (BIN_KEYS_SHIFT + t)) & 1u) != 0u; }
+
+bool inImage(int x, int y) { return x < int(frame.width) && y < int(frame.height); }
+
+uint pixelIndex(int x, int y) { return uint(y) * frame.width + uint(x); }
+
+// Triangle `id`'s Gouraud constants (raster.h).
+GouraudTriangle loadGouraud(uint id) {
+  ShadedVertex a, b, c;
+  loadTriangle(id, a, b, c);
+  return gouraudTriangle(a, b, c);
+}

@@ -1,0 +1,91 @@
+// First resolve pass: the touched bins with large triangles (resolve.glsl). A workgroup takes one
+// 32x32 bin at a time, 8x8 tile by tile; each lane owns the 8 pixels of one column of a tile,
+// 8 lanes a tile (one SIMD batch on a CPU device, so everything per tile is uniform there; a GPU
+// workgroup takes several tiles at once, SPEC_RESOLVE_TILES). Per pixel: its key from the key
+// buffer (where small triangles went by atomicMin, only in tiles they touched), then the bin's
+// large triangles rasterized against the whole tile at once, the smallest key kept in registers.
+// Where a large triangle wins, its Gouraud colour -> packed RGBA8, and the key is reset (or left
+// final, for diffs); where a small one wins, the key stays for resolve_small.
+//
+// The 8 rows are spelled out by the FOR_ROWS macro instead of indexing per-lane arrays, which
+// lavapipe may keep in memory.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_control_flow_attributes : require
+#include "shared.h"
+#include "raster.h"
+#include "bindings.glsl"
+#include "resolve.glsl"
+
+layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
+
+#define FOR_ROWS(DO) DO(0) DO(1) DO(2) DO(3) DO(4) DO(5) DO(6) DO(7)
+
+// Per row r: the smallest key so far, the bin entry whose large triangle holds it (LIST_END if
+// none) and, if one does, the pixel's colour.
+#define DECLARE_ROW(r)              \
+  uint64_t best##r = KEY_CLEAR;     \
+  uint winner##r = LIST_END;        \
+  uint color##r = 0u;               \
+  if (keysWritten && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
+
+// Row r against large triangle t (bin entry e), the tile already classified as `block`.
+#define RASTER_ROW(r)                                                                              \
+  if (block == BLOCK_INSIDE || coversInBlock(t, edges, column, r)) {                               \
+    uint64_t key = planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, origin.y + r, frame);          \
+    if (key < best##r) {                                                                           \
+      best##r = key;                                                                               \
+      winner##r = e;                                                                               \
+    }                                                                                              \
+  }
+
+// Row r's colour if large triangle g (bin entry e) won it.
+#define SHADE_LARGE_ROW(r) \
+  if (winner##r == e) color##r = shadePixel(g, x, origin.y + r, frame, INTERPOLATION);
+
+// Row r, if a large triangle won it: its colour, and its key reset (or kept, for diffs). A pixel
+// won by a small triangle keeps its key for resolve_small; an uncovered one keeps the background.
+#define FINISH_ROW(r)                                                       \
+  if (winner##r != LIST_END && inImage(x, origin.y + r)) {                  \
+    uint i = pixelIndex(x, origin.y + r);                                   \
+    if (frame.keepKeys != 0u) keys[i] = best##r;                            \
+    else if (keysWritten) keys[i] = KEY_CLEAR;                              \
+    colors[i] = color##r;                                                   \
+  }
+
+// This lane's column of the tile at `origin` (pixels) in a bin whose large-triangle list starts
+// at `head`; `keysWritten` when small triangles wrote keys in the tile. A tile no large triangle
+// touches is left to resolve_small.
+void resolveTile(ivec2 origin, uint head, bool keysWritten) {
+  int column = int(gl_LocalInvocationID.x);
+  int x = origin.x + column;
+  FOR_ROWS(DECLARE_ROW)
+  bool touched = false;
+  for (uint e = head; e != LIST_END; e = largeEntries[e].y) {
+    LargeTriangle t = largeSetups[largeEntries[e].x];
+    BlockEdges edges = blockEdges(t, origin);
+    int block = classifyBlock(t, edges, origin, int(TILE_SIZE));  // the same for the whole tile
+    if (block == BLOCK_OUTSIDE) continue;
+    touched = true;
+    FOR_ROWS(RASTER_ROW)
+  }
+  if (!touched) return;
+  // Pixels won by a large triangle: its vertices are loaded and set up once for the tile.
+  for (uint e = head; e != LIST_END; e = largeEntries[e].y) {
+    GouraudTriangle g = loadGouraud(largeSetups[largeEntries[e].x].triangle);
+    FOR_ROWS(SHADE_LARGE_ROW)
+  }
+  FOR_ROWS(FINISH_ROW)
+}
+
+void main() {
+  for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
+    Bin b = touchedBin(k);
+    if (b.head == LIST_END) continue;  // resolve_small's
+    [[dont_unroll]] for (uint t = gl_LocalInvocationID.y; t < BIN_TILES * BIN_TILES; t += gl_WorkGroupSize.y) {
+      uvec2 origin = tileOrigin(b, t);
+      if (origin.x < frame.width && origin.y < frame.height) resolveTile(ivec2(origin), b.head, tileKeysWritten(b, t));
+    }
+  }
+}

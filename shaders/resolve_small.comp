@@ -1,0 +1,36 @@
+// Second resolve pass (resolve.glsl): the tiles small triangles touched, in every bin, a lane per
+// pixel. Per pixel whose key is still set (resolve_large took the pixels large triangles won):
+// the winning key's triangle -> Gouraud colour -> packed RGBA8, and the key reset for the next
+// frame (or kept, for diffs). Pixels nothing covered keep the background the host filled in.
+// Kept apart from resolve_large.comp because on lavapipe the mere presence of that pass's code
+// makes this simple path several times slower.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_control_flow_attributes : require
+#include "shared.h"
+#include "raster.h"
+#include "bindings.glsl"
+#include "resolve.glsl"
+
+layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
+
+void resolvePixelOf(uvec2 origin) {
+  int x = int(origin.x + gl_LocalInvocationID.x);
+  int y = int(origin.y + gl_LocalInvocationID.y);
+  if (!inImage(x, y)) return;
+  uint i = pixelIndex(x, y);
+  uint64_t key = keys[i];
+  if (key == KEY_CLEAR) return;
+  if (frame.keepKeys == 0u) keys[i] = KEY_CLEAR;
+  colors[i] = shadePixel(loadGouraud(uint(key & 0xFFFFFFFFul)), x, y, frame, INTERPOLATION);
+}
+
+void main() {
+  for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
+    Bin b = touchedBin(k);
+    [[dont_unroll]] for (uint t = 0u; t < BIN_TILES * BIN_TILES; ++t) {
+      if (tileKeysWritten(b, t)) resolvePixelOf(tileOrigin(b, t));
+    }
+  }
+}
