@@ -561,6 +561,35 @@ FN bool coversInBlock(LargeTriangle t, BlockEdges e, int i, int j) {
          edgeStep(t.v0, t.v1, e.e2, i, j) >= int64_t(0);
 }
 
+// The edge values walking down column i of a block: at the current row (starting at row 0), and
+// what one row down adds. Integer steps, so each row's values equal coversInBlock's exactly.
+struct ColumnEdges {
+  BlockEdges at;
+  BlockEdges down;
+};
+
+FN ColumnEdges columnEdges(LargeTriangle t, BlockEdges e, int i) {
+  ColumnEdges c;
+  c.at.e0 = edgeStep(t.v1, t.v2, e.e0, i, 0);
+  c.at.e1 = edgeStep(t.v2, t.v0, e.e1, i, 0);
+  c.at.e2 = edgeStep(t.v0, t.v1, e.e2, i, 0);
+  c.down.e0 = edgeStep(t.v1, t.v2, int64_t(0), 0, 1);
+  c.down.e1 = edgeStep(t.v2, t.v0, int64_t(0), 0, 1);
+  c.down.e2 = edgeStep(t.v0, t.v1, int64_t(0), 0, 1);
+  return c;
+}
+
+FN bool columnCovers(ColumnEdges c) {
+  return c.at.e0 >= int64_t(0) && c.at.e1 >= int64_t(0) && c.at.e2 >= int64_t(0);
+}
+
+FN ColumnEdges nextRow(ColumnEdges c) {
+  c.at.e0 += c.down.e0;
+  c.at.e1 += c.down.e1;
+  c.at.e2 += c.down.e2;
+  return c;
+}
+
 // The key the triangle offers pixel (x, y), or KEY_CLEAR if it does not cover it.
 FN uint64_t fragmentKey(TriangleSetup t, EdgeSetup s, int x, int y, FrameData frame) {
   if (!covers(s, pixelCentre(x, y))) return KEY_CLEAR;

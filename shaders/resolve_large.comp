@@ -30,15 +30,21 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
   uint color##r = 0u;               \
   if (keysWritten && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
 
-// Row r against large triangle t (bin entry e), the tile already classified as `block`.
+// Row r against large triangle t (bin entry e), which covers the pixel; then the next row.
 #define RASTER_ROW(r)                                                                              \
-  if (block == BLOCK_INSIDE || coversInBlock(t, edges, column, r)) {                               \
+  {                                                                                                \
     uint64_t key = planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, origin.y + r, frame);          \
     if (key < best##r) {                                                                           \
       best##r = key;                                                                               \
       winner##r = e;                                                                               \
     }                                                                                              \
   }
+
+// RASTER_ROW where the tile is only partly covered: the pixel's edge values decide, stepped down
+// the lane's column row by row.
+#define RASTER_PARTIAL_ROW(r)               \
+  if (columnCovers(c)) RASTER_ROW(r)        \
+  c = nextRow(c);
 
 // Row r's colour if large triangle g (bin entry e) won it.
 #define SHADE_LARGE_ROW(r) \
@@ -68,7 +74,12 @@ void resolveTile(ivec2 origin, uint head, bool keysWritten) {
     int block = classifyBlock(t, edges, origin, int(TILE_SIZE));  // the same for the whole tile
     if (block == BLOCK_OUTSIDE) continue;
     touched = true;
-    FOR_ROWS(RASTER_ROW)
+    if (block == BLOCK_INSIDE) {
+      FOR_ROWS(RASTER_ROW)
+    } else {
+      ColumnEdges c = columnEdges(t, edges, column);
+      FOR_ROWS(RASTER_PARTIAL_ROW)
+    }
   }
   if (!touched) return;
   // Pixels won by a large triangle: its vertices are loaded and set up once for the tile.
