@@ -2,6 +2,7 @@
 
 #include "mesh.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace phongvk {
@@ -19,6 +20,13 @@ gpu::MaterialData toGpu(const Material& m) {
   return g;
 }
 
+// Room for `more` elements, growing geometrically (so many objects still copy each element a
+// bounded number of times) but never by less than what is needed (one big object: one allocation).
+template <typename T>
+void growFor(std::vector<T>& v, size_t more) {
+  if (v.size() + more > v.capacity()) v.reserve(std::max(v.size() + more, 2 * v.capacity()));
+}
+
 void appendObject(SceneData& data, const Object& object, uint32_t objectIndex) {
   const ObjectMesh built = buildObjectMesh(object);
   const Mesh& mesh = built.mesh;
@@ -26,6 +34,8 @@ void appendObject(SceneData& data, const Object& object, uint32_t objectIndex) {
   if (base + mesh.positions.size() > std::numeric_limits<uint32_t>::max()) {
     throw SceneError(object.jsonPath + ": the scene has more than 2^32 vertices");
   }
+  growFor(data.vertices, mesh.positions.size());
+  growFor(data.triangles, mesh.triangles.size());
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     data.vertices.push_back({mesh.positions[i], objectIndex, mesh.normals[i], 0});
   }
