@@ -27,12 +27,12 @@ constexpr VkBufferUsageFlags STORAGE = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 // Every pass sees the same descriptor set (shaders/bindings.glsl).
 constexpr Binding BINDINGS[] = {
     {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},    {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    {BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER}, {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_SHADED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},    {BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    {BINDING_CLIP_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_CLIP_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_SHADED_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
 };
 
 // The most workgroups one pass launches on this device (shared.h: CPU_DISPATCH_GROUPS).
@@ -52,12 +52,22 @@ void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* wha
   }
 }
 
+// Throws when a texel view would exceed the device's largest texel buffer.
+void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* what) {
+  const VkDeviceSize limit = context.properties.limits.maxTexelBufferElements;
+  if (texels > limit) {
+    throw std::runtime_error(std::string("scene too large for ") + context.report.name + ": " + what + " need " +
+                             std::to_string(texels) + " texels, more than maxTexelBufferElements (" +
+                             std::to_string(limit) + ")");
+  }
+}
+
 template <typename T>
 void createAndUpload(Buffer& buffer, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind,
-                     const char* what) {
+                     const char* what, VkBufferUsageFlags usage = STORAGE) {
   const VkDeviceSize bytes = data.size() * sizeof(T);
   checkFits(context, bytes, what);
-  createBuffer(buffer, context, bytes, STORAGE, kind);
+  createBuffer(buffer, context, bytes, usage, kind);
   if (bytes) uploadToBuffer(context, buffer, data.data(), bytes);
 }
 
@@ -86,6 +96,8 @@ void GpuRenderer::release() {
                     &keys_, &bins_, &colors_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
+  destroyTexelView(trianglesView_, context_);
+  destroyTexelView(shadedView_, context_);
   destroyTimestampPool(timestamps_, context_);
   destroyDescriptorArena(arena_, context_);
   for (auto& [key, p] : pipelines_) destroyComputePipeline(p, context_);
@@ -143,7 +155,10 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   vertexCount_ = static_cast<uint32_t>(data.vertices.size());
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
   createAndUpload(vertices_, context_, data.vertices, MemoryKind::DeviceLocal, "the vertices");
-  createAndUpload(triangles_, context_, data.triangles, MemoryKind::DeviceLocal, "the triangles");
+  createAndUpload(triangles_, context_, data.triangles, MemoryKind::DeviceLocal, "the triangles",
+                  VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+  checkTexels(context_, triangleCount_, "the triangles");
+  trianglesView_ = createTexelView(context_, triangles_, VK_FORMAT_R32G32B32A32_UINT, sizeof(glm::uvec4));
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
   createAndUpload(objects_, context_, data.objects, MemoryKind::HostVisible, "the objects");
   createAndUpload(materials_, context_, data.materials, MemoryKind::HostVisible, "the materials");
@@ -154,7 +169,9 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   createBuffer(frame_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(ShadedVertex);
   checkFits(context_, shadedBytes, "the shaded vertices");
-  createBuffer(shaded_, context_, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  checkTexels(context_, 2 * VkDeviceSize(vertexCount_), "the shaded vertices");
+  createBuffer(shaded_, context_, shadedBytes, STORAGE | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, MemoryKind::DeviceLocal);
+  shadedView_ = createTexelView(context_, shaded_, VK_FORMAT_R32G32B32A32_SFLOAT, sizeof(glm::vec4));
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
   checkFits(context_, clipBytes, "the clip list");
   createBuffer(clipList_, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
@@ -204,7 +221,7 @@ void GpuRenderer::updateDescriptors() {
   const BufferDescriptor descriptors[] = {
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame_.buffer},
       {BINDING_VERTICES, storage, vertices_.buffer},
-      {BINDING_TRIANGLES, storage, triangles_.buffer},
+      {BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, triangles_.buffer, 0, VK_WHOLE_SIZE, trianglesView_},
       {BINDING_OBJECTS, storage, objects_.buffer},
       {BINDING_MATERIALS, storage, materials_.buffer},
       {BINDING_LIGHTS, storage, lights_.buffer},
@@ -215,6 +232,7 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_BINS, storage, bins_.buffer},
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
       {BINDING_CLIP_LIST, storage, clipList_.buffer},
+      {BINDING_SHADED_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, shaded_.buffer, 0, VK_WHOLE_SIZE, shadedView_},
   };
   // Identically defined set layouts are compatible: one set serves every pass.
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);

@@ -72,6 +72,8 @@ class GpuRenderer {
 
   Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, clipList_, large_, largeSetups_;
   Buffer keys_, bins_, colors_, keyReadback_;
+  VkBufferView trianglesView_ = VK_NULL_HANDLE;  // triangles_ and shaded_ as texels (bindings.glsl)
+  VkBufferView shadedView_ = VK_NULL_HANDLE;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
   uint32_t largeCapacity_ = 0;

@@ -112,6 +112,7 @@ void createDescriptorArena(DescriptorArena& result, const VulkanContext& context
   VkDescriptorPoolSize sizes[] = {
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, maxSets * maxBuffersPerSet},
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, maxSets * maxBuffersPerSet},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, maxSets * maxBuffersPerSet},
   };
   VkDescriptorPoolCreateInfo info = { VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO };
   info.maxSets = maxSets;
@@ -146,7 +147,11 @@ VkDescriptorSet allocateDescriptorSet(const VulkanContext& context, const Descri
     write.dstBinding = descriptors[i].binding;
     write.descriptorCount = 1;
     write.descriptorType = descriptors[i].type;
-    write.pBufferInfo = &bufferInfos[i];
+    if (descriptors[i].type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) {
+      write.pTexelBufferView = &descriptors[i].view;
+    } else {
+      write.pBufferInfo = &bufferInfos[i];
+    }
     writes.push_back(write);
   }
   vkUpdateDescriptorSets(context.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);

@@ -48,18 +48,20 @@ struct DescriptorArena {
   VkDescriptorPool pool = VK_NULL_HANDLE;
 };
 
-// Room for `maxSets` sets with up to `maxBuffersPerSet` storage and as many uniform buffers each.
+// Room for `maxSets` sets with up to `maxBuffersPerSet` storage, uniform and texel buffers each.
 void createDescriptorArena(DescriptorArena& result, const VulkanContext& context, uint32_t maxSets,
                            uint32_t maxBuffersPerSet = 16);
 void destroyDescriptorArena(DescriptorArena& arena, const VulkanContext& context);
 
-// One buffer descriptor to write; range VK_WHOLE_SIZE means from offset to the buffer's end.
+// One buffer descriptor to write; range VK_WHOLE_SIZE means from offset to the buffer's end. A
+// uniform texel buffer descriptor is written from `view` instead (resources.h createTexelView).
 struct BufferDescriptor {
   uint32_t binding;
   VkDescriptorType type;
   VkBuffer buffer;
   VkDeviceSize offset = 0;
   VkDeviceSize range = VK_WHOLE_SIZE;
+  VkBufferView view = VK_NULL_HANDLE;
 };
 
 // Allocates a set of `setLayout` from the arena and writes `descriptors` into it.

@@ -5,6 +5,7 @@
 #include "host/vk_check.h"
 
 #include <cstring>
+#include <cassert>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -102,6 +103,23 @@ void createBuffer(Buffer& result, const VulkanContext& context, VkDeviceSize siz
     destroyBuffer(result, context);
     throw;
   }
+}
+
+VkBufferView createTexelView(const VulkanContext& context, const Buffer& buffer, VkFormat format,
+                             VkDeviceSize texelBytes) {
+  assert(texelBytes > 0 && buffer.size % texelBytes == 0);
+  VkBufferViewCreateInfo info = {VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  info.buffer = buffer.buffer;
+  info.format = format;
+  info.range = VK_WHOLE_SIZE;
+  VkBufferView view = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateBufferView(context.device, &info, nullptr, &view));
+  return view;
+}
+
+void destroyTexelView(VkBufferView& view, const VulkanContext& context) {
+  if (view) vkDestroyBufferView(context.device, view, nullptr);
+  view = VK_NULL_HANDLE;
 }
 
 void destroyBuffer(Buffer& buffer, const VulkanContext& context) {

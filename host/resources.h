@@ -41,6 +41,15 @@ void uploadToBuffer(const VulkanContext& context, Buffer& dst, const void* data,
 // finished (submitAndWait, whose closing barrier makes the writes visible to the host).
 void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, size_t bytes);
 
+// A view of `buffer` as texels of `format` (`texelBytes` each, which must divide the buffer's
+// size), for a uniform texel buffer descriptor. Shaders read it with texelFetch, which SIMD CPU
+// devices (lavapipe) gather several times faster than storage-buffer loads.
+VkBufferView createTexelView(const VulkanContext& context, const Buffer& buffer, VkFormat format,
+                             VkDeviceSize texelBytes);
+
+// Safe on VK_NULL_HANDLE; leaves `view` null.
+void destroyTexelView(VkBufferView& view, const VulkanContext& context);
+
 // Device memory the context's buffers hold now, and the most they ever held at once.
 VkDeviceSize deviceBytes(const VulkanContext& context);
 VkDeviceSize peakDeviceBytes(const VulkanContext& context);

@@ -2,7 +2,6 @@
 // Included by the .comp files after shared.h; a pass simply ignores the buffers it does not use.
 layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frame; };
 layout(std430, binding = BINDING_VERTICES) readonly buffer Vertices { VertexIn vertices[]; };
-layout(std430, binding = BINDING_TRIANGLES) readonly buffer Triangles { uvec4 triangles[]; };
 layout(std430, binding = BINDING_OBJECTS) readonly buffer Objects { ObjectData objects[]; };
 layout(std430, binding = BINDING_MATERIALS) readonly buffer Materials { MaterialData materials[]; };
 layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { LightData lights[]; };
@@ -17,19 +16,27 @@ layout(std430, binding = BINDING_BINS) buffer Bins { BinList binList; uint binDa
 layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { LargeTriangle largeSetups[]; };
 layout(std430, binding = BINDING_CLIP_LIST) buffer ClipList { IdList clipList; uint clipIds[]; };
 
+layout(binding = BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
+layout(binding = BINDING_SHADED_TEXELS) uniform samplerBuffer shadedTexels;
+
+// Shaded vertex v, read through the texel view (for passes after shade_vertices).
+ShadedVertex shadedVertex(uint v) {
+  return ShadedVertex(texelFetch(shadedTexels, int(2u * v)), texelFetch(shadedTexels, int(2u * v + 1u)));
+}
+
 // The three shaded vertices of triangle `id`.
 void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVertex c) {
-  uvec4 t = triangles[id];
-  a = shaded[t.x];
-  b = shaded[t.y];
-  c = shaded[t.z];
+  uvec4 t = texelFetch(triangleTexels, int(id));
+  a = shadedVertex(t.x);
+  b = shadedVertex(t.y);
+  c = shadedVertex(t.z);
 }
 
 // Triangle `id`'s homogeneous vertices and whether its back face is culled.
 void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullBack) {
-  uvec4 tri = triangles[id];
+  uvec4 tri = texelFetch(triangleTexels, int(id));
   cullBack = (objects[tri.w].flags & OBJECT_CULL_BACK) != 0u;
-  h0 = shaded[tri.x].hpos.xyz;
-  h1 = shaded[tri.y].hpos.xyz;
-  h2 = shaded[tri.z].hpos.xyz;
+  h0 = texelFetch(shadedTexels, int(2u * tri.x)).xyz;
+  h1 = texelFetch(shadedTexels, int(2u * tri.y)).xyz;
+  h2 = texelFetch(shadedTexels, int(2u * tri.z)).xyz;
 }

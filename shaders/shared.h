@@ -89,7 +89,7 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
 // ---- Descriptor bindings (one set) ----
 PHONGVK_CONST uint BINDING_FRAME = 0;        // FrameData (uniform)
 PHONGVK_CONST uint BINDING_VERTICES = 1;     // VertexIn[]
-PHONGVK_CONST uint BINDING_TRIANGLES = 2;    // uvec4[] (3 vertex indices, w = object index)
+PHONGVK_CONST uint BINDING_TRIANGLES = 2;    // RGBA32UI texels (3 vertex indices, w = object index)
 PHONGVK_CONST uint BINDING_OBJECTS = 3;      // ObjectData[]
 PHONGVK_CONST uint BINDING_MATERIALS = 4;    // MaterialData[]
 PHONGVK_CONST uint BINDING_LIGHTS = 5;       // LightData[]
@@ -100,6 +100,10 @@ PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (set-up
 PHONGVK_CONST uint BINDING_BINS = 10;        // BinList header, flags and list heads per bin, touched bins
 PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeTriangle (raster.h) of each large triangle
 PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles that need clipping
+// The shaded vertices again, as a uniform texel buffer (RGBA32F: hpos, then colour, per vertex)
+// for the passes that only read them. Triangles are a texel buffer too: texelFetch is gathered in
+// SIMD by CPU devices (lavapipe), where a storage-buffer load is a loop over the lanes.
+PHONGVK_CONST uint BINDING_SHADED_TEXELS = 13;
 
 // ---- Buffer structs ----
 // A mesh vertex in its object's local frame (position relative to the object origin).
