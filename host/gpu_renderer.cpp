@@ -26,9 +26,9 @@ constexpr VkBufferUsageFlags STORAGE = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 
 // Every pass sees the same descriptor set (shaders/bindings.glsl).
 constexpr Binding BINDINGS[] = {
-    {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},    {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    {BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER}, {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},         {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER}, {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER}, {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {BINDING_SHADED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},    {BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -62,13 +62,15 @@ void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* 
   }
 }
 
+// `data` (std430 structs of whole texels) in a new texel buffer, after checking the device's limits.
 template <typename T>
-void createAndUpload(Buffer& buffer, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind,
-                     const char* what, VkBufferUsageFlags usage = STORAGE) {
+void createTexelArray(TexelBuffer& texels, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind,
+                      const char* what) {
+  static_assert(sizeof(T) % TEXEL_BYTES == 0);
   const VkDeviceSize bytes = data.size() * sizeof(T);
   checkFits(context, bytes, what);
-  createBuffer(buffer, context, bytes, usage, kind);
-  if (bytes) uploadToBuffer(context, buffer, data.data(), bytes);
+  checkTexels(context, bytes / TEXEL_BYTES, what);
+  createTexelBuffer(texels, context, data.data(), bytes, 0, kind);
 }
 
 }  // namespace
@@ -92,12 +94,10 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, Re
 GpuRenderer::~GpuRenderer() { release(); }
 
 void GpuRenderer::release() {
-  for (Buffer* b : {&frame_, &vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &clipList_, &large_, &largeSetups_,
-                    &keys_, &bins_, &colors_, &keyReadback_}) {
+  for (Buffer* b : {&frame_, &clipList_, &large_, &largeSetups_, &keys_, &bins_, &colors_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
-  destroyTexelView(trianglesView_, context_);
-  destroyTexelView(shadedView_, context_);
+  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_}) destroyTexelBuffer(*t, context_);
   destroyTimestampPool(timestamps_, context_);
   destroyDescriptorArena(arena_, context_);
   for (auto& [key, p] : pipelines_) destroyComputePipeline(p, context_);
@@ -154,24 +154,20 @@ void GpuRenderer::selectPipelines(const FrameInputs& in) {
 void GpuRenderer::uploadScene(const SceneData& data) {
   vertexCount_ = static_cast<uint32_t>(data.vertices.size());
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
-  createAndUpload(vertices_, context_, data.vertices, MemoryKind::DeviceLocal, "the vertices");
-  createAndUpload(triangles_, context_, data.triangles, MemoryKind::DeviceLocal, "the triangles",
-                  VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-  checkTexels(context_, triangleCount_, "the triangles");
-  trianglesView_ = createTexelView(context_, triangles_, VK_FORMAT_R32G32B32A32_UINT, sizeof(glm::uvec4));
+  createTexelArray(vertices_, context_, data.vertices, MemoryKind::DeviceLocal, "the vertices");
+  createTexelArray(triangles_, context_, data.triangles, MemoryKind::DeviceLocal, "the triangles");
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
-  createAndUpload(objects_, context_, data.objects, MemoryKind::HostVisible, "the objects");
-  createAndUpload(materials_, context_, data.materials, MemoryKind::HostVisible, "the materials");
-  createAndUpload(lights_, context_, data.lights, MemoryKind::HostVisible, "the lights");
+  createTexelArray(objects_, context_, data.objects, MemoryKind::HostVisible, "the objects");
+  createTexelArray(materials_, context_, data.materials, MemoryKind::HostVisible, "the materials");
+  createTexelArray(lights_, context_, data.lights, MemoryKind::HostVisible, "the lights");
   lastObjects_ = data.objects;
   lastMaterials_ = data.materials;
   lastLights_ = data.lights;
   createBuffer(frame_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(ShadedVertex);
   checkFits(context_, shadedBytes, "the shaded vertices");
-  checkTexels(context_, 2 * VkDeviceSize(vertexCount_), "the shaded vertices");
-  createBuffer(shaded_, context_, shadedBytes, STORAGE | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, MemoryKind::DeviceLocal);
-  shadedView_ = createTexelView(context_, shaded_, VK_FORMAT_R32G32B32A32_SFLOAT, sizeof(glm::vec4));
+  checkTexels(context_, shadedBytes / TEXEL_BYTES, "the shaded vertices");
+  createTexelBuffer(shaded_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
   checkFits(context_, clipBytes, "the clip list");
   createBuffer(clipList_, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
@@ -220,19 +216,19 @@ void GpuRenderer::updateDescriptors() {
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const BufferDescriptor descriptors[] = {
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame_.buffer},
-      {BINDING_VERTICES, storage, vertices_.buffer},
-      {BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, triangles_.buffer, 0, VK_WHOLE_SIZE, trianglesView_},
-      {BINDING_OBJECTS, storage, objects_.buffer},
-      {BINDING_MATERIALS, storage, materials_.buffer},
-      {BINDING_LIGHTS, storage, lights_.buffer},
-      {BINDING_SHADED, storage, shaded_.buffer},
+      texelDescriptor(BINDING_VERTICES, vertices_),
+      texelDescriptor(BINDING_TRIANGLES, triangles_),
+      texelDescriptor(BINDING_OBJECTS, objects_),
+      texelDescriptor(BINDING_MATERIALS, materials_),
+      texelDescriptor(BINDING_LIGHTS, lights_),
+      {BINDING_SHADED, storage, shaded_.buffer.buffer},
       {BINDING_KEYS, storage, keys_.buffer},
       {BINDING_COLOR, storage, colors_.buffer},
       {BINDING_LARGE, storage, large_.buffer},
       {BINDING_BINS, storage, bins_.buffer},
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
       {BINDING_CLIP_LIST, storage, clipList_.buffer},
-      {BINDING_SHADED_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, shaded_.buffer, 0, VK_WHOLE_SIZE, shadedView_},
+      texelDescriptor(BINDING_SHADED_TEXELS, shaded_),
   };
   // Identically defined set layouts are compatible: one set serves every pass.
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
@@ -263,9 +259,9 @@ bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::ve
 // Sends only what changed since the last frame. Vertex colours are recomputed only when their
 // inputs changed: materials, lights, ambient, or the eye when some material is specular.
 void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
-  const bool materialsChanged = uploadIfChanged(context_, materials_, in.materials, lastMaterials_, "materials");
-  const bool lightsChanged = uploadIfChanged(context_, lights_, in.lights, lastLights_, "lights");
-  uploadIfChanged(context_, objects_, in.objects, lastObjects_, "objects");
+  const bool materialsChanged = uploadIfChanged(context_, materials_.buffer, in.materials, lastMaterials_, "materials");
+  const bool lightsChanged = uploadIfChanged(context_, lights_.buffer, in.lights, lastLights_, "lights");
+  uploadIfChanged(context_, objects_.buffer, in.objects, lastObjects_, "objects");
   const FrameData& f = in.frame;
   const bool eyeMoved = !framesSent_ || f.eye != lastFrame_.eye;
   const bool ambientChanged = !framesSent_ || f.ambient != lastFrame_.ambient;

@@ -70,10 +70,8 @@ class GpuRenderer {
   TimestampPool timestamps_;
   PassTimes times_;
 
-  Buffer frame_, vertices_, triangles_, objects_, materials_, lights_, shaded_, clipList_, large_, largeSetups_;
-  Buffer keys_, bins_, colors_, keyReadback_;
-  VkBufferView trianglesView_ = VK_NULL_HANDLE;  // triangles_ and shaded_ as texels (bindings.glsl)
-  VkBufferView shadedView_ = VK_NULL_HANDLE;
+  Buffer frame_, clipList_, large_, largeSetups_, keys_, bins_, colors_, keyReadback_;
+  TexelBuffer vertices_, triangles_, objects_, materials_, lights_, shaded_;  // read as texels (bindings.glsl)
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
   uint32_t largeCapacity_ = 0;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "host/context.h"
+#include "host/resources.h"
 
 #include <span>
 
@@ -63,6 +64,11 @@ struct BufferDescriptor {
   VkDeviceSize range = VK_WHOLE_SIZE;
   VkBufferView view = VK_NULL_HANDLE;
 };
+
+// The uniform texel buffer descriptor of `texels` at `binding`.
+inline BufferDescriptor texelDescriptor(uint32_t binding, const TexelBuffer& texels) {
+  return {binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texels.buffer.buffer, 0, VK_WHOLE_SIZE, texels.view};
+}
 
 // Allocates a set of `setLayout` from the arena and writes `descriptors` into it.
 VkDescriptorSet allocateDescriptorSet(const VulkanContext& context, const DescriptorArena& arena,

@@ -39,9 +39,9 @@ constexpr VkCompareOp DEPTH_COMPARE = VK_COMPARE_OP_GREATER;
 
 // The vertex shader's buffers (shaders/bindings.glsl); the fragment shader reads none.
 constexpr Binding BINDINGS[] = {
-    {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},    {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},  {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-    {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},          {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_OBJECTS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},  {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
 };
 
 enum Timestamp { DRAW_BEGIN, DRAW_END, TIMESTAMP_COUNT };
@@ -83,6 +83,9 @@ void checkSceneFits(const VulkanContext& context, const SceneData& data) {
   const uint64_t vertexBytes = uint64_t(data.vertices.size()) * sizeof(VertexIn);
   if (vertexBytes > limits.maxStorageBufferRange)
     throwTooLarge(context, "the vertices", vertexBytes, "maxStorageBufferRange", limits.maxStorageBufferRange);
+  if (vertexBytes / TEXEL_BYTES > limits.maxTexelBufferElements)
+    throwTooLarge(context, "the vertices", vertexBytes / TEXEL_BYTES, "maxTexelBufferElements",
+                  limits.maxTexelBufferElements);
   if (!data.vertices.empty() && data.vertices.size() - 1 > limits.maxDrawIndexedIndexValue)
     throwTooLarge(context, "the vertex indices", data.vertices.size() - 1, "maxDrawIndexedIndexValue",
                   limits.maxDrawIndexedIndexValue);
@@ -128,6 +131,12 @@ void createFilled(Buffer& buffer, const VulkanContext& context, const std::vecto
   if (!data.empty()) uploadToBuffer(context, buffer, data.data(), data.size() * sizeof(T));
 }
 
+// The shaders read the scene's arrays as texels (bindings.glsl), as the compute port does.
+template <typename T>
+void createTexels(TexelBuffer& texels, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind) {
+  createTexelBuffer(texels, context, data.data(), data.size() * sizeof(T), 0, kind);
+}
+
 // Per-frame arrays must keep the scene's sizes: the buffers were made for them.
 template <typename T>
 void uploadSameSize(const VulkanContext& context, Buffer& buffer, const std::vector<T>& data, size_t expected,
@@ -162,7 +171,8 @@ struct RasterRenderer::State {
   TimestampPool timestamps;
   double deviceMs = std::numeric_limits<double>::quiet_NaN();
 
-  Buffer frame, vertices, indices, objects, materials, lights;
+  Buffer frame, indices;
+  TexelBuffer vertices, objects, materials, lights;
   size_t objectCount = 0, materialCount = 0, lightCount = 0;
   std::vector<DrawRun> runs;
 
@@ -174,7 +184,8 @@ struct RasterRenderer::State {
 
 void RasterRenderer::State::release() {
   releaseTargets();
-  for (Buffer* b : {&frame, &vertices, &indices, &objects, &materials, &lights}) destroyBuffer(*b, context);
+  for (Buffer* b : {&frame, &indices}) destroyBuffer(*b, context);
+  for (TexelBuffer* t : {&vertices, &objects, &materials, &lights}) destroyTexelBuffer(*t, context);
   destroyTimestampPool(timestamps, context);
   destroyDescriptorArena(arena, context);
   for (auto& byCull : pipelines)
@@ -194,24 +205,22 @@ void RasterRenderer::State::createFixedObjects() {
 
 void RasterRenderer::State::uploadScene(const SceneData& data) {
   checkSceneFits(context, data);
-  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  createFilled(vertices, context, data.vertices, storage, MemoryKind::DeviceLocal);
+  createTexels(vertices, context, data.vertices, MemoryKind::DeviceLocal);
   createFilled(indices, context, triangleIndices(data), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryKind::DeviceLocal);
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
-  createFilled(objects, context, data.objects, storage, MemoryKind::HostVisible);
-  createFilled(materials, context, data.materials, storage, MemoryKind::HostVisible);
-  createFilled(lights, context, data.lights, storage, MemoryKind::HostVisible);
+  createTexels(objects, context, data.objects, MemoryKind::HostVisible);
+  createTexels(materials, context, data.materials, MemoryKind::HostVisible);
+  createTexels(lights, context, data.lights, MemoryKind::HostVisible);
   createBuffer(frame, context, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
   objectCount = data.objects.size();
   materialCount = data.materials.size();
   lightCount = data.lights.size();
   runs = drawRuns(data);
 
-  const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const BufferDescriptor descriptors[] = {
-      {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.buffer}, {BINDING_VERTICES, ssbo, vertices.buffer},
-      {BINDING_OBJECTS, ssbo, objects.buffer}, {BINDING_MATERIALS, ssbo, materials.buffer},
-      {BINDING_LIGHTS, ssbo, lights.buffer},
+      {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.buffer}, texelDescriptor(BINDING_VERTICES, vertices),
+      texelDescriptor(BINDING_OBJECTS, objects), texelDescriptor(BINDING_MATERIALS, materials),
+      texelDescriptor(BINDING_LIGHTS, lights),
   };
   set = allocateDescriptorSet(context, arena, layout.setLayout, descriptors);
 }
@@ -252,9 +261,9 @@ void RasterRenderer::State::ensureTargets(uint32_t w, uint32_t h) {
 // Everything per frame is small and host visible: the vertex shader recomputes every colour
 // anyway (there is no shaded-vertex buffer to keep), so nothing is gained by skipping uploads.
 void RasterRenderer::State::uploadFrame(const FrameInputs& in) {
-  uploadSameSize(context, objects, in.objects, objectCount, "objects");
-  uploadSameSize(context, materials, in.materials, materialCount, "materials");
-  uploadSameSize(context, lights, in.lights, lightCount, "lights");
+  uploadSameSize(context, objects.buffer, in.objects, objectCount, "objects");
+  uploadSameSize(context, materials.buffer, in.materials, materialCount, "materials");
+  uploadSameSize(context, lights.buffer, in.lights, lightCount, "lights");
   uploadToBuffer(context, frame, &in.frame, sizeof(FrameData));
 }
 

@@ -5,6 +5,7 @@
 #include "host/vk_check.h"
 
 #include <cstring>
+#include <algorithm>
 #include <cassert>
 #include <optional>
 #include <stdexcept>
@@ -105,21 +106,29 @@ void createBuffer(Buffer& result, const VulkanContext& context, VkDeviceSize siz
   }
 }
 
-VkBufferView createTexelView(const VulkanContext& context, const Buffer& buffer, VkFormat format,
-                             VkDeviceSize texelBytes) {
-  assert(texelBytes > 0 && buffer.size % texelBytes == 0);
-  VkBufferViewCreateInfo info = {VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
-  info.buffer = buffer.buffer;
-  info.format = format;
-  info.range = VK_WHOLE_SIZE;
-  VkBufferView view = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateBufferView(context.device, &info, nullptr, &view));
-  return view;
+void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
+                       VkBufferUsageFlags usage, MemoryKind kind) {
+  assert(bytes % TEXEL_BYTES == 0);
+  result = {};
+  createBuffer(result.buffer, context, std::max(bytes, TEXEL_BYTES), usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+               kind);
+  try {
+    if (data && bytes) uploadToBuffer(context, result.buffer, data, bytes);
+    VkBufferViewCreateInfo info = {VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    info.buffer = result.buffer.buffer;
+    info.format = VK_FORMAT_R32G32B32A32_UINT;
+    info.range = VK_WHOLE_SIZE;
+    VK_CHECK(vkCreateBufferView(context.device, &info, nullptr, &result.view));
+  } catch (...) {
+    destroyTexelBuffer(result, context);
+    throw;
+  }
 }
 
-void destroyTexelView(VkBufferView& view, const VulkanContext& context) {
-  if (view) vkDestroyBufferView(context.device, view, nullptr);
-  view = VK_NULL_HANDLE;
+void destroyTexelBuffer(TexelBuffer& texels, const VulkanContext& context) {
+  if (texels.view) vkDestroyBufferView(context.device, texels.view, nullptr);
+  texels.view = VK_NULL_HANDLE;
+  destroyBuffer(texels.buffer, context);
 }
 
 void destroyBuffer(Buffer& buffer, const VulkanContext& context) {

@@ -41,14 +41,22 @@ void uploadToBuffer(const VulkanContext& context, Buffer& dst, const void* data,
 // finished (submitAndWait, whose closing barrier makes the writes visible to the host).
 void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, size_t bytes);
 
-// A view of `buffer` as texels of `format` (`texelBytes` each, which must divide the buffer's
-// size), for a uniform texel buffer descriptor. Shaders read it with texelFetch, which SIMD CPU
-// devices (lavapipe) gather several times faster than storage-buffer loads.
-VkBufferView createTexelView(const VulkanContext& context, const Buffer& buffer, VkFormat format,
-                             VkDeviceSize texelBytes);
+// A buffer the shaders read as RGBA32UI texels (a uniform texel buffer: bindings.glsl). texelFetch
+// is gathered in SIMD by CPU devices (lavapipe), which load from a storage buffer lane by lane.
+struct TexelBuffer {
+  Buffer buffer;
+  VkBufferView view = VK_NULL_HANDLE;
+};
+inline constexpr VkDeviceSize TEXEL_BYTES = 16;
 
-// Safe on VK_NULL_HANDLE; leaves `view` null.
-void destroyTexelView(VkBufferView& view, const VulkanContext& context);
+// `bytes` (a multiple of TEXEL_BYTES; 0 still gets one texel) in a new texel buffer, filled from
+// `data` if it is not null; `usage` is added to UNIFORM_TEXEL_BUFFER (e.g. STORAGE for a pass that
+// writes it).
+void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
+                       VkBufferUsageFlags usage, MemoryKind kind);
+
+// Safe on an empty or already destroyed TexelBuffer.
+void destroyTexelBuffer(TexelBuffer& texels, const VulkanContext& context);
 
 // Device memory the context's buffers hold now, and the most they ever held at once.
 VkDeviceSize deviceBytes(const VulkanContext& context);

@@ -1,10 +1,17 @@
 // bindings.glsl — the descriptor set every phongvk pass shares (numbers from shared.h).
 // Included by the .comp files after shared.h; a pass simply ignores the buffers it does not use.
+//
+// Arrays the passes only read are uniform texel buffers of RGBA32UI texels, each shared.h struct
+// being whole texels, unpacked by the functions below (uintBitsToFloat keeps every bit, even of
+// subnormals and NaNs): lavapipe gathers a texelFetch in SIMD, while it loads from a storage
+// buffer lane by lane, with a branch and a bounds check each.
 layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frame; };
-layout(std430, binding = BINDING_VERTICES) readonly buffer Vertices { VertexIn vertices[]; };
-layout(std430, binding = BINDING_OBJECTS) readonly buffer Objects { ObjectData objects[]; };
-layout(std430, binding = BINDING_MATERIALS) readonly buffer Materials { MaterialData materials[]; };
-layout(std430, binding = BINDING_LIGHTS) readonly buffer Lights { LightData lights[]; };
+layout(binding = BINDING_VERTICES) uniform usamplerBuffer vertexTexels;
+layout(binding = BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
+layout(binding = BINDING_OBJECTS) uniform usamplerBuffer objectTexels;
+layout(binding = BINDING_MATERIALS) uniform usamplerBuffer materialTexels;
+layout(binding = BINDING_LIGHTS) uniform usamplerBuffer lightTexels;
+layout(binding = BINDING_SHADED_TEXELS) uniform usamplerBuffer shadedTexels;  // shaded[], after the shade pass
 layout(std430, binding = BINDING_SHADED) buffer Shaded { ShadedVertex shaded[]; };
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
@@ -16,12 +23,37 @@ layout(std430, binding = BINDING_BINS) buffer Bins { BinList binList; uint binDa
 layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { LargeTriangle largeSetups[]; };
 layout(std430, binding = BINDING_CLIP_LIST) buffer ClipList { IdList clipList; uint clipIds[]; };
 
-layout(binding = BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
-layout(binding = BINDING_SHADED_TEXELS) uniform samplerBuffer shadedTexels;
+// A texel's four words as floats, bit for bit.
+vec4 floats(uvec4 t) { return uintBitsToFloat(t); }
 
-// Shaded vertex v, read through the texel view (for passes after shade_vertices).
+VertexIn vertexIn(uint i) {
+  uvec4 a = texelFetch(vertexTexels, int(2u * i));
+  uvec4 b = texelFetch(vertexTexels, int(2u * i + 1u));
+  return VertexIn(floats(a).xyz, a.w, floats(b).xyz, b.w);
+}
+
+ObjectData objectData(uint i) {
+  uvec4 a = texelFetch(objectTexels, int(2u * i));
+  uvec4 b = texelFetch(objectTexels, int(2u * i + 1u));
+  return ObjectData(floats(a).xyz, a.w, floats(b).xyz, b.w);
+}
+
+MaterialData materialData(uint i) {
+  vec4 a = floats(texelFetch(materialTexels, int(3u * i)));
+  vec4 b = floats(texelFetch(materialTexels, int(3u * i + 1u)));
+  vec4 c = floats(texelFetch(materialTexels, int(3u * i + 2u)));
+  return MaterialData(a.xyz, a.w, b.xyz, b.w, c.x, c.y, c.z, c.w);
+}
+
+LightData lightData(uint i) {
+  vec4 a = floats(texelFetch(lightTexels, int(2u * i)));
+  vec4 b = floats(texelFetch(lightTexels, int(2u * i + 1u)));
+  return LightData(a.xyz, a.w, b.xyz, b.w);
+}
+
+// Shaded vertex v (for the passes after shade_vertices, which writes shaded[]).
 ShadedVertex shadedVertex(uint v) {
-  return ShadedVertex(texelFetch(shadedTexels, int(2u * v)), texelFetch(shadedTexels, int(2u * v + 1u)));
+  return ShadedVertex(floats(texelFetch(shadedTexels, int(2u * v))), floats(texelFetch(shadedTexels, int(2u * v + 1u))));
 }
 
 // The three shaded vertices of triangle `id`.
@@ -35,8 +67,8 @@ void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVer
 // Triangle `id`'s homogeneous vertices and whether its back face is culled.
 void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullBack) {
   uvec4 tri = texelFetch(triangleTexels, int(id));
-  cullBack = (objects[tri.w].flags & OBJECT_CULL_BACK) != 0u;
-  h0 = texelFetch(shadedTexels, int(2u * tri.x)).xyz;
-  h1 = texelFetch(shadedTexels, int(2u * tri.y)).xyz;
-  h2 = texelFetch(shadedTexels, int(2u * tri.z)).xyz;
+  cullBack = (texelFetch(objectTexels, int(2u * tri.w + 1u)).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
+  h0 = floats(texelFetch(shadedTexels, int(2u * tri.x))).xyz;
+  h1 = floats(texelFetch(shadedTexels, int(2u * tri.y))).xyz;
+  h2 = floats(texelFetch(shadedTexels, int(2u * tri.z))).xyz;
 }

@@ -1,9 +1,10 @@
 // Graphics-pipeline baseline (host/raster_renderer.h), vertex stage: the transform and Phong of
 // shade_vertices.comp (phong.h), then the homogeneous pixel-space position mapped to Vulkan clip
-// space. Vertices are pulled from the storage buffer by gl_VertexIndex (an indexed draw, so the
-// driver's vertex cache shades a shared vertex once per batch): on lavapipe this measured the same
-// as vertex attributes (38 ms CPU per frame for 328k triangles, either way), and it keeps
-// VertexIn's layout in shared.h alone, with no attribute-format table to keep in step.
+// space. Vertices are pulled from the texel buffer by gl_VertexIndex (an indexed draw, so the
+// driver's vertex cache shades a shared vertex once per batch), as the compute port reads them:
+// pulling from a storage buffer measured the same as vertex attributes on lavapipe (38 ms CPU per
+// frame for 328k triangles, either way), and it keeps VertexIn's layout in shared.h alone, with no
+// attribute-format table to keep in step.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -35,14 +36,14 @@ vec4 clipPosition(vec3 h) {
 }
 
 void main() {
-  VertexIn v = vertices[gl_VertexIndex];
-  ObjectData object = objects[v.object];
-  MaterialData m = materials[object.material];
+  VertexIn v = vertexIn(gl_VertexIndex);
+  ObjectData object = objectData(v.object);
+  MaterialData m = materialData(object.material);
   vec3 h = toHomogeneous(v.position, object.viewOffset, frame);
   gl_Position = clipPosition(h);
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);
   vec3 color = phongAmbient(m, frame.ambient);
-  for (uint l = 0u; l < frame.lightCount; ++l) color += phongLight(P, v.normal, V, m, lights[l]);
+  for (uint l = 0u; l < frame.lightCount; ++l) color += phongLight(P, v.normal, V, m, lightData(l));
   gouraud = INTERPOLATION == INTERP_SCREEN ? vec4(color * h.z, h.z) : vec4(color, 1.0f);
 }

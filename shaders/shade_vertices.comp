@@ -14,16 +14,16 @@ layout(constant_id = SPEC_SPECULAR) const bool SPECULAR = true;
 layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION = false;
 
 void shadeVertex(uint i) {
-  VertexIn v = vertices[i];
-  ObjectData object = objects[v.object];
-  MaterialData m = materials[object.material];
+  VertexIn v = vertexIn(i);
+  ObjectData object = objectData(v.object);
+  MaterialData m = materialData(object.material);
   shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
   if (frame.shadeColors == 0u) return;  // lighting inputs unchanged and view-independent
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);
   vec3 color = phongAmbient(m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
-    color += phongLightWith(P, v.normal, V, m, lights[l], SPECULAR, CONSTANT_ATTENUATION);
+    color += phongLightWith(P, v.normal, V, m, lightData(l), SPECULAR, CONSTANT_ATTENUATION);
   }
   shaded[i].color = vec4(color, 1.0f);
 }
