@@ -33,6 +33,8 @@ constexpr Binding BINDINGS[] = {
     {BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},     {BINDING_LARGE_SETUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_CLIP_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_SHADED_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_LARGE_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_LARGE_SETUP_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
 };
 
 // The most workgroups one pass launches on this device (shared.h: CPU_DISPATCH_GROUPS).
@@ -94,10 +96,12 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, Re
 GpuRenderer::~GpuRenderer() { release(); }
 
 void GpuRenderer::release() {
-  for (Buffer* b : {&frame_, &clipList_, &large_, &largeSetups_, &keys_, &bins_, &colors_, &keyReadback_}) {
+  for (Buffer* b : {&frame_, &clipList_, &keys_, &bins_, &colors_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
-  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_}) destroyTexelBuffer(*t, context_);
+  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &large_, &largeSetups_}) {
+    destroyTexelBuffer(*t, context_);
+  }
   destroyTimestampPool(timestamps_, context_);
   destroyDescriptorArena(arena_, context_);
   for (auto& [key, p] : pipelines_) destroyComputePipeline(p, context_);
@@ -181,7 +185,9 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   const VkDeviceSize bins = VkDeviceSize(binsAcross(width)) * binsAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
-  for (Buffer* b : {&keys_, &bins_, &colors_, &keyReadback_, &large_, &largeSetups_}) destroyBuffer(*b, context_);
+  for (Buffer* b : {&keys_, &bins_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
+  destroyTexelBuffer(large_, context_);
+  destroyTexelBuffer(largeSetups_, context_);
   createLargeBuffers(pixels);
   createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
   createBuffer(bins_, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
@@ -200,13 +206,14 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
 
 // The large triangles' bin entries and set-up records, sized by the image (shared.h LARGE_*).
 void GpuRenderer::createLargeBuffers(VkDeviceSize pixels) {
-  largeCapacity_ = uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS));
+  // Both are written as storage buffers and read by resolve as texels (an even entry count: whole texels).
+  largeCapacity_ = uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS) + 1) & ~1u;
   const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(largeCapacity_) * sizeof(glm::uvec2);
-  createBuffer(large_, context_, largeBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+  createTexelBuffer(large_, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal);
   largeSetupCapacity_ = std::min<uint32_t>(
       std::max(triangleCount_, 1u), uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS)));
-  createBuffer(largeSetups_, context_, VkDeviceSize(largeSetupCapacity_) * sizeof(LargeTriangle), STORAGE,
-               MemoryKind::DeviceLocal);
+  createTexelBuffer(largeSetups_, context_, nullptr, VkDeviceSize(largeSetupCapacity_) * sizeof(LargeTriangle), STORAGE,
+                    MemoryKind::DeviceLocal);
 }
 
 void GpuRenderer::updateDescriptors() {
@@ -224,9 +231,11 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_SHADED, storage, shaded_.buffer.buffer},
       {BINDING_KEYS, storage, keys_.buffer},
       {BINDING_COLOR, storage, colors_.buffer},
-      {BINDING_LARGE, storage, large_.buffer},
+      {BINDING_LARGE, storage, large_.buffer.buffer},
+      texelDescriptor(BINDING_LARGE_TEXELS, large_),
       {BINDING_BINS, storage, bins_.buffer},
-      {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer},
+      {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer.buffer},
+      texelDescriptor(BINDING_LARGE_SETUP_TEXELS, largeSetups_),
       {BINDING_CLIP_LIST, storage, clipList_.buffer},
       texelDescriptor(BINDING_SHADED_TEXELS, shaded_),
   };
@@ -291,7 +300,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   const BinList noBins = {0, 0, 1, 1};
   vkCmdUpdateBuffer(cmd, bins_.buffer, 0, sizeof noBins, &noBins);
   const LargeList emptyList = {0, 0, 0, 0};
-  vkCmdUpdateBuffer(cmd, large_.buffer, 0, sizeof emptyList, &emptyList);
+  vkCmdUpdateBuffer(cmd, large_.buffer.buffer, 0, sizeof emptyList, &emptyList);
   const IdList noClipping = {0, 0, 1, 1};
   vkCmdUpdateBuffer(cmd, clipList_.buffer, 0, sizeof noClipping, &noClipping);
   transferToComputeBarrier(cmd);

@@ -70,8 +70,9 @@ class GpuRenderer {
   TimestampPool timestamps_;
   PassTimes times_;
 
-  Buffer frame_, clipList_, large_, largeSetups_, keys_, bins_, colors_, keyReadback_;
+  Buffer frame_, clipList_, keys_, bins_, colors_, keyReadback_;
   TexelBuffer vertices_, triangles_, objects_, materials_, lights_, shaded_;  // read as texels (bindings.glsl)
+  TexelBuffer large_, largeSetups_;  // written as storage, read by resolve as texels
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
   uint32_t largeCapacity_ = 0;

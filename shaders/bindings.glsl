@@ -12,6 +12,8 @@ layout(binding = BINDING_OBJECTS) uniform usamplerBuffer objectTexels;
 layout(binding = BINDING_MATERIALS) uniform usamplerBuffer materialTexels;
 layout(binding = BINDING_LIGHTS) uniform usamplerBuffer lightTexels;
 layout(binding = BINDING_SHADED_TEXELS) uniform usamplerBuffer shadedTexels;  // shaded[], after the shade pass
+layout(binding = BINDING_LARGE_TEXELS) uniform usamplerBuffer largeTexels;     // large list, after the raster passes
+layout(binding = BINDING_LARGE_SETUP_TEXELS) uniform usamplerBuffer largeSetupTexels;  // largeSetups[], likewise
 layout(std430, binding = BINDING_SHADED) buffer Shaded { ShadedVertex shaded[]; };
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
@@ -49,6 +51,24 @@ LightData lightData(uint i) {
   vec4 a = floats(texelFetch(lightTexels, int(2u * i)));
   vec4 b = floats(texelFetch(lightTexels, int(2u * i + 1u)));
   return LightData(a.xyz, a.w, b.xyz, b.w);
+}
+
+// Bin entry e of the large list, (set-up slot, next entry): 8 bytes after the 16-byte header.
+uvec2 largeEntry(uint e) {
+  uvec4 t = texelFetch(largeTexels, int(1u + e / 2u));
+  return (e & 1u) == 0u ? t.xy : t.zw;
+}
+
+// Large set-up `slot` (raster.h LargeTriangle, five texels).
+LargeTriangle largeSetup(uint slot) {
+  int k = int(5u * slot);
+  uvec4 a = texelFetch(largeSetupTexels, k);
+  uvec4 b = texelFetch(largeSetupTexels, k + 1);
+  uvec4 c = texelFetch(largeSetupTexels, k + 2);
+  uvec4 d = texelFetch(largeSetupTexels, k + 3);
+  uvec4 f = texelFetch(largeSetupTexels, k + 4);
+  return LargeTriangle(ivec4(a), TrianglePlane(uintBitsToFloat(b.xyz), uintBitsToFloat(b.w)), ivec2(c.xy), ivec2(c.zw),
+                       ivec2(d.xy), int(d.z), int(d.w), int(f.x), uintBitsToFloat(f.y), uintBitsToFloat(f.z), f.w);
 }
 
 // Shaded vertex v (for the passes after shade_vertices, which writes shaded[]).

@@ -682,6 +682,7 @@ static_assert(offsetof(phongvk::gpu::TriangleSetup, plane) == 80 && offsetof(pho
 static_assert(offsetof(phongvk::gpu::TriangleSetup, triangle) == 112);
 static_assert(sizeof(phongvk::gpu::LargeTriangle) == 80 && offsetof(phongvk::gpu::LargeTriangle, v0) == 32);
 static_assert(offsetof(phongvk::gpu::LargeTriangle, zMin) == 68 && offsetof(phongvk::gpu::LargeTriangle, triangle) == 76);
+static_assert(offsetof(phongvk::gpu::LargeTriangle, bias0) == 56 && offsetof(phongvk::gpu::LargeTriangle, bias2) == 64);
 #endif
 
 #endif  // PHONGVK_RASTER_H

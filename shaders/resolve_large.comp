@@ -68,8 +68,8 @@ void resolveTile(ivec2 origin, uint head, bool keysWritten) {
   int x = origin.x + column;
   FOR_ROWS(DECLARE_ROW)
   bool touched = false;
-  for (uint e = head; e != LIST_END; e = largeEntries[e].y) {
-    LargeTriangle t = largeSetups[largeEntries[e].x];
+  for (uint e = head; e != LIST_END; e = largeEntry(e).y) {
+    LargeTriangle t = largeSetup(largeEntry(e).x);
     BlockEdges edges = blockEdges(t, origin);
     int block = classifyBlock(t, edges, origin, int(TILE_SIZE));  // the same for the whole tile
     if (block == BLOCK_OUTSIDE) continue;
@@ -83,8 +83,8 @@ void resolveTile(ivec2 origin, uint head, bool keysWritten) {
   }
   if (!touched) return;
   // Pixels won by a large triangle: its vertices are loaded and set up once for the tile.
-  for (uint e = head; e != LIST_END; e = largeEntries[e].y) {
-    GouraudTriangle g = loadGouraud(largeSetups[largeEntries[e].x].triangle);
+  for (uint e = head; e != LIST_END; e = largeEntry(e).y) {
+    GouraudTriangle g = loadGouraud(largeSetup(largeEntry(e).x).triangle);
     FOR_ROWS(SHADE_LARGE_ROW)
   }
   FOR_ROWS(FINISH_ROW)

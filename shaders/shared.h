@@ -104,6 +104,8 @@ PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles
 // for the passes that only read them. Triangles are a texel buffer too: texelFetch is gathered in
 // SIMD by CPU devices (lavapipe), where a storage-buffer load is a loop over the lanes.
 PHONGVK_CONST uint BINDING_SHADED_TEXELS = 13;
+PHONGVK_CONST uint BINDING_LARGE_TEXELS = 14;        // the large list (BINDING_LARGE), for resolve
+PHONGVK_CONST uint BINDING_LARGE_SETUP_TEXELS = 15;  // the large set-ups (BINDING_LARGE_SETUPS), likewise
 
 // ---- Buffer structs ----
 // A mesh vertex in its object's local frame (position relative to the object origin).
