@@ -61,7 +61,8 @@ std::string machine(const Report& r) {
   s += row({"driver", m.driver});
   s += row({"date", m.date});
   if (!r.revision.empty()) s += row({"revision", "`" + r.revision + "`"});
-  s += row({"timing", "median of " + std::to_string(r.repeat) + " timed frame(s) after 1 warm-up"});
+  s += row({"timing", "median of " + std::to_string(r.repeat) + " timed frame(s) after 1 warm-up; median of " +
+                          std::to_string(SCENE_ROUNDS) + " interleaved rounds"});
   return s + "\n";
 }
 
@@ -198,7 +199,10 @@ std::string sweepSection(const Report& r) {
 std::string method(const Report& r) {
   std::string s = "## How it is measured\n\n";
   s += "- Every time is the median of " + std::to_string(r.repeat) +
-       " timed frame(s) after one untimed warm-up frame. Wall clock is the whole render call: the per-frame upload, "
+       " timed frame(s) after one untimed warm-up frame, and each backend's time is its median of " +
+       std::to_string(SCENE_ROUNDS) +
+       " rounds taken in turn with the other backends' (reference, compute, graphics pipeline, again), so a burst "
+       "of load on a shared machine slows all of them alike. Wall clock is the whole render call: the per-frame upload, "
        "recording and submission, waiting for the device and reading the image back. Device ms are the "
        "device's own timestamps (compute: shade to resolve; graphics pipeline: clear to resolve).\n";
   s += "- Frames alternate between two inputs that differ in the last bit of the ambient light, so the compute "

@@ -6,6 +6,7 @@
 #include "reference/camera.h"
 #include "reference/compare.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -37,18 +38,35 @@ void printProgress(const SceneResult& r) {
   std::fflush(stdout);  // progress shows while the next scene runs
 }
 
+// The run whose wall time is the median of the rounds (a failed run, if any failed).
+template <typename Run>
+Run medianRound(std::vector<Run> runs) {
+  for (const Run& run : runs) {
+    if (!run.time.ok()) return run;
+  }
+  std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.time.wallMs < b.time.wallMs; });
+  return runs[runs.size() / 2];
+}
+
 void renderAll(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat,
                SceneResult& r) {
-  const BackendRun reference = runReference(data, frames, repeat);
+  std::vector<BackendRun> references, rasters;
+  std::vector<ComputeRun> computes;
+  for (int round = 0; round < SCENE_ROUNDS; ++round) {
+    references.push_back(runReference(data, frames, repeat));
+    computes.push_back(runCompute(context, data, frames, repeat));
+    rasters.push_back(runRaster(context, data, frames, repeat));
+  }
+  const BackendRun reference = medianRound(references);
   r.reference = reference.time;
-  const ComputeRun compute = runCompute(context, data, frames, repeat);
+  const ComputeRun compute = medianRound(computes);
   r.compute = compute.time;
   r.passes = compute.passes;
   r.computeSceneBytes = compute.sceneBytes;
   r.computeImageBytes = compute.imageBytes;
   r.shadedEveryFrame = compute.shadedEveryFrame;
   r.computeVsReference = maxDiff(compute, reference);
-  const BackendRun raster = runRaster(context, data, frames, repeat);
+  const BackendRun raster = medianRound(rasters);
   r.raster = raster.time;
   r.rasterVsReference = maxDiff(raster, reference);
 }

@@ -31,6 +31,11 @@ struct SetupResult {
   double buildMs = NOT_MEASURED;    // median buildSceneData
 };
 
+// The backends are measured in SCENE_ROUNDS interleaved rounds (reference, compute, graphics
+// pipeline, then again) and each reports its median round: a burst of load on a shared machine
+// then slows all three alike instead of one backend's whole measurement.
+inline constexpr int SCENE_ROUNDS = 3;
+
 // Loads, builds and renders the scene on the reference, the compute port and the baseline.
 // Prints one progress line. Never throws for a scene that fails: the result says why.
 SceneResult measureScene(const VulkanContext& context, const SuiteScene& scene, int repeat);
