@@ -98,11 +98,13 @@ FN bool outsideFrustum(vec3 h0, vec3 h1, vec3 h2, FrameData frame) {
 
 // ---- Snapping and edge functions ----
 
-// Screen position in 1/256 pixel units, rounded to nearest (ties up). W >= near here.
-FN i64vec2 snapToSubpixel(vec3 h, vec2 principal) {
+// Screen position in 1/256 pixel units, rounded to nearest (ties up). W >= near here, and h is
+// inside the guard band, so the result is below 2^28 in magnitude: an int holds it exactly (and
+// a SIMD CPU converts to 32-bit integers natively, to 64-bit lane by lane).
+FN ivec2 snapToSubpixel(vec3 h, vec2 principal) {
   PRECISE float sx = (h.x / h.z + principal.x) * float(SUBPIXEL_ONE) + 0.5f;
   PRECISE float sy = (h.y / h.z + principal.y) * float(SUBPIXEL_ONE) + 0.5f;
-  return i64vec2(int64_t(floor(sx)), int64_t(floor(sy)));
+  return ivec2(int(floor(sx)), int(floor(sy)));
 }
 
 // Twice the signed area of a b p in subpixel units; > 0 when p is inside a clockwise-on-screen
@@ -134,18 +136,17 @@ struct EdgeSetup {
 };
 
 // floor(v / 256): an arithmetic shift (defined for negative v in GLSL and in C++20).
-FN int64_t floorDiv256(int64_t v) { return v >> 8; }
+FN int floorDiv256(int v) { return v >> 8; }
 
-// The pixels whose centres lie in the subpixel box [lo, hi], clipped to the image:
-// (x0, y0, x1, y1) inclusive, empty when x0 > x1 or y0 > y1. Pixel x's centre is x * 256 + 128.
-FN ivec4 pixelBounds(i64vec2 lo, i64vec2 hi, uint width, uint height) {
-  int64_t x0 = max(floorDiv256(lo.x - int64_t(SUBPIXEL_HALF) + int64_t(255)), int64_t(0));
-  int64_t y0 = max(floorDiv256(lo.y - int64_t(SUBPIXEL_HALF) + int64_t(255)), int64_t(0));
-  int64_t x1 = min(floorDiv256(hi.x - int64_t(SUBPIXEL_HALF)), int64_t(width) - int64_t(1));
-  int64_t y1 = min(floorDiv256(hi.y - int64_t(SUBPIXEL_HALF)), int64_t(height) - int64_t(1));
-  // Keep the empty cases empty without overflowing int: clamp to just outside the image.
-  return ivec4(int(min(x0, int64_t(width))), int(min(y0, int64_t(height))), int(max(x1, int64_t(-1))),
-               int(max(y1, int64_t(-1))));
+// The pixels whose centres lie in the subpixel box [lo, hi] (snapped coordinates, below 2^28),
+// clipped to the image: (x0, y0, x1, y1) inclusive, empty when x0 > x1 or y0 > y1, and then
+// just outside the image. Pixel x's centre is x * 256 + 128.
+FN ivec4 pixelBounds(ivec2 lo, ivec2 hi, uint width, uint height) {
+  int x0 = max(floorDiv256(lo.x - SUBPIXEL_HALF + 255), 0);
+  int y0 = max(floorDiv256(lo.y - SUBPIXEL_HALF + 255), 0);
+  int x1 = min(floorDiv256(hi.x - SUBPIXEL_HALF), int(width) - 1);
+  int y1 = min(floorDiv256(hi.y - SUBPIXEL_HALF), int(height) - 1);
+  return ivec4(min(x0, int(width)), min(y0, int(height)), max(x1, -1), max(y1, -1));
 }
 
 FN bool isEmpty(ivec4 box) { return box.x > box.z || box.y > box.w; }
@@ -163,7 +164,7 @@ FN bool setupEdges(i64vec2 a, i64vec2 b, i64vec2 c, bool frontFacing, uint width
   s.bias0 = topLeftBias(s.v1, s.v2);
   s.bias1 = topLeftBias(s.v2, s.v0);
   s.bias2 = topLeftBias(s.v0, s.v1);
-  s.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), width, height);
+  s.bbox = pixelBounds(ivec2(min(a, min(b, c))), ivec2(max(a, max(b, c))), width, height);
   return !isEmpty(s.bbox);
 }
 
@@ -260,7 +261,7 @@ FN bool setupEdges32(ivec2 a, ivec2 b, ivec2 c, bool frontFacing, uint width, ui
   s.bias0 = topLeftBias32(s.v1, s.v2);
   s.bias1 = topLeftBias32(s.v2, s.v0);
   s.bias2 = topLeftBias32(s.v0, s.v1);
-  s.bbox = pixelBounds(i64vec2(s.origin), i64vec2(max(a, max(b, c))), width, height);
+  s.bbox = pixelBounds(s.origin, max(a, max(b, c)), width, height);
   return !isEmpty(s.bbox);
 }
 
@@ -339,8 +340,8 @@ FN uint64_t depthKey(float z, float zMin, float zMax, float farPlane, uint trian
 // ---- One triangle, start to finish ----
 
 // Everything the raster loops need from one triangle: its clipped polygon snapped to subpixels,
-// facing, depth range and plane, and the pixel bounding box of the whole polygon. The triangle
-// pass stores it for large triangles (std430, 128 bytes), so the large pass does not redo it.
+// facing, depth range and plane, and the pixel bounding box of the whole polygon. (Large
+// triangles are stored for resolve as the smaller LargeTriangle.)
 struct TriangleSetup {
   ivec2 snapped[MAX_CLIP_VERTICES];  // subpixels; the guard band keeps them below 2^28
   ivec4 bbox;
@@ -350,9 +351,6 @@ struct TriangleSetup {
   float zMin;
   float zMax;
   uint triangle;      // its id: the low word of its visibility keys
-  float area;         // of the snapped polygon, in square pixels (shapes the large pass's chunks)
-  uint pad1;
-  uint pad2;
 };
 
 // True when no vertex is outside the near plane or the guard band: the polygon is the triangle.
@@ -373,13 +371,12 @@ FN bool setupUnclipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(Triangl
   t.count = 3;
   t.zMin = min(min(h0.z, h1.z), h2.z);
   t.zMax = max(max(h0.z, h1.z), h2.z);
-  i64vec2 v0 = snapToSubpixel(h0, frame.principal);
-  i64vec2 v1 = snapToSubpixel(h1, frame.principal);
-  i64vec2 v2 = snapToSubpixel(h2, frame.principal);
-  t.snapped[0] = ivec2(v0);
-  t.snapped[1] = ivec2(v1);
-  t.snapped[2] = ivec2(v2);
-  t.area = abs(float(edgeFunction(v0, v1, v2))) / float(2 * SUBPIXEL_ONE * SUBPIXEL_ONE);
+  ivec2 v0 = snapToSubpixel(h0, frame.principal);
+  ivec2 v1 = snapToSubpixel(h1, frame.principal);
+  ivec2 v2 = snapToSubpixel(h2, frame.principal);
+  t.snapped[0] = v0;
+  t.snapped[1] = v1;
+  t.snapped[2] = v2;
   t.bbox = pixelBounds(min(min(v0, v1), v2), max(max(v0, v1), v2), frame.width, frame.height);
   return !isEmpty(t.bbox);
 }
@@ -406,20 +403,17 @@ FN bool setupClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleS
   if (t.count == 0) return false;
   t.zMin = poly[0].z;
   t.zMax = poly[0].z;
-  i64vec2 lo = snapToSubpixel(poly[0], frame.principal);
-  i64vec2 hi = lo;
-  t.snapped[0] = ivec2(lo);
-  int64_t twiceArea = int64_t(0);  // shoelace over the fan, in subpixels squared
+  ivec2 lo = snapToSubpixel(poly[0], frame.principal);
+  ivec2 hi = lo;
+  t.snapped[0] = lo;
   for (int i = 1; i < t.count; ++i) {
     t.zMin = min(t.zMin, poly[i].z);
     t.zMax = max(t.zMax, poly[i].z);
-    i64vec2 v = snapToSubpixel(poly[i], frame.principal);
-    t.snapped[i] = ivec2(v);
+    ivec2 v = snapToSubpixel(poly[i], frame.principal);
+    t.snapped[i] = v;
     lo = min(lo, v);
     hi = max(hi, v);
-    if (i >= 2) twiceArea += edgeFunction(i64vec2(t.snapped[0]), i64vec2(t.snapped[i - 1]), v);
   }
-  t.area = abs(float(twiceArea)) / float(2 * SUBPIXEL_ONE * SUBPIXEL_ONE);
   t.bbox = pixelBounds(lo, hi, frame.width, frame.height);
   return !isEmpty(t.bbox);
 }
@@ -434,16 +428,15 @@ FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, F
 FN int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
 
 // Fan sub-triangle k of a clipped polygon as a triangle setup of its own (same plane, depth range
-// and id; its own box and area), so later passes only ever see count == 3 and index constantly.
+// and id; its own box), so later passes only ever see count == 3 and index constantly.
 FN TriangleSetup fanTriangle(TriangleSetup t, int k, FrameData frame) {
   TriangleSetup sub = t;
   sub.count = 3;
   sub.snapped[1] = t.snapped[k + 1];
   sub.snapped[2] = t.snapped[k + 2];
-  i64vec2 a = i64vec2(sub.snapped[0]);
-  i64vec2 b = i64vec2(sub.snapped[1]);
-  i64vec2 c = i64vec2(sub.snapped[2]);
-  sub.area = abs(float(edgeFunction(a, b, c))) / float(2 * SUBPIXEL_ONE * SUBPIXEL_ONE);
+  ivec2 a = sub.snapped[0];
+  ivec2 b = sub.snapped[1];
+  ivec2 c = sub.snapped[2];
   sub.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), frame.width, frame.height);
   return sub;
 }
@@ -677,9 +670,6 @@ FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int 
 SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(phongvk::gpu::TriangleSetup) == 128 && offsetof(phongvk::gpu::TriangleSetup, bbox) == 64);
-static_assert(offsetof(phongvk::gpu::TriangleSetup, plane) == 80 && offsetof(phongvk::gpu::TriangleSetup, count) == 96);
-static_assert(offsetof(phongvk::gpu::TriangleSetup, triangle) == 112);
 static_assert(sizeof(phongvk::gpu::LargeTriangle) == 80 && offsetof(phongvk::gpu::LargeTriangle, v0) == 32);
 static_assert(offsetof(phongvk::gpu::LargeTriangle, zMin) == 68 && offsetof(phongvk::gpu::LargeTriangle, triangle) == 76);
 static_assert(offsetof(phongvk::gpu::LargeTriangle, bias0) == 56 && offsetof(phongvk::gpu::LargeTriangle, bias2) == 64);
