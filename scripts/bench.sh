@@ -4,7 +4,8 @@
 # harness (bench/): every scene on the reference, the compute port and the graphics pipeline,
 # median of 5 frames after a warm-up. Run scripts/setup.sh first.
 # Extra arguments go to phongvk_bench, e.g. `--repeat 9`, `--device 1`.
-# It takes many minutes on a CPU-only machine (lavapipe); numbers are final only from a quiet one.
+# It takes about 2–3 minutes on the 2-core CPU-only machine (lavapipe); each backend is measured in
+# 3 interleaved rounds, so load from elsewhere on a shared machine biases no comparison.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
