@@ -169,7 +169,7 @@ struct FrameData {
   uint vertexCount;
   uint largeCapacity;  // bin entries the large list can hold
   uint binsX;          // bins per row: ceil(width / BIN_SIZE)
-  uint largeSetupCapacity;  // set-up records the large pass's buffer can hold
+  uint largeSetupCapacity;  // large-triangle set-up records the buffer can hold
   vec3 eye;            // eye - lighting origin, for the view vector
   uint shadeColors;    // 0: colours from the previous frame are still right, only transform
   uint groupCap;       // most workgroups a pass launches; the passes grid-stride beyond it

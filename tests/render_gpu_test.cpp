@@ -113,10 +113,11 @@ TEST(GpuRender, SequenceOfFramesSkipsViewIndependentLightingAndStillMatches) {
 }
 
 TEST(GpuRender, OverflowingTheLargeTriangleListStillMatchesEveryRun) {
-  // 40 open cubes stacked in front of the camera, every face filling the 640x480 view: about
-  // 40 * 4 large triangles * 100+ row chunks, far more than the large list holds (640*480/64
-  // entries), so reservations straddle its end and the overflow is drawn in place. Whichever
-  // triangles overflow (thread order), the image must equal the reference, run after run.
+  // 40 open cubes stacked in front of the camera, every face filling much of the 640x480 view:
+  // about 40 * 8 large triangles each reserving a bin entry for most of the 300 bins, far more
+  // than the large list holds (640*480/64 entries), so later reservations fail and those
+  // triangles are drawn in place with atomics. Whichever triangles overflow (thread order), the
+  // image must equal the reference, run after run.
   std::string objects;
   for (int i = 0; i < 40; ++i) {
     objects += std::string(i ? "," : "") + R"({"shape": "cube", "closed": false, "size": 40, "center": [0, )" +
