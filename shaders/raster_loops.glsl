@@ -71,13 +71,14 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
   if (slot == LIST_END) return false;
   uint first = reserve(uint((bins.z - bins.x + 1) * (bins.w - bins.y + 1)), frame.largeCapacity, true);
   if (first == LIST_END) return false;
-  LargeTriangle large = largeTriangle(t, s);
-  largeSetups[slot] = large;
+  LargeTriangle record = largeTriangle(t, s);
+  largeSetups[slot] = record;
   uint e = first;
   for (int by = bins.y; by <= bins.w; ++by) {
     for (int bx = bins.x; bx <= bins.z; ++bx) {
       ivec2 origin = ivec2(bx, by) * int(BIN_SIZE);
-      if (classifyBlock(large, blockEdges(large, origin), origin, int(BIN_SIZE)) == BLOCK_OUTSIDE) continue;  // entry unused
+      // A bin of the box that the triangle misses gets no entry (its reserved one stays unused).
+      if (classifyBlock(record, blockEdges(record, origin), origin, int(BIN_SIZE)) == BLOCK_OUTSIDE) continue;
       uint bin = uint(by) * frame.binsX + uint(bx);
       largeEntries[e] = uvec2(slot, atomicExchange(binData[frame.binCount + bin], e));
       ++e;
