@@ -461,4 +461,12 @@ std::string formatDeviceList(const std::vector<DeviceReport>& devices) {
   return text;
 }
 
+void checkDeviceLimit(const VulkanContext& context, const std::string& what, uint64_t need, const std::string& unit,
+                      const char* limitName, uint64_t limit) {
+  if (need <= limit) return;
+  throw std::runtime_error("scene too large for " + context.report.name + ": " + what + " need " +
+                           std::to_string(need) + (unit.empty() ? "" : " " + unit) + ", more than " + limitName +
+                           " (" + std::to_string(limit) + ")");
+}
+
 }  // namespace phongvk

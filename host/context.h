@@ -103,6 +103,12 @@ uint32_t chooseDevice(const std::vector<DeviceReport>& reports, int requested);
 // (e.g. objects the caller forgot to destroy).
 void destroyContext(VulkanContext& context);
 
+// Throws std::runtime_error("scene too large for DEVICE: WHAT need NEED UNIT, more than
+// LIMIT_NAME (LIMIT)") when need > limit, the renderers' one message for an exceeded device limit
+// (`unit` may be empty).
+void checkDeviceLimit(const VulkanContext& context, const std::string& what, uint64_t need, const std::string& unit,
+                      const char* limitName, uint64_t limit);
+
 // What `phongvk devices` prints, one line per device:
 // "[0] llvmpipe (LLVM 15.0.6, 256 bits) — CPU, Vulkan 1.3.230 — usable"
 std::string formatDeviceList(const std::vector<DeviceReport>& devices);

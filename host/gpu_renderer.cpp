@@ -46,33 +46,24 @@ uint32_t binsAcross(uint32_t pixels) { return groupCount(pixels, BIN_SIZE); }
 
 // Throws when one array would exceed the device's largest storage buffer binding.
 void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
-  const VkDeviceSize limit = context.properties.limits.maxStorageBufferRange;
-  if (bytes > limit) {
-    throw std::runtime_error(std::string("scene too large for ") + context.report.name + ": " + what + " need " +
-                             std::to_string(bytes) + " bytes, more than maxStorageBufferRange (" +
-                             std::to_string(limit) + ")");
-  }
+  checkDeviceLimit(context, what, bytes, "bytes", "maxStorageBufferRange",
+                   context.properties.limits.maxStorageBufferRange);
 }
 
 // Throws when a texel view would exceed the device's largest texel buffer.
 void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* what) {
-  const VkDeviceSize limit = context.properties.limits.maxTexelBufferElements;
-  if (texels > limit) {
-    throw std::runtime_error(std::string("scene too large for ") + context.report.name + ": " + what + " need " +
-                             std::to_string(texels) + " texels, more than maxTexelBufferElements (" +
-                             std::to_string(limit) + ")");
-  }
+  checkDeviceLimit(context, what, texels, "texels", "maxTexelBufferElements",
+                   context.properties.limits.maxTexelBufferElements);
 }
 
-// `data` (std430 structs of whole texels) in a new texel buffer, after checking the device's limits.
+// `data` in a new texel buffer, after checking the device's limits.
 template <typename T>
 void createTexelArray(TexelBuffer& texels, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind,
                       const char* what) {
-  static_assert(sizeof(T) % TEXEL_BYTES == 0);
   const VkDeviceSize bytes = data.size() * sizeof(T);
   checkFits(context, bytes, what);
   checkTexels(context, bytes / TEXEL_BYTES, what);
-  createTexelBuffer(texels, context, data.data(), bytes, 0, kind);
+  createTexelBuffer(texels, context, data, kind);
 }
 
 }  // namespace
@@ -322,11 +313,13 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, groupsX));
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 2);
-  for (Pass pass : {RESOLVE_LARGE, RESOLVE_SMALL}) {  // small reads the keys large left
+  // Small reads the keys large left. The barrier after the last one also keeps lavapipe from
+  // writing the next timestamp before the dispatch ends.
+  for (Pass pass : {RESOLVE_LARGE, RESOLVE_SMALL}) {
     bind(pass);
     vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
     computeBarrier(cmd);
-  }  // lavapipe writes a bottom-of-pipe timestamp before the dispatch ends otherwise
+  }
   writeTimestamp(cmd, timestamps_, 3);
   if (withKeys) {  // resolve left the final keys (frame.keepKeys): copy them, then clear for the next frame
     memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,

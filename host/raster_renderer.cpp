@@ -71,27 +71,19 @@ std::vector<uint32_t> triangleIndices(const SceneData& data) {
   return indices;
 }
 
-[[noreturn]] void throwTooLarge(const VulkanContext& context, const std::string& what, uint64_t need,
-                                const char* limit, uint64_t value) {
-  throw std::runtime_error("scene too large for " + context.report.name + ": " + what + " need " +
-                           std::to_string(need) + ", more than " + limit + " (" + std::to_string(value) + ")");
-}
-
 // Throws when the scene exceeds a limit of the draw: storage buffer size, index values and count.
 void checkSceneFits(const VulkanContext& context, const SceneData& data) {
   const VkPhysicalDeviceLimits& limits = context.properties.limits;
   const uint64_t vertexBytes = uint64_t(data.vertices.size()) * sizeof(VertexIn);
-  if (vertexBytes > limits.maxStorageBufferRange)
-    throwTooLarge(context, "the vertices", vertexBytes, "maxStorageBufferRange", limits.maxStorageBufferRange);
-  if (vertexBytes / TEXEL_BYTES > limits.maxTexelBufferElements)
-    throwTooLarge(context, "the vertices", vertexBytes / TEXEL_BYTES, "maxTexelBufferElements",
-                  limits.maxTexelBufferElements);
-  if (!data.vertices.empty() && data.vertices.size() - 1 > limits.maxDrawIndexedIndexValue)
-    throwTooLarge(context, "the vertex indices", data.vertices.size() - 1, "maxDrawIndexedIndexValue",
-                  limits.maxDrawIndexedIndexValue);
-  if (uint64_t(data.triangles.size()) * 3 > std::numeric_limits<uint32_t>::max())
-    throwTooLarge(context, "the indices", uint64_t(data.triangles.size()) * 3, "a 32-bit index count",
-                  std::numeric_limits<uint32_t>::max());
+  checkDeviceLimit(context, "the vertices", vertexBytes, "", "maxStorageBufferRange", limits.maxStorageBufferRange);
+  checkDeviceLimit(context, "the vertices", vertexBytes / TEXEL_BYTES, "", "maxTexelBufferElements",
+                   limits.maxTexelBufferElements);
+  if (!data.vertices.empty()) {
+    checkDeviceLimit(context, "the vertex indices", data.vertices.size() - 1, "", "maxDrawIndexedIndexValue",
+                     limits.maxDrawIndexedIndexValue);
+  }
+  checkDeviceLimit(context, "the indices", uint64_t(data.triangles.size()) * 3, "", "a 32-bit index count",
+                   std::numeric_limits<uint32_t>::max());
 }
 
 // The context's queue was chosen for compute; this renderer also draws on it.
@@ -131,11 +123,6 @@ void createFilled(Buffer& buffer, const VulkanContext& context, const std::vecto
   if (!data.empty()) uploadToBuffer(context, buffer, data.data(), data.size() * sizeof(T));
 }
 
-// The shaders read the scene's arrays as texels (bindings.glsl), as the compute port does.
-template <typename T>
-void createTexels(TexelBuffer& texels, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind) {
-  createTexelBuffer(texels, context, data.data(), data.size() * sizeof(T), 0, kind);
-}
 
 // Per-frame arrays must keep the scene's sizes: the buffers were made for them.
 template <typename T>
@@ -205,12 +192,13 @@ void RasterRenderer::State::createFixedObjects() {
 
 void RasterRenderer::State::uploadScene(const SceneData& data) {
   checkSceneFits(context, data);
-  createTexels(vertices, context, data.vertices, MemoryKind::DeviceLocal);
+  // The shaders read the scene's arrays as texels (bindings.glsl), as the compute port does.
+  createTexelBuffer(vertices, context, data.vertices, MemoryKind::DeviceLocal);
   createFilled(indices, context, triangleIndices(data), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, MemoryKind::DeviceLocal);
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
-  createTexels(objects, context, data.objects, MemoryKind::HostVisible);
-  createTexels(materials, context, data.materials, MemoryKind::HostVisible);
-  createTexels(lights, context, data.lights, MemoryKind::HostVisible);
+  createTexelBuffer(objects, context, data.objects, MemoryKind::HostVisible);
+  createTexelBuffer(materials, context, data.materials, MemoryKind::HostVisible);
+  createTexelBuffer(lights, context, data.lights, MemoryKind::HostVisible);
   createBuffer(frame, context, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
   objectCount = data.objects.size();
   materialCount = data.materials.size();

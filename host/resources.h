@@ -4,6 +4,7 @@
 #include "host/context.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace phongvk {
 
@@ -54,6 +55,13 @@ inline constexpr VkDeviceSize TEXEL_BYTES = 16;
 // writes it).
 void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
                        VkBufferUsageFlags usage, MemoryKind kind);
+
+// createTexelBuffer filled from `data`, an array of std430 structs of whole texels.
+template <typename T>
+void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind) {
+  static_assert(sizeof(T) % TEXEL_BYTES == 0);
+  createTexelBuffer(result, context, data.data(), data.size() * sizeof(T), 0, kind);
+}
 
 // Safe on an empty or already destroyed TexelBuffer.
 void destroyTexelBuffer(TexelBuffer& texels, const VulkanContext& context);
