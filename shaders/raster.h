@@ -548,14 +548,8 @@ FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
   return min(c0, min(c1, c2));
 }
 
-// covers() at pixel origin + (i, j), from the block's edge values.
-FN bool coversInBlock(LargeTriangle t, BlockEdges e, int i, int j) {
-  return edgeStep(t.v1, t.v2, e.e0, i, j) >= int64_t(0) && edgeStep(t.v2, t.v0, e.e1, i, j) >= int64_t(0) &&
-         edgeStep(t.v0, t.v1, e.e2, i, j) >= int64_t(0);
-}
-
 // The edge values walking down column i of a block: at the current row (starting at row 0), and
-// what one row down adds. Integer steps, so each row's values equal coversInBlock's exactly.
+// what one row down adds. Integer steps, so each row's values are exactly edgeFunction's there.
 struct ColumnEdges {
   BlockEdges at;
   BlockEdges down;
