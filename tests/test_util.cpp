@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace phongvk::test {
 
@@ -14,10 +15,27 @@ std::string sourcePath(const std::string& relative) {
   return std::string(PHONGVK_SOURCE_DIR) + "/" + relative;
 }
 
+namespace {
+
+// Every directory makeTempDir made, removed with its contents when the test process exits.
+struct TempDirs {
+  std::vector<std::filesystem::path> made;
+  ~TempDirs() {
+    for (const auto& dir : made) {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  }
+};
+
+}  // namespace
+
 std::string makeTempDir() {
   static std::mt19937_64 rng{std::random_device{}()};
+  static TempDirs dirs;
   auto dir = std::filesystem::temp_directory_path() / ("phongvk-test-" + std::to_string(rng()));
   std::filesystem::create_directories(dir);
+  dirs.made.push_back(dir);
   return dir.string();
 }
 

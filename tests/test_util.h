@@ -8,7 +8,8 @@ namespace phongvk::test {
 // Absolute path of a file in the source tree, e.g. sourcePath("scenes/basic.json").
 std::string sourcePath(const std::string& relative);
 
-// A fresh empty directory under the system temp dir, unique per call.
+// A fresh empty directory under the system temp dir, unique per call; removed with its contents
+// when the test process exits.
 std::string makeTempDir();
 
 // Writes `text` to `path` (creating it), for tests that need a scene file on disk.
