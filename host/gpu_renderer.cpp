@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <exception>
+#include <future>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -74,7 +76,10 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, Re
   const bool one = layout == ResolveLayout::OneTilePerGroup || (layout == ResolveLayout::Auto && cpu);
   resolveTiles_ = one ? 1u : 8u;
   try {
-    current_[RASTER] = pipeline(RASTER, {});  // its set layout serves every pass (updateDescriptors)
+    // What the scene's frames will use, all at once; the raster pass's set layout serves every
+    // pass (updateDescriptors).
+    compilePipelines(requestsFor(data.materials, data.lights.size(), data.interpolation));
+    current_[RASTER] = pipeline({RASTER, {}});
     createDescriptorArena(arena_, context_, 1);
     createTimestampPool(timestamps_, context_, TIMESTAMP_SLOTS);
     uploadScene(data);
@@ -114,36 +119,74 @@ constexpr ShaderCode SHADERS[] = {
     {spirv_resolve_large, sizeof(spirv_resolve_large)},
 };
 
-// The specialization constants a frame's shading asks for (shared.h SPEC_*).
-std::vector<SpecConstant> shadeSpecs(const FrameInputs& in) {
+// The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
+std::vector<SpecConstant> shadeSpecs(const std::vector<MaterialData>& materials, size_t lightCount) {
   bool specular = false, constantAttenuation = true;
-  for (const MaterialData& m : in.materials) {
+  for (const MaterialData& m : materials) {
     specular = specular || m.ks != 0.0f;
     constantAttenuation = constantAttenuation && m.attenuation.y == 0.0f && m.attenuation.z == 0.0f;
   }
-  return {{SPEC_LIGHT_COUNT, uint32_t(in.lights.size())}, {SPEC_SPECULAR, specular}, {SPEC_CONSTANT_ATTENUATION, constantAttenuation}};
+  return {{SPEC_LIGHT_COUNT, uint32_t(lightCount)}, {SPEC_SPECULAR, specular}, {SPEC_CONSTANT_ATTENUATION, constantAttenuation}};
 }
 
 }  // namespace
 
-// A pipeline of `pass` specialized with `specs`, compiled on first use and kept: a sequence that
-// toggles a feature (a ks sweep through 0) compiles each variant once.
-const ComputePipeline& GpuRenderer::pipeline(Pass pass, const std::vector<SpecConstant>& specs) {
-  std::vector<uint32_t> key = {uint32_t(pass)};
+namespace {
+
+std::vector<uint32_t> pipelineKey(uint32_t pass, const std::vector<SpecConstant>& specs) {
+  std::vector<uint32_t> key = {pass};
   for (const SpecConstant& s : specs) key.insert(key.end(), {s.id, s.value});
-  auto found = pipelines_.find(key);
-  if (found != pipelines_.end()) return found->second;
-  const ShaderCode& code = SHADERS[pass];
-  return pipelines_[key] = createComputePipeline(context_, code.spirv, code.bytes, BINDINGS, 0, specs);
+  return key;
+}
+
+}  // namespace
+
+// Compiles the requested pipelines not compiled before, all at once on threads of their own (a
+// CPU device compiles each on the calling thread: ~30-40 ms apiece for the raster, clip and
+// large-resolve passes on lavapipe), and keeps them: a sequence that toggles a feature (a ks
+// sweep through 0) compiles each variant once. Every thread is joined before any error is rethrown.
+void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests) {
+  std::vector<std::pair<std::vector<uint32_t>, std::future<ComputePipeline>>> pending;
+  for (const PipelineRequest& r : requests) {
+    std::vector<uint32_t> key = pipelineKey(r.pass, r.specs);
+    if (pipelines_.count(key) != 0) continue;
+    const ShaderCode code = SHADERS[r.pass];
+    pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
+                           return createComputePipeline(context_, code.spirv, code.bytes, BINDINGS, 0, specs);
+                         }));
+  }
+  std::exception_ptr failure;
+  for (auto& [key, compiled] : pending) {
+    try {
+      pipelines_[key] = compiled.get();
+    } catch (...) {
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) {
+  compilePipelines({request});
+  return pipelines_.at(pipelineKey(request.pass, request.specs));
+}
+
+// Every pass's pipeline for frames with these materials, lights and interpolation mode.
+std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::vector<MaterialData>& materials,
+                                                                   size_t lightCount, uint32_t interpolation) const {
+  return {
+      {SHADE, shadeSpecs(materials, lightCount)},
+      {RASTER, {}},
+      {CLIP, {}},
+      {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}}},
+      {RESOLVE_LARGE, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}}},
+  };
 }
 
 void GpuRenderer::selectPipelines(const FrameInputs& in) {
-  current_[SHADE] = pipeline(SHADE, shadeSpecs(in));
-  current_[RASTER] = pipeline(RASTER, {});
-  current_[CLIP] = pipeline(CLIP, {});
-  current_[RESOLVE_SMALL] = pipeline(RESOLVE_SMALL, {{SPEC_INTERPOLATION, in.frame.interpolation}});
-  current_[RESOLVE_LARGE] = pipeline(RESOLVE_LARGE, {{SPEC_INTERPOLATION, in.frame.interpolation},
-                                                     {SPEC_RESOLVE_TILES, resolveTiles_}});
+  const std::vector<PipelineRequest> requests = requestsFor(in.materials, in.lights.size(), in.frame.interpolation);
+  compilePipelines(requests);
+  for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);
 }
 
 void GpuRenderer::uploadScene(const SceneData& data) {

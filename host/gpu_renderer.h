@@ -50,8 +50,17 @@ class GpuRenderer {
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 
+  // A pass and the specialization constants it is compiled with.
+  struct PipelineRequest {
+    Pass pass;
+    std::vector<SpecConstant> specs;
+  };
+
   void release();  // destroys whatever exists; safe to call twice
-  const ComputePipeline& pipeline(Pass pass, const std::vector<SpecConstant>& specs);
+  std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
+                                          uint32_t interpolation) const;
+  void compilePipelines(const std::vector<PipelineRequest>& requests);
+  const ComputePipeline& pipeline(const PipelineRequest& request);
   void selectPipelines(const FrameInputs& in);
   void uploadScene(const SceneData& data);
   void ensureImageBuffers(uint32_t width, uint32_t height);
