@@ -373,6 +373,10 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
                   VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
   }
+  // The colours (and copied keys) become visible to the host's reads after the fence.
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                VK_ACCESS_HOST_READ_BIT);
 }
 
 void GpuRenderer::readTimes() {
@@ -399,10 +403,9 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
   submitAndWait(context_, cmd);
   readTimes();
 
-  std::vector<uint32_t> packed(pixels);
-  readFromBuffer(context_, colors_, packed.data(), pixels * sizeof(uint32_t));
+  // The colours are read where resolve wrote them (host-visible, coherent): no copy first.
   RenderOutput out;
-  out.image = imageFromPacked(packed, int(width_), int(height_));
+  out.image = imageFromPacked({static_cast<const uint32_t*>(colors_.mapped), pixels}, int(width_), int(height_));
   if (withKeys) {
     out.keys.resize(pixels);
     readFromBuffer(context_, keyReadback_, out.keys.data(), pixels * sizeof(uint64_t));

@@ -306,6 +306,9 @@ void RasterRenderer::State::recordFrame(VkCommandBuffer cmd, const FrameData& f)
   copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   copy.imageExtent = {width, height, 1};
   vkCmdCopyImageToBuffer(cmd, color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &copy);
+  // Visible to the host's reads after the fence.
+  memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                VK_ACCESS_HOST_READ_BIT);
 }
 
 void RasterRenderer::State::readTime() {
@@ -333,10 +336,10 @@ RenderOutput RasterRenderer::render(const FrameInputs& in) {
   submitAndWait(s.context, cmd);
   s.readTime();
 
-  std::vector<uint32_t> packed(VkDeviceSize(s.width) * s.height);
-  readFromBuffer(s.context, s.readback, packed.data(), packed.size() * sizeof(uint32_t));
+  // Read in place (host-visible, coherent), as the compute port reads its colours.
   RenderOutput out;
-  out.image = imageFromPacked(packed, int(s.width), int(s.height));
+  out.image = imageFromPacked({static_cast<const uint32_t*>(s.readback.mapped), size_t(s.width) * s.height},
+                              int(s.width), int(s.height));
   return out;
 }
 

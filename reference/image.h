@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,7 +27,7 @@ struct Image {
 };
 
 // An image from packed RGBA8 words (r in the low byte), as the shaders write them.
-Image imageFromPacked(const std::vector<uint32_t>& packed, int width, int height);
+Image imageFromPacked(std::span<const uint32_t> packed, int width, int height);
 
 // Encodes the image as PNG and writes it atomically: a temporary file in the same folder, then a
 // rename, so a failed or interrupted write never leaves a partial file. Throws OutputError naming
