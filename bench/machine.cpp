@@ -60,4 +60,12 @@ Machine describeMachine(const VulkanContext& context) {
   return m;
 }
 
+unsigned cpuDeviceLanes(const VulkanContext& context) {
+  if (context.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) return 0;
+  VkPhysicalDeviceSubgroupProperties subgroup = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
+  vkGetPhysicalDeviceProperties2(context.physicalDevice, &properties);
+  return std::thread::hardware_concurrency() * subgroup.subgroupSize;
+}
+
 }  // namespace phongvk::bench

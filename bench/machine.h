@@ -18,4 +18,8 @@ struct Machine {
 
 Machine describeMachine(const VulkanContext& context);
 
+// On a CPU device (lavapipe): the logical cores times the SIMD lanes of one (its subgroup size),
+// the most work it can do at once, i.e. its best possible speedup over one scalar core. 0 on a GPU.
+unsigned cpuDeviceLanes(const VulkanContext& context);
+
 }  // namespace phongvk::bench

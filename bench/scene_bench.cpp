@@ -1,5 +1,6 @@
 #include "scene_bench.h"
 
+#include "machine.h"
 #include "text.h"
 
 #include "host/timing.h"
@@ -78,6 +79,7 @@ SceneResult measureScene(const VulkanContext& context, const SuiteScene& scene, 
   r.name = scene.name;
   r.group = scene.group;
   r.smallTriangles = scene.smallTriangles;
+  r.cpuDeviceLanes = cpuDeviceLanes(context);
   try {
     const Scene loaded = scene.load();
     const View view = makeView(loaded.camera);

@@ -21,6 +21,7 @@ struct SceneResult {
   int computeVsReference = -1;      // largest channel difference (8-bit units); -1: not compared
   int rasterVsReference = -1;
   uint64_t hostPeakBytes = 0;       // process peak RSS after this scene (scenes run in table order)
+  unsigned cpuDeviceLanes = 0;      // machine.h cpuDeviceLanes: 0 on a GPU
 
   uint64_t pixels() const { return uint64_t(width) * uint64_t(height); }
 };
