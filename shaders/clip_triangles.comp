@@ -1,8 +1,9 @@
-// Clip pass: the triangles the triangle pass found crossing the near plane or the guard band
-// (usually few). Each is clipped to a polygon (raster.h setupClipped) whose fan sub-triangles
-// become triangle setups of their own: large ones go to resolve's bin lists, small ones are
-// rasterized here. Kept out of the triangle pass because the clipping's per-lane arrays slow
-// every triangle of a pass that contains them on SIMD CPUs.
+// Clip pass: the triangles the triangle pass did not draw itself, those crossing the near plane or
+// the guard band and those too large for its 32-bit edge functions (usually few). Each is clipped
+// to a polygon (raster.h setupClipped; a triangle inside the clip volume stays itself, snapped
+// exactly as the triangle pass snaps it) whose fan sub-triangles become triangle setups of their
+// own: large ones go to resolve's bin lists, the others are rasterized here. Kept out of the
+// triangle pass because on lavapipe code a pass merely contains costs every triangle it runs.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require

@@ -99,7 +99,7 @@ PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
 PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (set-up slot, next) bin entries
 PHONGVK_CONST uint BINDING_BINS = 10;        // BinList header, flags and list heads per bin, touched bins
 PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeTriangle (raster.h) of each large triangle
-PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles that need clipping
+PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles for the clip pass (clipped or not small)
 // The shaded vertices again, as a uniform texel buffer (RGBA32F: hpos, then colour, per vertex)
 // for the passes that only read them. Triangles are a texel buffer too: texelFetch is gathered in
 // SIMD by CPU devices (lavapipe), where a storage-buffer load is a loop over the lanes.
