@@ -7,8 +7,9 @@
 // smallest key kept in registers. There is no per-tile classification: lavapipe runs both sides of
 // every branch, so skipping tiles or taking a cheaper path for covered ones only added work
 // (fig1_cube 13.9 -> 12.7 ms without the covered-tile path, -> ~12 ms without classifying).
-// Where a large triangle wins, its Gouraud colour -> packed RGBA8, and the key is reset (or left
-// final, for diffs); where a small one wins, the key stays for resolve_small.
+// Where a large triangle wins, its Gouraud colour (from the winner's vertices, per pixel: once per
+// row instead of once per row and bin entry, fig1_cube -12%) -> packed RGBA8, and the key is reset
+// (or left final, for diffs); where a small one wins, the key stays for resolve_small.
 //
 // The 8 rows are spelled out by the FOR_ROWS macro instead of indexing per-lane arrays, which
 // lavapipe may keep in memory.
@@ -25,38 +26,39 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 
 #define FOR_ROWS(DO) DO(0) DO(1) DO(2) DO(3) DO(4) DO(5) DO(6) DO(7)
 
-// Per row r: the smallest key so far, the bin entry whose large triangle holds it (LIST_END if
-// none) and, if one does, the pixel's colour.
+// Per row r: the smallest key so far, and whether a large triangle holds it.
 #define DECLARE_ROW(r)              \
   uint64_t best##r = KEY_CLEAR;     \
-  uint winner##r = LIST_END;        \
-  uint color##r = 0u;               \
+  bool large##r = false;            \
   if (keysWritten && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
 
-// Row r against large triangle t (bin entry e), if it covers the pixel (its edge values, stepped
+// Row r against large triangle t, if it covers the pixel (its edge values, stepped
 // down the lane's column row by row, decide); then the next row.
 #define RASTER_ROW(r)                                                                              \
   if (columnCovers(c)) {                                                                           \
     uint64_t key = planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, origin.y + r, frame);          \
     if (key < best##r) {                                                                           \
       best##r = key;                                                                               \
-      winner##r = e;                                                                               \
+      large##r = true;                                                                             \
     }                                                                                              \
   }                                                                                                \
   c = nextRow(c);
 
-// Row r's colour if large triangle g (bin entry e) won it.
-#define SHADE_LARGE_ROW(r) \
-  if (winner##r == e) color##r = shadePixel(g, x, origin.y + r, frame, INTERPOLATION);
-
-// Row r, if a large triangle won it: its colour, and its key reset (or kept, for diffs). A pixel
-// won by a small triangle keeps its key for resolve_small; an uncovered one keeps the background.
-#define FINISH_ROW(r)                                                       \
-  if (winner##r != LIST_END && inImage(x, origin.y + r)) {                  \
-    uint i = pixelIndex(x, origin.y + r);                                   \
-    if (frame.keepKeys != 0u) keys[i] = best##r;                            \
-    else if (keysWritten) keys[i] = KEY_CLEAR;                              \
-    colors[i] = color##r;                                                   \
+// Row r, if a large triangle won it: the winner's Gouraud colour (its id is the key's low word),
+// and the key reset (or kept, for diffs). A pixel won by a small triangle keeps its key for
+// resolve_small; an uncovered one keeps the background. lavapipe computes the colour of every
+// row whoever won (both sides of a branch run), so the id is 0 unless a large triangle won: never
+// a read past the triangles.
+#define FINISH_ROW(r)                                                                            \
+  {                                                                                              \
+    uint winner = large##r ? uint(best##r & 0xFFFFFFFFul) : 0u;                                  \
+    uint color = shadePixel(loadGouraud(winner), x, origin.y + r, frame, INTERPOLATION);         \
+    if (large##r && inImage(x, origin.y + r)) {                                                  \
+      uint i = pixelIndex(x, origin.y + r);                                                      \
+      if (frame.keepKeys != 0u) keys[i] = best##r;                                               \
+      else if (keysWritten) keys[i] = KEY_CLEAR;                                                 \
+      colors[i] = color;                                                                         \
+    }                                                                                            \
   }
 
 // This lane's column of the tile at `origin` (pixels) in a bin whose large-triangle list starts
@@ -70,11 +72,6 @@ void resolveTile(ivec2 origin, uint head, bool keysWritten) {
     LargeTriangle t = largeSetup(largeEntry(e).x);
     ColumnEdges c = columnEdges(t, blockEdges(t, origin), column);
     FOR_ROWS(RASTER_ROW)
-  }
-  // Pixels won by a large triangle: its vertices are loaded and set up once for the tile.
-  for (uint e = head; e != LIST_END; e = largeEntry(e).y) {
-    GouraudTriangle g = loadGouraud(largeSetup(largeEntry(e).x).triangle);
-    FOR_ROWS(SHADE_LARGE_ROW)
   }
   FOR_ROWS(FINISH_ROW)
 }
