@@ -265,35 +265,13 @@ FN bool setupEdges32(ivec2 a, ivec2 b, ivec2 c, bool frontFacing, uint width, ui
   return !isEmpty(s.bbox);
 }
 
-// clipSpanToEdge in 32 bits: E at pixel span.x (relative to origin) is c, and E(span.x + j) = c - k j.
-FN ivec2 clipSpanToEdge32(ivec2 span, ivec2 a, ivec2 b, int bias, int y, ivec2 origin) {
-  if (span.x > span.y) return span;
-  int dx = b.x - a.x;
-  int dy = b.y - a.y;
-  ivec2 p = ivec2(span.x * SUBPIXEL_ONE + SUBPIXEL_HALF, y * SUBPIXEL_ONE + SUBPIXEL_HALF) - origin;
-  int c = dx * (p.y - a.y) - dy * (p.x - a.x) + bias;
-  if (dy == 0) return c >= 0 ? span : ivec2(1, 0);
-  int k = dy * SUBPIXEL_ONE;
-  int last = span.y - span.x;
-  float estimate = floor(float(c) / float(k));
-  if (dy > 0) {  // passes for j <= c / k: the last such j in [0, last]
-    int q = int(clamp(estimate, -1.0f, float(last)));
-    while (q >= 0 && c - k * q < 0) --q;
-    while (q < last && c - k * (q + 1) >= 0) ++q;
-    return ivec2(span.x, span.x + q);
-  }
-  int q = int(clamp(estimate + 1.0f, 0.0f, float(last + 1)));  // passes for j >= c / k
-  while (q <= last && c - k * q < 0) ++q;
-  while (q > 0 && c - k * (q - 1) >= 0) --q;
-  return ivec2(span.x + q, span.y);
-}
-
-FN ivec2 rowSpan32(EdgeSetup32 s, int y) {
-  ivec2 span = ivec2(s.bbox.x, s.bbox.z);
-  span = clipSpanToEdge32(span, s.v1, s.v2, s.bias0, y, s.origin);
-  span = clipSpanToEdge32(span, s.v2, s.v0, s.bias1, y, s.origin);
-  span = clipSpanToEdge32(span, s.v0, s.v1, s.bias2, y, s.origin);
-  return span;
+// covers() in 32 bits: whether pixel (x, y)'s centre is inside the small sub-triangle. The
+// triangle pass tests every pixel of a small triangle's box (as the reference does with covers()):
+// cheaper on lavapipe than row spans, whose per-edge division and search loops every lane runs.
+FN bool covers32(EdgeSetup32 s, int x, int y) {
+  ivec2 p = ivec2(x * SUBPIXEL_ONE + SUBPIXEL_HALF, y * SUBPIXEL_ONE + SUBPIXEL_HALF) - s.origin;
+  return edgeFunction32(s.v1, s.v2, p) + s.bias0 >= 0 && edgeFunction32(s.v2, s.v0, p) + s.bias1 >= 0 &&
+         edgeFunction32(s.v0, s.v1, p) + s.bias2 >= 0;
 }
 
 // ---- Depth and visibility key ----
