@@ -454,9 +454,11 @@ void destroyContext(VulkanContext& context) {
 std::string formatDeviceList(const std::vector<DeviceReport>& devices) {
   std::string text;
   for (const DeviceReport& device : devices) {
-    std::string verdict = device.suitable ? "usable" : "rejected: missing " + joined(device.missing);
-    text += "[" + std::to_string(device.index) + "] " + device.name + " \u2014 " + device.type + ", Vulkan " +
-            device.apiVersion + " \u2014 " + verdict + "\n";
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a known false positive) on the chain
+    // "[" + std::to_string(...) + ...
+    text.append("[").append(std::to_string(device.index)).append("] ").append(device.name);
+    text.append(" \u2014 ").append(device.type).append(", Vulkan ").append(device.apiVersion).append(" \u2014 ");
+    text.append(device.suitable ? "usable" : "rejected: missing " + joined(device.missing)).append("\n");
   }
   return text;
 }
