@@ -1,5 +1,5 @@
 // obj_import.cpp — see obj_import.h. tinyobjloader parses and triangulates; everything it lets
-// through unchecked (indices out of range, NaN) is checked here.
+// through unchecked (indices out of range, numbers it reads as 0, NaN) is checked here.
 #include "obj_import.h"
 
 #include "normals.h"
@@ -8,9 +8,11 @@
 #include <tiny_obj_loader.h>
 
 #include <cassert>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <sstream>
 #include <unordered_map>
 
 namespace phongvk {
@@ -31,8 +33,51 @@ std::string firstLine(const std::string& text) {
   return line.empty() ? "unknown error" : line;
 }
 
+// A decimal number as tinyobjloader reads one: [+-] digits [. digits] [(e|E) [+-] digits], at
+// least one digit before the exponent. It reads anything else ("nan", "inf", "0x1p3", "abc") as 0
+// without a word, so such a token is an error here, not a silent vertex at the origin.
+bool isPlainNumber(const std::string& token) {
+  size_t i = 0, digits = 0;
+  auto skipDigits = [&] {
+    size_t start = i;
+    while (i < token.size() && std::isdigit(static_cast<unsigned char>(token[i]))) ++i;
+    return i - start;
+  };
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  digits += skipDigits();
+  if (i < token.size() && token[i] == '.') {
+    ++i;
+    digits += skipDigits();
+  }
+  if (digits == 0) return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+    if (skipDigits() == 0) return false;
+  }
+  return i == token.size();
+}
+
+// Every number on the file's v, vn and vt lines is a plain decimal number (up to a '#' comment).
+void checkNumbers(const std::string& path, const std::string& where) {
+  std::ifstream in(path);
+  std::string line;
+  for (size_t lineNumber = 1; std::getline(in, line); ++lineNumber) {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string keyword, token;
+    words >> keyword;
+    if (keyword != "v" && keyword != "vn" && keyword != "vt") continue;
+    while (words >> token) {
+      if (!isPlainNumber(token))
+        fail(where, path, "line " + std::to_string(lineNumber) + ": '" + token + "' in a '" + keyword +
+                              "' line is not a number");
+    }
+  }
+}
+
 ObjData parse(const std::string& path, const std::string& where) {
   if (!std::ifstream(path)) fail(where, path, "cannot open the file");
+  checkNumbers(path, where);
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.vertex_color = false;

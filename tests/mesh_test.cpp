@@ -471,6 +471,23 @@ TEST(ObjMesh, BadFilesNameTheJsonPathAndTheFile) {
                  "a face's vertex index is out of range");
   expectObjError("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n",
                  "every triangle is degenerate (zero area)");
+  // tinyobjloader reads these as 0; they must not become a vertex at the origin.
+  expectObjError("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: 'nan' in a 'v' line is not a number");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n", "line 3: '-inf' in a 'v' line is not a number");
+  expectObjError("v 0 0 0\nv 0x1p3 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: '0x1p3' in a 'v' line is not a number");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1e\nf 1//1 2//1 3//1\n",
+                 "line 4: '1e' in a 'vn' line is not a number");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt . 0\nf 1 2 3\n", "line 4: '.' in a 'vt' line is not a number");
+}
+
+TEST(ObjMesh, PlainNumbersInEveryFormAreRead) {
+  // Signs, no digits before or after the point, exponents.
+  const std::string path = test::makeTempDir() + "/numbers.obj";
+  test::writeFile(path, "v +0 -0. .0\nv 1.5E+0 0 0\nv 0 2e-0 0\nf 1 2 3\n");
+  ObjectMesh m = buildObjectMesh(objObject(path));
+  ASSERT_EQ(m.mesh.triangles.size(), 1u);
+  EXPECT_EQ(m.mesh.positions[1].x - m.mesh.positions[0].x, 1.5f);
+  EXPECT_EQ(m.mesh.positions[2].y - m.mesh.positions[0].y, 2.0f);
 }
 
 TEST(ObjMesh, MissingFileIsAnError) {
