@@ -37,6 +37,8 @@ constexpr Binding BINDINGS[] = {
     {BINDING_CLIP_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {BINDING_SHADED_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {BINDING_LARGE_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {BINDING_LARGE_SETUP_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_SHADED_COLORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    {BINDING_SHADED_COLOR_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
 };
 
 // The most workgroups one pass launches on this device (shared.h: CPU_DISPATCH_GROUPS).
@@ -58,14 +60,19 @@ void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* 
                    context.properties.limits.maxTexelBufferElements);
 }
 
-// `data` in a new texel buffer, after checking the device's limits.
-template <typename T>
-void createTexelArray(TexelBuffer& texels, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind,
-                      const char* what) {
-  const VkDeviceSize bytes = data.size() * sizeof(T);
-  checkFits(context, bytes, what);
-  checkTexels(context, bytes / TEXEL_BYTES, what);
-  createTexelBuffer(texels, context, data, kind);
+// Throws, before anything is allocated, when one of the scene's arrays exceeds a device limit:
+// arrays the passes only read are bound as texels alone (maxStorageBufferRange does not apply to
+// them); the shaded vertices and the clip list are written as storage buffers.
+void checkSceneFits(const VulkanContext& context, const SceneData& data) {
+  auto texels = [&](VkDeviceSize bytes, const char* what) { checkTexels(context, bytes / TEXEL_BYTES, what); };
+  texels(data.vertices.size() * sizeof(VertexIn), "the vertices");
+  texels(data.triangles.size() * sizeof(glm::uvec4), "the triangles");
+  texels(data.objects.size() * sizeof(ObjectData), "the objects");
+  texels(data.materials.size() * sizeof(MaterialData), "the materials");
+  texels(data.lights.size() * sizeof(LightData), "the lights");
+  checkFits(context, data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");  // and colours
+  texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");
+  checkFits(context, sizeof(IdList) + data.triangles.size() * sizeof(uint32_t), "the clip list");
 }
 
 }  // namespace
@@ -95,7 +102,8 @@ void GpuRenderer::release() {
   for (Buffer* b : {&frame_, &clipList_, &keys_, &bins_, &colors_, &keyReadback_}) {
     destroyBuffer(*b, context_);
   }
-  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shaded_, &large_, &largeSetups_}) {
+  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shadedPositions_, &shadedColors_,
+                         &large_, &largeSetups_}) {
     destroyTexelBuffer(*t, context_);
   }
   destroyTimestampPool(timestamps_, context_);
@@ -190,24 +198,24 @@ void GpuRenderer::selectPipelines(const FrameInputs& in) {
 }
 
 void GpuRenderer::uploadScene(const SceneData& data) {
+  checkSceneFits(context_, data);
   vertexCount_ = static_cast<uint32_t>(data.vertices.size());
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
-  createTexelArray(vertices_, context_, data.vertices, MemoryKind::DeviceLocal, "the vertices");
-  createTexelArray(triangles_, context_, data.triangles, MemoryKind::DeviceLocal, "the triangles");
+  createTexelBuffer(vertices_, context_, data.vertices, MemoryKind::DeviceLocal);
+  createTexelBuffer(triangles_, context_, data.triangles, MemoryKind::DeviceLocal);
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
-  createTexelArray(objects_, context_, data.objects, MemoryKind::HostVisible, "the objects");
-  createTexelArray(materials_, context_, data.materials, MemoryKind::HostVisible, "the materials");
-  createTexelArray(lights_, context_, data.lights, MemoryKind::HostVisible, "the lights");
+  createTexelBuffer(objects_, context_, data.objects, MemoryKind::HostVisible);
+  createTexelBuffer(materials_, context_, data.materials, MemoryKind::HostVisible);
+  createTexelBuffer(lights_, context_, data.lights, MemoryKind::HostVisible);
   lastObjects_ = data.objects;
   lastMaterials_ = data.materials;
   lastLights_ = data.lights;
   createBuffer(frame_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
-  const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(ShadedVertex);
-  checkFits(context_, shadedBytes, "the shaded vertices");
-  checkTexels(context_, shadedBytes / TEXEL_BYTES, "the shaded vertices");
-  createTexelBuffer(shaded_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  // Written by the shade pass as storage buffers, read by the others as texels.
+  const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
+  createTexelBuffer(shadedPositions_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(shadedColors_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
-  checkFits(context_, clipBytes, "the clip list");
   createBuffer(clipList_, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
 
 }
@@ -262,7 +270,8 @@ void GpuRenderer::updateDescriptors() {
       texelDescriptor(BINDING_OBJECTS, objects_),
       texelDescriptor(BINDING_MATERIALS, materials_),
       texelDescriptor(BINDING_LIGHTS, lights_),
-      {BINDING_SHADED, storage, shaded_.buffer.buffer},
+      {BINDING_SHADED, storage, shadedPositions_.buffer.buffer},
+      {BINDING_SHADED_COLORS, storage, shadedColors_.buffer.buffer},
       {BINDING_KEYS, storage, keys_.buffer},
       {BINDING_COLOR, storage, colors_.buffer},
       {BINDING_LARGE, storage, large_.buffer.buffer},
@@ -271,7 +280,8 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer.buffer},
       texelDescriptor(BINDING_LARGE_SETUP_TEXELS, largeSetups_),
       {BINDING_CLIP_LIST, storage, clipList_.buffer},
-      texelDescriptor(BINDING_SHADED_TEXELS, shaded_),
+      texelDescriptor(BINDING_SHADED_TEXELS, shadedPositions_),
+      texelDescriptor(BINDING_SHADED_COLOR_TEXELS, shadedColors_),
   };
   // Identically defined set layouts are compatible: one set serves every pass.
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);

@@ -80,7 +80,8 @@ class GpuRenderer {
   PassTimes times_;
 
   Buffer frame_, clipList_, keys_, bins_, colors_, keyReadback_;
-  TexelBuffer vertices_, triangles_, objects_, materials_, lights_, shaded_;  // read as texels (bindings.glsl)
+  TexelBuffer vertices_, triangles_, objects_, materials_, lights_;  // read as texels (bindings.glsl)
+  TexelBuffer shadedPositions_, shadedColors_;  // written by the shade pass, read as texels
   TexelBuffer large_, largeSetups_;  // written as storage, read by resolve as texels
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;

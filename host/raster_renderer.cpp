@@ -71,11 +71,11 @@ std::vector<uint32_t> triangleIndices(const SceneData& data) {
   return indices;
 }
 
-// Throws when the scene exceeds a limit of the draw: storage buffer size, index values and count.
+// Throws when the scene exceeds a limit of the draw: texel buffer size (the vertex shader reads the
+// vertices as texels; no storage buffer holds them), index values and count.
 void checkSceneFits(const VulkanContext& context, const SceneData& data) {
   const VkPhysicalDeviceLimits& limits = context.properties.limits;
   const uint64_t vertexBytes = uint64_t(data.vertices.size()) * sizeof(VertexIn);
-  checkDeviceLimit(context, "the vertices", vertexBytes, "", "maxStorageBufferRange", limits.maxStorageBufferRange);
   checkDeviceLimit(context, "the vertices", vertexBytes / TEXEL_BYTES, "", "maxTexelBufferElements",
                    limits.maxTexelBufferElements);
   if (!data.vertices.empty()) {

@@ -11,10 +11,12 @@ layout(binding = BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
 layout(binding = BINDING_OBJECTS) uniform usamplerBuffer objectTexels;
 layout(binding = BINDING_MATERIALS) uniform usamplerBuffer materialTexels;
 layout(binding = BINDING_LIGHTS) uniform usamplerBuffer lightTexels;
-layout(binding = BINDING_SHADED_TEXELS) uniform usamplerBuffer shadedTexels;  // shaded[], after the shade pass
+layout(binding = BINDING_SHADED_TEXELS) uniform usamplerBuffer shadedTexels;  // shadedPositions[], after the shade pass
+layout(binding = BINDING_SHADED_COLOR_TEXELS) uniform usamplerBuffer shadedColorTexels;  // shadedColors[], likewise
 layout(binding = BINDING_LARGE_TEXELS) uniform usamplerBuffer largeTexels;     // large list, after the raster passes
 layout(binding = BINDING_LARGE_SETUP_TEXELS) uniform usamplerBuffer largeSetupTexels;  // largeSetups[], likewise
-layout(std430, binding = BINDING_SHADED) buffer Shaded { ShadedVertex shaded[]; };
+layout(std430, binding = BINDING_SHADED) writeonly buffer ShadedPositions { vec4 shadedPositions[]; };
+layout(std430, binding = BINDING_SHADED_COLORS) writeonly buffer ShadedColors { vec4 shadedColors[]; };
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
 layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 largeEntries[]; };
@@ -71,9 +73,10 @@ LargeTriangle largeSetup(uint slot) {
                        ivec2(d.xy), int(d.z), int(d.w), int(f.x), uintBitsToFloat(f.y), uintBitsToFloat(f.z), f.w);
 }
 
-// Shaded vertex v (for the passes after shade_vertices, which writes shaded[]).
+// Shaded vertex v (for the passes after shade_vertices, which writes shadedPositions[] and
+// shadedColors[]).
 ShadedVertex shadedVertex(uint v) {
-  return ShadedVertex(floats(texelFetch(shadedTexels, int(2u * v))), floats(texelFetch(shadedTexels, int(2u * v + 1u))));
+  return ShadedVertex(floats(texelFetch(shadedTexels, int(v))), floats(texelFetch(shadedColorTexels, int(v))));
 }
 
 // The three shaded vertices of triangle `id`.
@@ -88,7 +91,7 @@ void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVer
 void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullBack) {
   uvec4 tri = texelFetch(triangleTexels, int(id));
   cullBack = (texelFetch(objectTexels, int(2u * tri.w + 1u)).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
-  h0 = floats(texelFetch(shadedTexels, int(2u * tri.x))).xyz;
-  h1 = floats(texelFetch(shadedTexels, int(2u * tri.y))).xyz;
-  h2 = floats(texelFetch(shadedTexels, int(2u * tri.z))).xyz;
+  h0 = floats(texelFetch(shadedTexels, int(tri.x))).xyz;
+  h1 = floats(texelFetch(shadedTexels, int(tri.y))).xyz;
+  h2 = floats(texelFetch(shadedTexels, int(tri.z))).xyz;
 }

@@ -17,7 +17,7 @@ void shadeVertex(uint i) {
   VertexIn v = vertexIn(i);
   ObjectData object = objectData(v.object);
   MaterialData m = materialData(object.material);
-  shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
+  shadedPositions[i] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
   if (frame.shadeColors == 0u) return;  // lighting inputs unchanged and view-independent
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);
@@ -25,7 +25,7 @@ void shadeVertex(uint i) {
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
     color += phongLightWith(P, v.normal, V, m, lightData(l), SPECULAR, CONSTANT_ATTENUATION);
   }
-  shaded[i].color = vec4(color, 1.0f);
+  shadedColors[i] = vec4(color, 1.0f);
 }
 
 void main() {

@@ -93,19 +93,24 @@ PHONGVK_CONST uint BINDING_TRIANGLES = 2;    // RGBA32UI texels (3 vertex indice
 PHONGVK_CONST uint BINDING_OBJECTS = 3;      // ObjectData[]
 PHONGVK_CONST uint BINDING_MATERIALS = 4;    // MaterialData[]
 PHONGVK_CONST uint BINDING_LIGHTS = 5;       // LightData[]
-PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex[]
+PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex.hpos per vertex (vec4[])
 PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
 PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
 PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (set-up slot, next) bin entries
 PHONGVK_CONST uint BINDING_BINS = 10;        // BinList header, flags and list heads per bin, touched bins
 PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeTriangle (raster.h) of each large triangle
 PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles for the clip pass (clipped or not small)
-// The shaded vertices again, as a uniform texel buffer (RGBA32F: hpos, then colour, per vertex)
-// for the passes that only read them. Triangles are a texel buffer too: texelFetch is gathered in
-// SIMD by CPU devices (lavapipe), where a storage-buffer load is a loop over the lanes.
+// The shaded vertices again, as uniform texel buffers (one texel per vertex: hpos; colour) for the
+// passes that only read them. Triangles are a texel buffer too: texelFetch is gathered in SIMD by
+// CPU devices (lavapipe), where a storage-buffer load is a loop over the lanes. Positions and
+// colours are arrays of their own: the triangle pass reads only positions (16 bytes a vertex
+// instead of 32 in its cache lines), and each array stays within maxStorageBufferRange for twice
+// the vertices (lavapipe: 128 MiB, 8.4M vertices).
 PHONGVK_CONST uint BINDING_SHADED_TEXELS = 13;
 PHONGVK_CONST uint BINDING_LARGE_TEXELS = 14;        // the large list (BINDING_LARGE), for resolve
 PHONGVK_CONST uint BINDING_LARGE_SETUP_TEXELS = 15;  // the large set-ups (BINDING_LARGE_SETUPS), likewise
+PHONGVK_CONST uint BINDING_SHADED_COLORS = 16;       // ShadedVertex.color per vertex (vec4[])
+PHONGVK_CONST uint BINDING_SHADED_COLOR_TEXELS = 17; // the same, as texels
 
 // ---- Buffer structs ----
 // A mesh vertex in its object's local frame (position relative to the object origin).

@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -400,24 +401,35 @@ std::string uploadError(const VulkanContext& context, const SceneData& data) {
   return "(no error)";
 }
 
-// More vertices, or more triangles, than one storage buffer holds: a clear error naming the
-// array and the limit. (Built directly: a scene file that big takes minutes to load.)
+// Scene arrays past a device limit: a clear error naming the array, the amount and the limit,
+// thrown before anything is allocated. The limits are lowered on a copy of the context, so a small
+// scene reaches each of them (BadCli.MoreVerticesThanTheDeviceHolds meets the real one).
 TEST_F(StressTest, MoreGeometryThanTheDeviceHoldsIsAClearError) {
-  const VkDeviceSize range = context_.properties.limits.maxStorageBufferRange;
-  if (range > (VkDeviceSize(1) << 30)) GTEST_SKIP() << "maxStorageBufferRange " << range << ": too much memory to fill";
-  const Scene scene = loadScene(test::sourcePath("scenes/stress/one_pixel.json"));
+  SceneData data = buildSceneData(loadScene(test::sourcePath("scenes/stress/one_pixel.json")));
+  const uint64_t vertices = data.vertices.size();
+  data.triangles.resize(4 * vertices + 1, data.triangles[0]);  // more than the vertices need, in both units
+  const uint64_t triangles = data.triangles.size();
   const std::string prefix = "scene too large for " + context_.report.name + ": ";
-  const std::string limit = " bytes, more than maxStorageBufferRange (" + std::to_string(range) + ")";
-
-  SceneData vertices = buildSceneData(scene);
-  vertices.vertices.resize(range / sizeof(gpu::VertexIn) + 1, vertices.vertices[0]);
-  EXPECT_EQ(uploadError(context_, vertices),
-            prefix + "the vertices need " + std::to_string(vertices.vertices.size() * sizeof(gpu::VertexIn)) + limit);
-
-  SceneData triangles = buildSceneData(scene);
-  triangles.triangles.resize(range / sizeof(glm::uvec4) + 1, triangles.triangles[0]);
-  EXPECT_EQ(uploadError(context_, triangles),
-            prefix + "the triangles need " + std::to_string(triangles.triangles.size() * sizeof(glm::uvec4)) + limit);
+  auto limited = [&](uint32_t texels, uint32_t bytes) {
+    VulkanContext context = context_;
+    context.properties.limits.maxTexelBufferElements = texels;
+    context.properties.limits.maxStorageBufferRange = bytes;
+    return uploadError(context, data);
+  };
+  auto message = [&](const std::string& what, uint64_t need, const char* unit, const char* limit, uint64_t value) {
+    return prefix + what + " need " + std::to_string(need) + " " + unit + ", more than " + limit + " (" +
+           std::to_string(value) + ")";
+  };
+  const uint32_t big = std::numeric_limits<uint32_t>::max();
+  // VertexIn is two texels; a triangle one; a shaded position one texel and 16 bytes; the clip
+  // list a 16-byte header and 4 bytes per triangle.
+  EXPECT_EQ(limited(2 * vertices - 1, big), message("the vertices", 2 * vertices, "texels", "maxTexelBufferElements", 2 * vertices - 1));
+  EXPECT_EQ(limited(triangles - 1, big), message("the triangles", triangles, "texels", "maxTexelBufferElements", triangles - 1));
+  EXPECT_EQ(limited(big, 16 * vertices - 1),
+            message("the shaded vertex positions", 16 * vertices, "bytes", "maxStorageBufferRange", 16 * vertices - 1));
+  EXPECT_EQ(limited(big, 16 + 4 * triangles - 1),
+            message("the clip list", 16 + 4 * triangles, "bytes", "maxStorageBufferRange", 16 + 4 * triangles - 1));
+  EXPECT_EQ(limited(big, big), "(no error)");
 }
 
 }  // namespace
