@@ -15,9 +15,9 @@ struct GridSize {
   int subdivide;  // 20 * 4^subdivide triangles per sphere
 };
 
-// ~1k to ~10M triangles. "8M" (8,192,000 triangles, 4,096,200 vertices) is the largest grid whose
-// vertex and triangle arrays each fit lavapipe's 128 MiB maxStorageBufferRange; "10M" (9,912,320)
-// is past it, so the suite shows what happens to a scene that does not fit.
+// ~1k to ~10M triangles. On lavapipe the largest array bound as a storage buffer (128 MiB) is a
+// grid's shaded vertex positions, 16 bytes each: up to 8.4M vertices (~16.7M triangles) fit; the
+// read-only arrays are bound as texels (2 GiB). A scene past a limit shows "does not fit".
 constexpr GridSize GRIDS[] = {{"1k", 2, 2}, {"10k", 3, 3}, {"100k", 5, 4}, {"1M", 7, 5}, {"8M", 10, 6}, {"10M", 11, 6}};
 constexpr int QUICK_GRIDS = 2;
 
