@@ -65,6 +65,10 @@ CommandResult run(const std::string& prefix, const std::string& args) {
 
 CommandResult runCli(const std::string& args) { return run("", args); }
 
+CommandResult runCliWithEnvironment(const std::string& assignments, const std::string& args) {
+  return run(assignments + " ", args);
+}
+
 CommandResult runCliUnprivileged(const std::string& args) {
   return run(geteuid() == 0 ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "", args);
 }

@@ -23,6 +23,9 @@ struct CommandResult {
 // Runs the phongvk CLI with `args` (a shell-quoted argument string) and captures its output.
 CommandResult runCli(const std::string& args);
 
+// The same with environment assignments before the command, e.g. "LP_NUM_THREADS=1".
+CommandResult runCliWithEnvironment(const std::string& assignments, const std::string& args);
+
 // The same, but as an unprivileged user when the tests run as root (CI containers do), so file
 // permissions apply: through `setpriv` (util-linux) as uid/gid 65534 (nobody).
 CommandResult runCliUnprivileged(const std::string& args);
