@@ -174,8 +174,8 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   if (failure) std::rethrow_exception(failure);
 }
 
-const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) {
-  compilePipelines({request});
+// The pipeline compilePipelines made for `request`.
+const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) const {
   return pipelines_.at(pipelineKey(request.pass, request.specs));
 }
 
@@ -383,10 +383,6 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
                   VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
   }
-  // The colours (and copied keys) become visible to the host's reads after the fence.
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                VK_ACCESS_HOST_READ_BIT);
 }
 
 void GpuRenderer::readTimes() {
@@ -413,7 +409,8 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
   submitAndWait(context_, cmd);
   readTimes();
 
-  // The colours are read where resolve wrote them (host-visible, coherent): no copy first.
+  // The colours are read where resolve wrote them (host-visible, coherent; submitAndWait's closing
+  // barrier made the writes visible to the host): no copy first.
   RenderOutput out;
   out.image = imageFromPacked({static_cast<const uint32_t*>(colors_.mapped), pixels}, int(width_), int(height_));
   if (withKeys) {

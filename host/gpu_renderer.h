@@ -60,7 +60,7 @@ class GpuRenderer {
   std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
                                           uint32_t interpolation) const;
   void compilePipelines(const std::vector<PipelineRequest>& requests);
-  const ComputePipeline& pipeline(const PipelineRequest& request);
+  const ComputePipeline& pipeline(const PipelineRequest& request) const;
   void selectPipelines(const FrameInputs& in);
   void uploadScene(const SceneData& data);
   void ensureImageBuffers(uint32_t width, uint32_t height);

@@ -123,7 +123,6 @@ void createFilled(Buffer& buffer, const VulkanContext& context, const std::vecto
   if (!data.empty()) uploadToBuffer(context, buffer, data.data(), data.size() * sizeof(T));
 }
 
-
 // Per-frame arrays must keep the scene's sizes: the buffers were made for them.
 template <typename T>
 void uploadSameSize(const VulkanContext& context, Buffer& buffer, const std::vector<T>& data, size_t expected,
@@ -306,9 +305,6 @@ void RasterRenderer::State::recordFrame(VkCommandBuffer cmd, const FrameData& f)
   copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   copy.imageExtent = {width, height, 1};
   vkCmdCopyImageToBuffer(cmd, color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &copy);
-  // Visible to the host's reads after the fence.
-  memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                VK_ACCESS_HOST_READ_BIT);
 }
 
 void RasterRenderer::State::readTime() {
