@@ -55,7 +55,7 @@ void createDescriptorArena(DescriptorArena& result, const VulkanContext& context
 void destroyDescriptorArena(DescriptorArena& arena, const VulkanContext& context);
 
 // One buffer descriptor to write; range VK_WHOLE_SIZE means from offset to the buffer's end. A
-// uniform texel buffer descriptor is written from `view` instead (resources.h createTexelView).
+// uniform texel buffer descriptor is written from `view` instead (texelDescriptor below).
 struct BufferDescriptor {
   uint32_t binding;
   VkDescriptorType type;

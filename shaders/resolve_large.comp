@@ -68,10 +68,12 @@ void resolveTile(ivec2 origin, uint head, bool keysWritten) {
   int column = int(gl_LocalInvocationID.x);
   int x = origin.x + column;
   FOR_ROWS(DECLARE_ROW)
-  for (uint e = head; e != LIST_END; e = largeEntry(e).y) {
-    LargeTriangle t = largeSetup(largeEntry(e).x);
+  for (uint e = head; e != LIST_END;) {
+    uvec2 entry = largeEntry(e);  // (set-up slot, next entry)
+    LargeTriangle t = largeSetup(entry.x);
     ColumnEdges c = columnEdges(t, blockEdges(t, origin), column);
     FOR_ROWS(RASTER_ROW)
+    e = entry.y;
   }
   FOR_ROWS(FINISH_ROW)
 }

@@ -28,9 +28,8 @@ PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
 PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
 PHONGVK_CONST uint CLIP_GROUP_SIZE = 64;
 // The image is cut into 32x32 pixel bins. Resolve takes one touched bin per workgroup and walks
-// it as 4x4 tiles of 8x8 pixels, a lane per pixel: the bin's large triangles are tested against a
-// whole tile at once (all in, all out, or per pixel), so their loads and set-up are shared by the
-// workgroup, and a bin nothing touched is skipped whole.
+// it as 4x4 tiles of 8x8 pixels (resolve_large.comp, resolve_small.comp): the bin's large
+// triangles are loaded once per tile for all its pixels, and a bin nothing touched is skipped whole.
 PHONGVK_CONST uint TILE_SIZE = 8;
 PHONGVK_CONST uint BIN_SIZE = 32;
 PHONGVK_CONST uint BIN_TILES = BIN_SIZE / TILE_SIZE;  // tiles per bin side
