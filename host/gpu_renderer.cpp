@@ -77,11 +77,16 @@ void checkSceneFits(const VulkanContext& context, const SceneData& data) {
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout)
+GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout,
+                         ColorOutput output)
     : context_(context) {
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool one = layout == ResolveLayout::OneTilePerGroup || (layout == ResolveLayout::Auto && cpu);
   resolveTiles_ = one ? 1u : 8u;
+  if (output == ColorOutput::InKeySlots && !hasSharedMemory(context_)) {
+    throw std::invalid_argument("colours in the key slots need memory that is device local and host cached");
+  }
+  colorsInKeys_ = output == ColorOutput::InKeySlots || (output == ColorOutput::Auto && hasSharedMemory(context_));
   try {
     // What the scene's frames will use, all at once; the raster pass's set layout serves every
     // pass (updateDescriptors).
@@ -231,18 +236,29 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   destroyTexelBuffer(large_, context_);
   destroyTexelBuffer(largeSetups_, context_);
   createLargeBuffers(pixels);
-  createBuffer(keys_, context_, pixels * sizeof(uint64_t), STORAGE, MemoryKind::DeviceLocal);
+  // With the colours in the key slots the host reads and resets the keys in place (Shared memory).
+  createBuffer(keys_, context_, pixels * sizeof(uint64_t),
+               STORAGE | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+               colorsInKeys_ ? MemoryKind::Shared : MemoryKind::DeviceLocal);
   createBuffer(bins_, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
                STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
-  // Resolve writes the colours straight into host-visible memory: no device copy and no second
-  // buffer (12 bytes per pixel in all: keys and colours), and the host reads them in place.
-  createBuffer(colors_, context_, pixels * sizeof(uint32_t), STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-               MemoryKind::HostVisible);
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
   submitAndWait(context_, cmd);
+  keysDirty_ = false;
   width_ = width;
   height_ = height;
+  ensureColorBuffer(!colorsInKeys_);  // updates the descriptors
+}
+
+// The colour buffer: the whole image when resolve writes colours there (ColorOutput::ColorBuffer,
+// or a frame with keys), else 4 bytes that only keep its descriptor valid. Resolve writes the
+// colours straight into host-visible memory, where the host reads them in place: no device copy.
+void GpuRenderer::ensureColorBuffer(bool wholeImage) {
+  const VkDeviceSize bytes = wholeImage ? VkDeviceSize(width_) * height_ * sizeof(uint32_t) : sizeof(uint32_t);
+  if (colors_.buffer != VK_NULL_HANDLE && colors_.size >= bytes) return;
+  destroyBuffer(colors_, context_);
+  createBuffer(colors_, context_, bytes, STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::HostVisible);
   updateDescriptors();
 }
 
@@ -327,6 +343,7 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   frame.groupCap = groupCapFor(context_);
   frame.binCount = binsAcross(frame.width) * binsAcross(frame.height);
   frame.keepKeys = withKeys ? 1u : 0u;
+  frame.colorsInKeys = colorsInKeys_ && !withKeys ? 1u : 0u;
   frame.shadeColors = colorsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
   lastFrame_ = frame;
@@ -337,7 +354,8 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
 void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool withKeys) {
   resetTimestamps(cmd, timestamps_);
   // Untouched bins are not resolved: their pixels keep this fill.
-  vkCmdFillBuffer(cmd, colors_.buffer, 0, VK_WHOLE_SIZE, packColor(frame.background));
+  if (frame.colorsInKeys == 0u) vkCmdFillBuffer(cmd, colors_.buffer, 0, VK_WHOLE_SIZE, packColor(frame.background));
+  if (keysDirty_) vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
   const VkDeviceSize binBytes = VkDeviceSize(frame.binCount) * sizeof(uint32_t);
   vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList), binBytes, 0u);                   // no flags
   vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList) + binBytes, binBytes, LIST_END);  // empty lists
@@ -404,20 +422,55 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
   }
   uploadFrame(in, withKeys);
   selectPipelines(in);
+  if (lastFrame_.colorsInKeys == 0u) ensureColorBuffer(true);
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   recordFrame(cmd, lastFrame_, withKeys);  // as uploaded (bin counts included)
+  keysDirty_ = keysDirty_ || lastFrame_.colorsInKeys != 0u;
   submitAndWait(context_, cmd);
   readTimes();
 
-  // The colours are read where resolve wrote them (host-visible, coherent; submitAndWait's closing
-  // barrier made the writes visible to the host): no copy first.
   RenderOutput out;
-  out.image = imageFromPacked({static_cast<const uint32_t*>(colors_.mapped), pixels}, int(width_), int(height_));
+  out.image = readImage(lastFrame_);
   if (withKeys) {
     out.keys.resize(pixels);
     readFromBuffer(context_, keyReadback_, out.keys.data(), pixels * sizeof(uint64_t));
   }
   return out;
+}
+
+namespace {
+
+// The image in the key slots resolve left (FrameData.colorsInKeys): a slot's colour, or the
+// background where resolve left KEY_CLEAR; every slot is reset to KEY_CLEAR for the next frame.
+Image imageFromKeySlots(std::span<uint64_t> slots, uint32_t background, int width, int height) {
+  Image image(width, height);
+  for (size_t i = 0; i < slots.size(); ++i) {
+    const uint64_t slot = slots[i];
+    uint32_t color = background;
+    if (slot != KEY_CLEAR) {
+      color = uint32_t(slot);
+      slots[i] = KEY_CLEAR;
+    }
+    image.rgb[i * 3 + 0] = uint8_t(color);
+    image.rgb[i * 3 + 1] = uint8_t(color >> 8);
+    image.rgb[i * 3 + 2] = uint8_t(color >> 16);
+  }
+  return image;
+}
+
+}  // namespace
+
+// The frame's image, read where resolve wrote it (host-visible, coherent; submitAndWait's closing
+// barrier made the writes visible to the host): no copy first.
+Image GpuRenderer::readImage(const FrameData& frame) {
+  const size_t pixels = size_t(width_) * height_;
+  if (frame.colorsInKeys == 0u) {
+    return imageFromPacked({static_cast<const uint32_t*>(colors_.mapped), pixels}, int(width_), int(height_));
+  }
+  Image image = imageFromKeySlots({static_cast<uint64_t*>(keys_.mapped), pixels}, packColor(frame.background),
+                                  int(width_), int(height_));
+  keysDirty_ = false;
+  return image;
 }
 
 }  // namespace phongvk

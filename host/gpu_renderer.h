@@ -28,11 +28,19 @@ struct PassTimes {
 // eight, so a GPU's warps are full. Auto picks by device type; tests force either on any device.
 enum class ResolveLayout { Auto, OneTilePerGroup, EightTilesPerGroup };
 
+// Where resolve leaves the colours. InKeySlots: each in its pixel's 64-bit key slot, which the host
+// reads in place and resets (8 bytes per pixel in all; needs MemoryKind::Shared memory, as a CPU
+// or integrated device has). ColorBuffer: in a host-visible colour buffer, resolve resetting the
+// keys (12 bytes per pixel). Auto picks InKeySlots where the device has shared memory. Frames
+// rendered with keys (for diffs) always use the colour buffer. Tests force either.
+enum class ColorOutput { Auto, InKeySlots, ColorBuffer };
+
 class GpuRenderer {
  public:
   // Uploads the scene's vertices, triangles and materials. Throws std::runtime_error when the
   // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
-  GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout = ResolveLayout::Auto);
+  GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout = ResolveLayout::Auto,
+              ColorOutput output = ColorOutput::Auto);
   ~GpuRenderer();
   GpuRenderer(const GpuRenderer&) = delete;
   GpuRenderer& operator=(const GpuRenderer&) = delete;
@@ -64,6 +72,8 @@ class GpuRenderer {
   void selectPipelines(const FrameInputs& in);
   void uploadScene(const SceneData& data);
   void ensureImageBuffers(uint32_t width, uint32_t height);
+  void ensureColorBuffer(bool wholeImage);
+  Image readImage(const gpu::FrameData& frame);
   void createLargeBuffers(VkDeviceSize pixels);
   void updateDescriptors();
   void uploadFrame(const FrameInputs& in, bool withKeys);
@@ -72,6 +82,8 @@ class GpuRenderer {
 
   const VulkanContext& context_;
   uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
+  bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
+  bool keysDirty_ = false;     // a frame left colours in the key slots that were not read and reset
   std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
   ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
   DescriptorArena arena_;

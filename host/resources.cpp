@@ -33,9 +33,14 @@ uint32_t chooseMemoryType(const VulkanContext& context, uint32_t typeBits, VkMem
   return *type;
 }
 
+constexpr VkMemoryPropertyFlags SHARED_MEMORY = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT |
+                                                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                VK_MEMORY_PROPERTY_HOST_COHERENT_BIT | VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
+
 uint32_t memoryTypeFor(const VulkanContext& context, uint32_t typeBits, MemoryKind kind) {
   if (kind == MemoryKind::DeviceLocal)
     return chooseMemoryType(context, typeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  if (kind == MemoryKind::Shared) return chooseMemoryType(context, typeBits, SHARED_MEMORY, 0);
   return chooseMemoryType(context, typeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
                           VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
 }
@@ -98,7 +103,7 @@ void createBuffer(Buffer& result, const VulkanContext& context, VkDeviceSize siz
     VK_CHECK(vkAllocateMemory(context.device, &allocateInfo, nullptr, &result.memory));
     countAllocation(context, requirements.size);
     VK_CHECK(vkBindBufferMemory(context.device, result.buffer, result.memory, 0));
-    if (kind == MemoryKind::HostVisible)
+    if (kind != MemoryKind::DeviceLocal)
       VK_CHECK(vkMapMemory(context.device, result.memory, 0, VK_WHOLE_SIZE, 0, &result.mapped));
   } catch (...) {
     destroyBuffer(result, context);
@@ -164,6 +169,10 @@ void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, 
   StagingBuffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   copyBuffer(context, src.buffer, 0, staging.buffer.buffer, 0, bytes);
   std::memcpy(out, staging.buffer.mapped, bytes);
+}
+
+bool hasSharedMemory(const VulkanContext& context) {
+  return findMemoryType(context.memoryProperties, ~0u, SHARED_MEMORY).has_value();
 }
 
 VkDeviceSize deviceBytes(const VulkanContext& context) { return context.memory->current; }

@@ -15,12 +15,16 @@ enum class MemoryKind {
   // Host visible and coherent, persistently mapped (prefers host-cached memory: fast readback).
   // For data the CPU writes or reads every frame.
   HostVisible,
+  // Device local, host visible, coherent and cached, persistently mapped: memory that shaders and
+  // the host both use at full speed, as a CPU or integrated device has (hasSharedMemory). For a
+  // buffer the shaders work in and the host reads and resets in place.
+  Shared,
 };
 
 struct Buffer {
   VkBuffer buffer = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  void* mapped = nullptr;  // non-null for MemoryKind::HostVisible
+  void* mapped = nullptr;  // non-null for MemoryKind::HostVisible and Shared
   VkDeviceSize size = 0;   // the VkBuffer's size: the request rounded up to a multiple of 4, at least 4
 };
 
@@ -29,6 +33,10 @@ struct Buffer {
 // uploadToBuffer / readFromBuffer reach them by copies. Throws VulkanError when out of memory.
 void createBuffer(Buffer& result, const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
                   MemoryKind kind);
+
+// Whether the device has MemoryKind::Shared memory. A discrete GPU's host-visible device-local
+// memory (resizable BAR) is uncached for the host, so it does not count.
+bool hasSharedMemory(const VulkanContext& context);
 
 // Frees the buffer and its memory; safe on an empty or already destroyed Buffer.
 void destroyBuffer(Buffer& buffer, const VulkanContext& context);

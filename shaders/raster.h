@@ -303,6 +303,12 @@ FN float depthAt(TrianglePlane t, vec3 p) {
 }
 
 PHONGVK_CONST uint64_t KEY_CLEAR = 0xFFFFFFFFFFFFFFFFul;
+// A resolved pixel's final colour kept in its key slot (FrameData.colorsInKeys): this tag above,
+// the packed RGBA8 below. The tag's upper word is a NaN's bits, so no depth key reaches it: every
+// slot at or above the tag (KEY_CLEAR included) holds no key, and a pass skips it.
+PHONGVK_CONST uint64_t KEY_COLOR_TAG = 0xFFFFFFFE00000000ul;
+
+FN uint64_t colorSlot(uint color) { return KEY_COLOR_TAG | uint64_t(color); }
 
 // The 64-bit visibility key: depth's float bits above, the triangle id below; the smallest key
 // wins a pixel, so equal depths go to the lower triangle id. The depth is held to the depth range

@@ -27,6 +27,19 @@ bool inImage(int x, int y) { return x < int(frame.width) && y < int(frame.height
 
 uint pixelIndex(int x, int y) { return uint(y) * frame.width + uint(x); }
 
+// Pixel i's final colour, won by `key`: into its key slot (frame.colorsInKeys), or into the colour
+// buffer with the key reset for the next frame (kept final for diffs, frame.keepKeys;
+// `keyChanged` false when the slot already holds KEY_CLEAR).
+void storeColor(uint i, uint color, uint64_t key, bool keyChanged) {
+  if (frame.colorsInKeys != 0u) {
+    keys[i] = colorSlot(color);
+    return;
+  }
+  if (frame.keepKeys != 0u) keys[i] = key;
+  else if (keyChanged) keys[i] = KEY_CLEAR;
+  colors[i] = color;
+}
+
 // Triangle `id`'s Gouraud constants (raster.h).
 GouraudTriangle loadGouraud(uint id) {
   ShadedVertex a, b, c;

@@ -8,8 +8,8 @@
 // every branch, so skipping tiles or taking a cheaper path for covered ones only added work
 // (fig1_cube 13.9 -> 12.7 ms without the covered-tile path, -> ~12 ms without classifying).
 // Where a large triangle wins, its Gouraud colour (from the winner's vertices, per pixel: once per
-// row instead of once per row and bin entry, fig1_cube -12%) -> packed RGBA8, and the key is reset
-// (or left final, for diffs); where a small one wins, the key stays for resolve_small.
+// row instead of once per row and bin entry, fig1_cube -12%) -> packed RGBA8, stored by
+// resolve.glsl storeColor; where a small one wins, the key stays for resolve_small.
 //
 // The 8 rows are spelled out by the FOR_ROWS macro instead of indexing per-lane arrays, which
 // lavapipe may keep in memory.
@@ -45,8 +45,8 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
   c = nextRow(c);
 
 // Row r, if a large triangle won it: the winner's Gouraud colour (its id is the key's low word),
-// and the key reset (or kept, for diffs). A pixel won by a small triangle keeps its key for
-// resolve_small; an uncovered one keeps the background. lavapipe computes the colour of every
+// stored (storeColor). A pixel won by a small triangle keeps its key for resolve_small; an
+// uncovered one is left alone (the host gives it the background). lavapipe computes the colour of every
 // row whoever won (both sides of a branch run), so the id is 0 unless a large triangle won: never
 // a read past the triangles.
 #define FINISH_ROW(r)                                                                            \
@@ -54,10 +54,7 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
     uint winner = large##r ? uint(best##r & 0xFFFFFFFFul) : 0u;                                  \
     uint color = shadePixel(loadGouraud(winner), x, origin.y + r, frame, INTERPOLATION);         \
     if (large##r && inImage(x, origin.y + r)) {                                                  \
-      uint i = pixelIndex(x, origin.y + r);                                                      \
-      if (frame.keepKeys != 0u) keys[i] = best##r;                                               \
-      else if (keysWritten) keys[i] = KEY_CLEAR;                                                 \
-      colors[i] = color;                                                                         \
+      storeColor(pixelIndex(x, origin.y + r), color, best##r, keysWritten);                      \
     }                                                                                            \
   }
 

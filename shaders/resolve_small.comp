@@ -1,7 +1,7 @@
 // Second resolve pass (resolve.glsl): the tiles small triangles touched, in every bin, a lane per
 // pixel. Per pixel whose key is still set (resolve_large took the pixels large triangles won):
-// the winning key's triangle -> Gouraud colour -> packed RGBA8, and the key reset for the next
-// frame (or kept, for diffs). Pixels nothing covered keep the background the host filled in.
+// the winning key's triangle -> Gouraud colour -> packed RGBA8, stored by resolve.glsl
+// storeColor. Pixels nothing covered are left alone (the host gives them the background).
 // Kept apart from resolve_large.comp because on lavapipe the mere presence of that pass's code
 // makes this simple path several times slower. It visits only the flagged tiles (a bit loop, not
 // a test of all 16): on lavapipe each empty iteration of a 64-lane group costs ~0.1 us, and a
@@ -23,9 +23,8 @@ void resolvePixelOf(uvec2 origin) {
   if (!inImage(x, y)) return;
   uint i = pixelIndex(x, y);
   uint64_t key = keys[i];
-  if (key == KEY_CLEAR) return;
-  if (frame.keepKeys == 0u) keys[i] = KEY_CLEAR;
-  colors[i] = shadePixel(loadGouraud(uint(key & 0xFFFFFFFFul)), x, y, frame, INTERPOLATION);
+  if (key >= KEY_COLOR_TAG) return;  // uncovered, or resolved by resolve_large
+  storeColor(i, shadePixel(loadGouraud(uint(key & 0xFFFFFFFFul)), x, y, frame, INTERPOLATION), key, true);
 }
 
 void main() {

@@ -179,7 +179,8 @@ struct FrameData {
   uint groupCap;       // most workgroups a pass launches; the passes grid-stride beyond it
   uint binCount;       // binsX * bins down
   uint keepKeys;       // 1: resolve leaves each pixel's final key in the key buffer (for diffs)
-  uint pad2;
+  uint colorsInKeys;   // 1: resolve writes each colour into its pixel's key slot (raster.h colorSlot), the
+                       // host reads and clears it there; 0: into the colour buffer, clearing the key
 };
 
 // Header of the touched-bin list. The bin buffer holds this header, then per bin its flags

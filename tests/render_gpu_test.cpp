@@ -55,9 +55,11 @@ TEST_P(SceneDiff, GpuMatchesReference) {
   // Without keys resolve takes other paths (resolve_large shades what large triangles win; with
   // keys resolve_small shades every pixel): the image a user gets must be the same.
   const RenderOutput plain = gpu->render(in);
-  // The resolve layout this device does not use by default must give the same bytes.
+  // The resolve layout and colour output this device does not use by default must give the same
+  // bytes (a device without shared memory has only the colour buffer).
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  gpu.emplace(context_, data, cpu ? ResolveLayout::EightTilesPerGroup : ResolveLayout::OneTilePerGroup);
+  const ColorOutput otherOutput = hasSharedMemory(context_) ? ColorOutput::ColorBuffer : ColorOutput::Auto;
+  gpu.emplace(context_, data, cpu ? ResolveLayout::EightTilesPerGroup : ResolveLayout::OneTilePerGroup, otherOutput);
   const RenderOutput otherLayout = gpu->render(in, true);
   const RenderOutput otherLayoutPlain = gpu->render(in);
   gpu.reset();
@@ -72,7 +74,8 @@ TEST_P(SceneDiff, GpuMatchesReference) {
   EXPECT_EQ(first.image.rgb, plain.image.rgb) << "rendering without keys changed the image";
   EXPECT_EQ(first.image.rgb, otherLayout.image.rgb) << "the other resolve layout changed the image";
   EXPECT_EQ(first.keys, otherLayout.keys) << "the other resolve layout changed the keys";
-  EXPECT_EQ(first.image.rgb, otherLayoutPlain.image.rgb) << "the other resolve layout without keys changed the image";
+  EXPECT_EQ(first.image.rgb, otherLayoutPlain.image.rgb)
+      << "the other resolve layout and colour output, without keys, changed the image";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneDiff, ::testing::ValuesIn(allScenes()),
@@ -127,6 +130,34 @@ TEST(GpuRender, SequenceOfFramesSkipsViewIndependentLightingAndStillMatches) {
       EXPECT_EQ(out.keys, ref.keys) << "frame " << i;
     }
     EXPECT_EQ(gpu.framesShaded(), 1u);
+  }
+  destroyContext(context);
+  EXPECT_EQ(context.validation->count(), 0u);
+}
+
+// Frames without keys, one after another, in either colour output: where the key slots hold the
+// colours, the host must reset every slot it read, or a pixel an object left keeps last frame's
+// colour. The cube slides across the view (a frame with keys in between switches output and back).
+TEST(GpuRender, FramesLeaveNoColourBehindInEitherOutput) {
+  Scene scene = parseScene(R"({
+    "camera": {"position": [0, -3, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "width": 160, "height": 120},
+    "lights": [{"position": [1, -2, 2]}],
+    "objects": [{"shape": "cube", "size": 0.8, "material": {"color": [1, 0.5, 0.2]}},
+                {"shape": "sphere", "radius": 0.3, "center": [0, 1, 0], "subdivide": 2}]
+  })",
+                           "slide.json", ".");
+  VulkanContext context = createContext({-1, true});
+  for (ColorOutput output : {ColorOutput::InKeySlots, ColorOutput::ColorBuffer}) {
+    if (output == ColorOutput::InKeySlots && !hasSharedMemory(context)) continue;  // a discrete GPU has the other only
+    SceneData data = buildSceneData(scene);
+    GpuRenderer gpu(context, data, ResolveLayout::Auto, output);
+    for (int i = 0; i < 5; ++i) {
+      scene.camera.position = {-1.2 + 0.6 * i, -3, 0};  // the view slides, so every object moves on screen
+      scene.camera.direction = {0, 1, 0};
+      const FrameInputs in = makeFrame(data, makeView(scene.camera));
+      const RenderOutput out = gpu.render(in, i == 2);
+      EXPECT_EQ(out.image.rgb, renderReference(data, in).image.rgb) << "frame " << i << ", output " << int(output);
+    }
   }
   destroyContext(context);
   EXPECT_EQ(context.validation->count(), 0u);
