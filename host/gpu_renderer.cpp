@@ -39,6 +39,7 @@ constexpr Binding BINDINGS[] = {
     {BINDING_LARGE_SETUP_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
     {BINDING_SHADED_COLORS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
     {BINDING_SHADED_COLOR_TEXELS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER},
+    {BINDING_STATUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
 };
 
 // The most workgroups one pass launches on this device (shared.h: CPU_DISPATCH_GROUPS).
@@ -78,8 +79,9 @@ void checkSceneFits(const VulkanContext& context, const SceneData& data) {
 }  // namespace
 
 GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout,
-                         ColorOutput output)
+                         ColorOutput output, uint32_t firstGroupCap)
     : context_(context) {
+  groupCap_ = firstGroupCap != 0 ? std::min(firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool one = layout == ResolveLayout::OneTilePerGroup || (layout == ResolveLayout::Auto && cpu);
   resolveTiles_ = one ? 1u : 8u;
@@ -104,7 +106,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, Re
 GpuRenderer::~GpuRenderer() { release(); }
 
 void GpuRenderer::release() {
-  for (Buffer* b : {&frame_, &clipList_, &keys_, &bins_, &colors_, &keyReadback_}) {
+  for (Buffer* b : {&frame_, &clipList_, &keys_, &bins_, &colors_, &keyReadback_, &status_}) {
     destroyBuffer(*b, context_);
   }
   for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shadedPositions_, &shadedColors_,
@@ -216,6 +218,7 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   lastMaterials_ = data.materials;
   lastLights_ = data.lights;
   createBuffer(frame_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
+  createBuffer(status_, context_, sizeof(FrameStatus), STORAGE, MemoryKind::HostVisible);
   // Written by the shade pass as storage buffers, read by the others as texels.
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
   createTexelBuffer(shadedPositions_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
@@ -233,9 +236,10 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   const VkDeviceSize bins = VkDeviceSize(binsAcross(width)) * binsAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
   for (Buffer* b : {&keys_, &bins_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
-  destroyTexelBuffer(large_, context_);
-  destroyTexelBuffer(largeSetups_, context_);
-  createLargeBuffers(pixels);
+  // The large triangles' lists grow with the image (shared.h LARGE_*), and further when a frame needs more.
+  createLargeBuffers(uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS)),
+                     std::min<uint32_t>(std::max(triangleCount_, 1u),
+                                        uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS))));
   // With the colours in the key slots the host reads and resets the keys in place (Shared memory).
   createBuffer(keys_, context_, pixels * sizeof(uint64_t),
                STORAGE | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -262,16 +266,23 @@ void GpuRenderer::ensureColorBuffer(bool wholeImage) {
   updateDescriptors();
 }
 
-// The large triangles' bin entries and set-up records, sized by the image (shared.h LARGE_*).
-void GpuRenderer::createLargeBuffers(VkDeviceSize pixels) {
-  // Both are written as storage buffers and read by resolve as texels (an even entry count: whole texels).
-  largeCapacity_ = uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS) + 1) & ~1u;
-  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(largeCapacity_) * sizeof(glm::uvec2);
+// Room for `entries` bin entries and `setups` set-up records of large triangles, replacing any
+// there was. Both are written as storage buffers and read by resolve as texels (an even entry
+// count: whole texels). Throws, naming the limit, when they would pass the device's.
+void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
+  const uint32_t evenEntries = (entries + 1u) & ~1u;
+  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(evenEntries) * sizeof(glm::uvec2);
+  const VkDeviceSize setupBytes = VkDeviceSize(setups) * sizeof(LargeTriangle);
+  checkFits(context_, largeBytes, "the large triangles' bin entries");
+  checkFits(context_, setupBytes, "the large triangles' set-ups");
+  checkTexels(context_, largeBytes / TEXEL_BYTES, "the large triangles' bin entries");
+  checkTexels(context_, setupBytes / TEXEL_BYTES, "the large triangles' set-ups");
+  destroyTexelBuffer(large_, context_);
+  destroyTexelBuffer(largeSetups_, context_);
   createTexelBuffer(large_, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal);
-  largeSetupCapacity_ = std::min<uint32_t>(
-      std::max(triangleCount_, 1u), uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS)));
-  createTexelBuffer(largeSetups_, context_, nullptr, VkDeviceSize(largeSetupCapacity_) * sizeof(LargeTriangle), STORAGE,
-                    MemoryKind::DeviceLocal);
+  createTexelBuffer(largeSetups_, context_, nullptr, setupBytes, STORAGE, MemoryKind::DeviceLocal);
+  largeCapacity_ = evenEntries;
+  largeSetupCapacity_ = setups;
 }
 
 void GpuRenderer::updateDescriptors() {
@@ -296,6 +307,7 @@ void GpuRenderer::updateDescriptors() {
       {BINDING_LARGE_SETUPS, storage, largeSetups_.buffer.buffer},
       texelDescriptor(BINDING_LARGE_SETUP_TEXELS, largeSetups_),
       {BINDING_CLIP_LIST, storage, clipList_.buffer},
+      {BINDING_STATUS, storage, status_.buffer},
       texelDescriptor(BINDING_SHADED_TEXELS, shadedPositions_),
       texelDescriptor(BINDING_SHADED_COLOR_TEXELS, shadedColors_),
   };
@@ -340,7 +352,8 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   frame.largeCapacity = largeCapacity_;
   frame.binsX = binsAcross(frame.width);
   frame.largeSetupCapacity = largeSetupCapacity_;
-  frame.groupCap = groupCapFor(context_);
+  frame.groupCap = groupCap_;
+  frame.loopProbe = LOOP_PROBE_ITERATIONS;
   frame.binCount = binsAcross(frame.width) * binsAcross(frame.height);
   frame.keepKeys = withKeys ? 1u : 0u;
   frame.colorsInKeys = colorsInKeys_ && !withKeys ? 1u : 0u;
@@ -373,7 +386,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   };
   writeTimestamp(cmd, timestamps_, 0);
   bind(SHADE);
-  const uint32_t cap = groupCapFor(context_);
+  const uint32_t cap = frame.groupCap;
   vkCmdDispatch(cmd, std::min(groupCount(vertexCount_, SHADE_GROUP_SIZE), cap), 1, 1);
   computeBarrier(cmd);
   writeTimestamp(cmd, timestamps_, 1);
@@ -423,11 +436,8 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
   uploadFrame(in, withKeys);
   selectPipelines(in);
   if (lastFrame_.colorsInKeys == 0u) ensureColorBuffer(true);
-  VkCommandBuffer cmd = beginOneTimeCommands(context_);
-  recordFrame(cmd, lastFrame_, withKeys);  // as uploaded (bin counts included)
-  keysDirty_ = keysDirty_ || lastFrame_.colorsInKeys != 0u;
-  submitAndWait(context_, cmd);
-  readTimes();
+  while (!renderAttempt(withKeys)) {
+  }
 
   RenderOutput out;
   out.image = readImage(lastFrame_);
@@ -436,6 +446,45 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
     readFromBuffer(context_, keyReadback_, out.keys.data(), pixels * sizeof(uint64_t));
   }
   return out;
+}
+
+// Renders the uploaded frame once; false when it must be rendered again (prepareRetry has grown
+// what it lacked).
+bool GpuRenderer::renderAttempt(bool withKeys) {
+  auto* status = static_cast<FrameStatus*>(status_.mapped);
+  *status = {};  // coherent memory: the device sees it at submission
+  VkCommandBuffer cmd = beginOneTimeCommands(context_);
+  recordFrame(cmd, lastFrame_, withKeys);  // as uploaded (bin counts included)
+  keysDirty_ = keysDirty_ || lastFrame_.colorsInKeys != 0u;
+  submitAndWait(context_, cmd);
+  readTimes();
+  if (status->flags == 0u) return true;
+  prepareRetry(status->flags);
+  return false;
+}
+
+// Makes room for what the last attempt lacked (STATUS_* flags): twice the large triangles' lists,
+// or 16 times the workgroups per pass. The attempt's keys and colours are thrown away, and the
+// next one relights the vertices (a cut-short shade pass may have left some unlit).
+void GpuRenderer::prepareRetry(uint32_t statusFlags) {
+  if (statusFlags & STATUS_LARGE_OVERFLOW) {
+    createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
+                       uint32_t(std::min<uint64_t>(2ull * largeSetupCapacity_, UINT32_MAX)));
+    updateDescriptors();
+  } else if (groupCap_ < MAX_DISPATCH_GROUPS) {
+    groupCap_ = std::min(groupCap_ * 16u, MAX_DISPATCH_GROUPS);
+  } else {
+    throw std::runtime_error("scene too large for " + context_.report.name +
+                             ": a pass needs more loop iterations per invocation than the device allows, even with " +
+                             std::to_string(groupCap_) + " workgroups");
+  }
+  keysDirty_ = true;
+  ++framesRepeated_;
+  lastFrame_.largeCapacity = largeCapacity_;
+  lastFrame_.largeSetupCapacity = largeSetupCapacity_;
+  lastFrame_.groupCap = groupCap_;
+  lastFrame_.shadeColors = 1u;
+  uploadToBuffer(context_, frame_, &lastFrame_, sizeof(FrameData));
 }
 
 namespace {

@@ -39,14 +39,22 @@ class GpuRenderer {
  public:
   // Uploads the scene's vertices, triangles and materials. Throws std::runtime_error when the
   // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
+  // `firstGroupCap` (0: the device's) is the most workgroups a pass launches until a frame runs out
+  // of loop iterations; tests start low to exercise the retry with more (render).
   GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout = ResolveLayout::Auto,
-              ColorOutput output = ColorOutput::Auto);
+              ColorOutput output = ColorOutput::Auto, uint32_t firstGroupCap = 0);
   ~GpuRenderer();
   GpuRenderer(const GpuRenderer&) = delete;
   GpuRenderer& operator=(const GpuRenderer&) = delete;
 
-  // Renders one frame. withKeys also reads back the per-pixel visibility keys (for diffs).
+  // Renders one frame. withKeys also reads back the per-pixel visibility keys (for diffs). A frame
+  // whose large triangles found no room in their lists, or whose passes ran out of the device's
+  // loop iterations (lavapipe), is rendered again with larger lists or more workgroups; throws
+  // std::runtime_error, naming the limit, when neither can grow further.
   RenderOutput render(const FrameInputs& in, bool withKeys = false);
+
+  // Frames rendered again so far (render), for tests and the benchmark.
+  uint64_t framesRepeated() const { return framesRepeated_; }
 
   const PassTimes& lastPassTimes() const { return times_; }
 
@@ -74,7 +82,9 @@ class GpuRenderer {
   void ensureImageBuffers(uint32_t width, uint32_t height);
   void ensureColorBuffer(bool wholeImage);
   Image readImage(const gpu::FrameData& frame);
-  void createLargeBuffers(VkDeviceSize pixels);
+  void createLargeBuffers(uint32_t entries, uint32_t setups);
+  bool renderAttempt(bool withKeys);
+  void prepareRetry(uint32_t statusFlags);
   void updateDescriptors();
   void uploadFrame(const FrameInputs& in, bool withKeys);
   void recordFrame(VkCommandBuffer cmd, const gpu::FrameData& frame, bool withKeys);
@@ -83,7 +93,9 @@ class GpuRenderer {
   const VulkanContext& context_;
   uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
   bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
-  bool keysDirty_ = false;     // a frame left colours in the key slots that were not read and reset
+  bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
+  uint32_t groupCap_ = 0;      // most workgroups per pass (shared.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
+  uint64_t framesRepeated_ = 0;
   std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
   ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
   DescriptorArena arena_;
@@ -91,7 +103,7 @@ class GpuRenderer {
   TimestampPool timestamps_;
   PassTimes times_;
 
-  Buffer frame_, clipList_, keys_, bins_, colors_, keyReadback_;
+  Buffer frame_, clipList_, keys_, bins_, colors_, keyReadback_, status_;
   TexelBuffer vertices_, triangles_, objects_, materials_, lights_;  // read as texels (bindings.glsl)
   TexelBuffer shadedPositions_, shadedColors_;  // written by the shade pass, read as texels
   TexelBuffer large_, largeSetups_;  // written as storage, read by resolve as texels

@@ -26,6 +26,18 @@ layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 la
 layout(std430, binding = BINDING_BINS) buffer Bins { BinList binList; uint binData[]; };
 layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { LargeTriangle largeSetups[]; };
 layout(std430, binding = BINDING_CLIP_LIST) buffer ClipList { IdList clipList; uint clipIds[]; };
+layout(std430, binding = BINDING_STATUS) buffer Status { FrameStatus status; };
+
+// Every pass calls this last. lavapipe (llvmpipe) allows one invocation 65535 loop iterations in
+// all (each back edge of every loop counts: LP_MAX_TGSI_LOOP_ITERATIONS) and then silently leaves
+// every loop, so a pass given too much work would end early and the image be wrong. A loop of
+// frame.loopProbe iterations that runs fewer shows the budget ran out: the host is told
+// (STATUS_LOOP_LIMIT) and renders the frame again with more workgroups.
+void checkLoopBudget() {
+  uint n = 0u;
+  for (uint i = 0u; i < frame.loopProbe; ++i) ++n;
+  if (n != frame.loopProbe) atomicOr(status.flags, STATUS_LOOP_LIMIT);
+}
 
 // A texel's four words as floats, bit for bit.
 vec4 floats(uvec4 t) { return uintBitsToFloat(t); }

@@ -29,4 +29,5 @@ void main() {
       if (setupSingle(sub, frame, s)) drawOrDefer(sub, s);
     }
   }
+  checkLoopBudget();
 }

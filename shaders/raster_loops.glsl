@@ -62,9 +62,8 @@ uint reserve(uint count, uint capacity, bool entries) {
 }
 
 // Stores sub-triangle s's set-up and links it into the list of every bin whose pixels it may
-// cover; resolve rasterizes it there. False when the set-up records or the bin entries are full
-// (the caller then draws it itself; entries already linked stay valid, as the record is written
-// before any entry points at it, and drawing a triangle twice gives the same smallest keys).
+// cover; resolve rasterizes it there. False, linking nothing, when the set-up records or the bin
+// entries are full.
 bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
   ivec4 bins = binsOf(s.bbox);
   uint slot = reserve(1u, frame.largeSetupCapacity, false);
@@ -88,10 +87,15 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
   return true;
 }
 
-// A sub-triangle with 64-bit edges: deferred to resolve when large (and there is room), else
-// drawn here.
+// A sub-triangle with 64-bit edges: deferred to resolve when large, else drawn here. A large one
+// is never drawn here: one invocation looping over all its pixels could pass lavapipe's loop budget
+// (bindings.glsl checkLoopBudget; a screen-filling triangle did, at row 123 of 480). Without room
+// for it, the host grows the lists and renders the frame again (STATUS_LARGE_OVERFLOW).
 void drawOrDefer(TriangleSetup t, EdgeSetup s) {
-  if (uint(boxPixels(s.bbox)) > SMALL_TRIANGLE_MAX_PIXELS && deferToLargePass(t, s)) return;
+  if (uint(boxPixels(s.bbox)) > SMALL_TRIANGLE_MAX_PIXELS) {
+    if (!deferToLargePass(t, s)) atomicOr(status.flags, STATUS_LARGE_OVERFLOW);
+    return;
+  }
   markBins(s.bbox);
   rasterizeRows(t, s);
 }

@@ -43,4 +43,5 @@ void main() {
       atomicMax(clipList.groupsX, min(k / CLIP_GROUP_SIZE + 1u, frame.groupCap));
     }
   }
+  checkLoopBudget();
 }

@@ -84,4 +84,5 @@ void main() {
       if (origin.x < frame.width && origin.y < frame.height) resolveTile(ivec2(origin), b.head, tileKeysWritten(b, t));
     }
   }
+  checkLoopBudget();
 }

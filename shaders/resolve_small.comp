@@ -35,4 +35,5 @@ void main() {
       resolvePixelOf(tileOrigin(b, uint(findLSB(tiles))));
     }
   }
+  checkLoopBudget();
 }

@@ -33,4 +33,5 @@ void main() {
   for (uint i = gl_GlobalInvocationID.x; i < frame.vertexCount; i += gl_NumWorkGroups.x * SHADE_GROUP_SIZE) {
     shadeVertex(i);
   }
+  checkLoopBudget();
 }

@@ -49,8 +49,8 @@ PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 1024;
 // The large triangles' buffers grow with the image, not the triangle count (a large triangle
 // covers many pixels, so few fit on screen at once): room for one set-up record (80 bytes) per
 // LARGE_SETUP_PIXELS pixels and one bin entry (8 bytes) per LARGE_ENTRY_PIXELS pixels, with the
-// minimums below. When a frame needs more, the triangle pass rasterizes the overflow itself with
-// atomics (slower, same result).
+// minimums below. When a frame needs more, the host doubles them and renders it again
+// (STATUS_LARGE_OVERFLOW); they keep that size for the frames after.
 PHONGVK_CONST uint LARGE_SETUP_PIXELS = 512;
 PHONGVK_CONST uint LARGE_SETUPS_MIN = 256;
 PHONGVK_CONST uint LARGE_ENTRY_PIXELS = 64;
@@ -110,6 +110,16 @@ PHONGVK_CONST uint BINDING_LARGE_TEXELS = 14;        // the large list (BINDING_
 PHONGVK_CONST uint BINDING_LARGE_SETUP_TEXELS = 15;  // the large set-ups (BINDING_LARGE_SETUPS), likewise
 PHONGVK_CONST uint BINDING_SHADED_COLORS = 16;       // ShadedVertex.color per vertex (vec4[])
 PHONGVK_CONST uint BINDING_SHADED_COLOR_TEXELS = 17; // the same, as texels
+PHONGVK_CONST uint BINDING_STATUS = 18;              // FrameStatus, host visible: why a frame must be rendered again
+
+// FrameStatus.flags. STATUS_LARGE_OVERFLOW: a large triangle found no room in the set-up records
+// or bin entries (the host grows them). STATUS_LOOP_LIMIT: a pass ran out of the loop iterations
+// the device allows one invocation (bindings.glsl checkLoopBudget; the host launches more
+// workgroups, each taking fewer items). Either way the host renders the frame again.
+PHONGVK_CONST uint STATUS_LARGE_OVERFLOW = 1;
+PHONGVK_CONST uint STATUS_LOOP_LIMIT = 2;
+// Iterations of the loop-budget probe (FrameData.loopProbe; a frame value, so no compiler unrolls it).
+PHONGVK_CONST uint LOOP_PROBE_ITERATIONS = 2;
 
 // ---- Buffer structs ----
 // A mesh vertex in its object's local frame (position relative to the object origin).
@@ -181,6 +191,18 @@ struct FrameData {
   uint keepKeys;       // 1: resolve leaves each pixel's final key in the key buffer (for diffs)
   uint colorsInKeys;   // 1: resolve writes each colour into its pixel's key slot (raster.h colorSlot), the
                        // host reads and clears it there; 0: into the colour buffer, clearing the key
+  uint loopProbe;      // LOOP_PROBE_ITERATIONS
+  uint pad2;
+  uint pad3;
+  uint pad4;
+};
+
+// What went wrong in a frame (STATUS_* flags); the host clears it before each submission.
+struct FrameStatus {
+  uint flags;
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // Header of the touched-bin list. The bin buffer holds this header, then per bin its flags
@@ -205,7 +227,7 @@ struct IdList {
 // Header of the large triangles' bin entries: uvec2 (set-up slot, next entry of the same bin)
 // follow it in the buffer, each bin's list threaded through them from its head.
 struct LargeList {
-  uint count;        // entries reserved (may exceed the capacity; those triangles were drawn in place)
+  uint count;        // entries reserved (may exceed the capacity: the frame is then rendered again)
   uint setups;       // set-up slots reserved (likewise)
   uint pad0;
   uint pad1;
@@ -222,7 +244,8 @@ static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearP
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);
 static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, triangleCount) == 108);
 static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
-static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 160);
+static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 176);
+static_assert(sizeof(FrameStatus) == 16);
 static_assert(sizeof(LargeList) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 16);
 }  // namespace phongvk::gpu
 #endif

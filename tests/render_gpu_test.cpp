@@ -163,12 +163,35 @@ TEST(GpuRender, FramesLeaveNoColourBehindInEitherOutput) {
   EXPECT_EQ(context.validation->count(), 0u);
 }
 
+// One workgroup per pass: on lavapipe, resolving a 4K frame of large triangles in one invocation
+// runs out of loop iterations (65535 per invocation), which cut the frame short without a word.
+// The frame must be noticed and rendered again with more workgroups, and equal the reference.
+TEST(GpuRender, FrameOutOfLoopIterationsIsRenderedAgainWithMoreWorkgroups) {
+  Scene scene = loadScene(test::sourcePath("scenes/floor_and_walls.json"));
+  scene.camera.width = 3840;
+  scene.camera.height = 2160;
+  const SceneData data = buildSceneData(scene);
+  const FrameInputs in = makeFrame(data, makeView(scene.camera));
+  VulkanContext context = createContext({-1, true});
+  {
+    GpuRenderer gpu(context, data, ResolveLayout::Auto, ColorOutput::Auto, 1);
+    const RenderOutput out = gpu.render(in);
+    EXPECT_EQ(out.image.rgb, renderReference(data, in).image.rgb);
+    if (context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+      EXPECT_GT(gpu.framesRepeated(), 0u) << "one workgroup was expected to run out of loop iterations on lavapipe";
+    }
+  }
+  destroyContext(context);
+  EXPECT_EQ(context.validation->count(), 0u);
+}
+
 TEST(GpuRender, OverflowingTheLargeTriangleListStillMatchesEveryRun) {
   // 40 open cubes stacked in front of the camera, every face filling much of the 640x480 view:
   // about 40 * 8 large triangles each reserving a bin entry for most of the 300 bins, far more
-  // than the large list holds (640*480/64 entries), so later reservations fail and those
-  // triangles are drawn in place with atomics. Whichever triangles overflow (thread order), the
-  // image must equal the reference, run after run.
+  // than the large list first holds (640*480/64 entries), so the first frame overflows and is
+  // rendered again with larger lists. The image must equal the reference, run after run. (Large
+  // triangles that overflowed used to be drawn in place, one invocation each, and on lavapipe a
+  // screen-filling one ran out of loop iterations at row 123: about 1 run in 40 was wrong.)
   std::string objects;
   for (int i = 0; i < 40; ++i) {
     objects += std::string(i ? "," : "") + R"({"shape": "cube", "closed": false, "size": 40, "center": [0, )" +
@@ -197,6 +220,7 @@ TEST(GpuRender, OverflowingTheLargeTriangleListStillMatchesEveryRun) {
       EXPECT_EQ(out.keys, ref.keys) << "run " << run;
       EXPECT_EQ(out.image.rgb, ref.image.rgb) << "run " << run;
     }
+    EXPECT_GT(gpu.framesRepeated(), 0u) << "the lists were expected to overflow at first";
   }
   destroyContext(context);
   EXPECT_EQ(context.validation->count(), 0u);
