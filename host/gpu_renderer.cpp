@@ -500,9 +500,7 @@ Image imageFromKeySlots(std::span<uint64_t> slots, uint32_t background, int widt
       color = uint32_t(slot);
       slots[i] = KEY_CLEAR;
     }
-    image.rgb[i * 3 + 0] = uint8_t(color);
-    image.rgb[i * 3 + 1] = uint8_t(color >> 8);
-    image.rgb[i * 3 + 2] = uint8_t(color >> 16);
+    image.setPacked(i, color);
   }
   return image;
 }

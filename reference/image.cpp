@@ -41,9 +41,7 @@ namespace phongvk {
 Image imageFromPacked(std::span<const uint32_t> packed, int width, int height) {
   Image image(width, height);
   for (size_t i = 0; i < packed.size() && i < static_cast<size_t>(width) * height; ++i) {
-    image.rgb[i * 3 + 0] = static_cast<uint8_t>(packed[i] & 0xFF);
-    image.rgb[i * 3 + 1] = static_cast<uint8_t>((packed[i] >> 8) & 0xFF);
-    image.rgb[i * 3 + 2] = static_cast<uint8_t>((packed[i] >> 16) & 0xFF);
+    image.setPacked(i, packed[i]);
   }
   return image;
 }

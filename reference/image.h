@@ -24,6 +24,12 @@ struct Image {
   Image(int w, int h) : width(w), height(h), rgb(static_cast<size_t>(w) * h * 3, 0) {}
   const uint8_t* pixel(int x, int y) const { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
   uint8_t* pixel(int x, int y) { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
+  // Pixel i (row-major) from a packed RGBA8 word (r in the low byte; alpha dropped).
+  void setPacked(size_t i, uint32_t packed) {
+    rgb[i * 3 + 0] = static_cast<uint8_t>(packed);
+    rgb[i * 3 + 1] = static_cast<uint8_t>(packed >> 8);
+    rgb[i * 3 + 2] = static_cast<uint8_t>(packed >> 16);
+  }
 };
 
 // An image from packed RGBA8 words (r in the low byte), as the shaders write them.
