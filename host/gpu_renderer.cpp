@@ -228,8 +228,9 @@ void GpuRenderer::uploadScene(const SceneData& data) {
 
 }
 
-// Keys start cleared once, here; from then on the resolve pass resets the keys a frame wrote, so no
-// frame pays for clearing or scanning the whole key buffer.
+// New keys are cleared by the first frame (keysDirty_); from then on resolve resets the keys a frame
+// wrote (or the host does, reading the colours from the key slots), so no frame pays for clearing
+// or scanning the whole key buffer, except after a frame with keys or one rendered again.
 void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   if (width == width_ && height == height_) return;
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
@@ -246,10 +247,7 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
                colorsInKeys_ ? MemoryKind::Shared : MemoryKind::DeviceLocal);
   createBuffer(bins_, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
                STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
-  VkCommandBuffer cmd = beginOneTimeCommands(context_);
-  vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
-  submitAndWait(context_, cmd);
-  keysDirty_ = false;
+  keysDirty_ = true;  // the first frame clears the new keys
   width_ = width;
   height_ = height;
   ensureColorBuffer(!colorsInKeys_);  // updates the descriptors
@@ -405,14 +403,11 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 3);
-  if (withKeys) {  // resolve left the final keys (frame.keepKeys): copy them, then clear for the next frame
+  if (withKeys) {  // resolve left the final keys (frame.keepKeys): copy them; the next frame clears them
     memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+                  VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferCopy keyCopy = {0, 0, VkDeviceSize(frame.width) * frame.height * sizeof(uint64_t)};
     vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_ACCESS_TRANSFER_WRITE_BIT);
-    vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
   }
 }
 
@@ -454,8 +449,10 @@ bool GpuRenderer::renderAttempt(bool withKeys) {
   auto* status = static_cast<FrameStatus*>(status_.mapped);
   *status = {};  // coherent memory: the device sees it at submission
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
-  recordFrame(cmd, lastFrame_, withKeys);  // as uploaded (bin counts included)
-  keysDirty_ = keysDirty_ || lastFrame_.colorsInKeys != 0u;
+  recordFrame(cmd, lastFrame_, withKeys);  // as uploaded (bin counts included); clears keysDirty_ keys first
+  // What this frame leaves in the key slots for the next to clear: its final keys (withKeys), or
+  // its colours, unless the host resets those as it reads them (readImage).
+  keysDirty_ = withKeys || lastFrame_.colorsInKeys != 0u;
   submitAndWait(context_, cmd);
   readTimes();
   if (status->flags == 0u) return true;
