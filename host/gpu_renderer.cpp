@@ -335,6 +335,13 @@ bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::ve
 
 }  // namespace
 
+// The frame fields that follow the renderer's buffers and workgroup cap, which prepareRetry grows.
+void GpuRenderer::setRendererLimits(FrameData& frame) const {
+  frame.largeCapacity = largeCapacity_;
+  frame.largeSetupCapacity = largeSetupCapacity_;
+  frame.groupCap = groupCap_;
+}
+
 // Sends only what changed since the last frame. Vertex colours are recomputed only when their
 // inputs changed: materials, lights, ambient, or the eye when some material is specular.
 void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
@@ -347,10 +354,8 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged ||
                            (eyeMoved && !lightingIsViewIndependent(in));
   FrameData frame = f;
-  frame.largeCapacity = largeCapacity_;
+  setRendererLimits(frame);
   frame.binsX = binsAcross(frame.width);
-  frame.largeSetupCapacity = largeSetupCapacity_;
-  frame.groupCap = groupCap_;
   frame.loopProbe = LOOP_PROBE_ITERATIONS;
   frame.binCount = binsAcross(frame.width) * binsAcross(frame.height);
   frame.keepKeys = withKeys ? 1u : 0u;
@@ -477,9 +482,7 @@ void GpuRenderer::prepareRetry(uint32_t statusFlags) {
   }
   keysDirty_ = true;
   ++framesRepeated_;
-  lastFrame_.largeCapacity = largeCapacity_;
-  lastFrame_.largeSetupCapacity = largeSetupCapacity_;
-  lastFrame_.groupCap = groupCap_;
+  setRendererLimits(lastFrame_);
   lastFrame_.shadeColors = 1u;
   uploadToBuffer(context_, frame_, &lastFrame_, sizeof(FrameData));
 }

@@ -86,6 +86,7 @@ class GpuRenderer {
   bool renderAttempt(bool withKeys);
   void prepareRetry(uint32_t statusFlags);
   void updateDescriptors();
+  void setRendererLimits(gpu::FrameData& frame) const;
   void uploadFrame(const FrameInputs& in, bool withKeys);
   void recordFrame(VkCommandBuffer cmd, const gpu::FrameData& frame, bool withKeys);
   void readTimes();
