@@ -92,7 +92,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, Re
   try {
     // What the scene's frames will use, all at once; the raster pass's set layout serves every
     // pass (updateDescriptors).
-    compilePipelines(requestsFor(data.materials, data.lights.size(), data.interpolation));
+    compilePipelines(requestsFor(data.materials, data.lights.size(), data.interpolation, resolveOutput(false)));
     current_[RASTER] = pipeline({RASTER, {}});
     createDescriptorArena(arena_, context_, 1);
     createTimestampPool(timestamps_, context_, TIMESTAMP_SLOTS);
@@ -186,20 +186,31 @@ const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) con
   return pipelines_.at(pipelineKey(request.pass, request.specs));
 }
 
-// Every pass's pipeline for frames with these materials, lights and interpolation mode.
+// Every pass's pipeline for frames with these materials, lights and interpolation mode, whose
+// colours go where `output` says (RESOLVE_OUTPUT_*).
 std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::vector<MaterialData>& materials,
-                                                                   size_t lightCount, uint32_t interpolation) const {
+                                                                   size_t lightCount, uint32_t interpolation,
+                                                                   uint32_t output) const {
   return {
       {SHADE, shadeSpecs(materials, lightCount)},
       {RASTER, {}},
       {CLIP, {}},
-      {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}}},
-      {RESOLVE_LARGE, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}}},
+      {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_OUTPUT, output}}},
+      {RESOLVE_LARGE,
+       {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
   };
 }
 
+// Where resolve puts a frame's colours (FrameData.keepKeys and .colorsInKeys, as uploadFrame sets
+// them): frames with keys compile their own resolve pipelines when first asked for.
+uint32_t GpuRenderer::resolveOutput(bool withKeys) const {
+  if (withKeys) return RESOLVE_OUTPUT_KEEP_KEYS;
+  return colorsInKeys_ ? RESOLVE_OUTPUT_KEY_SLOTS : RESOLVE_OUTPUT_COLORS;
+}
+
 void GpuRenderer::selectPipelines(const FrameInputs& in) {
-  const std::vector<PipelineRequest> requests = requestsFor(in.materials, in.lights.size(), in.frame.interpolation);
+  const std::vector<PipelineRequest> requests =
+      requestsFor(in.materials, in.lights.size(), in.frame.interpolation, resolveOutput(lastFrame_.keepKeys != 0u));
   compilePipelines(requests);
   for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);
 }
@@ -359,7 +370,7 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   frame.loopProbe = LOOP_PROBE_ITERATIONS;
   frame.binCount = binsAcross(frame.width) * binsAcross(frame.height);
   frame.keepKeys = withKeys ? 1u : 0u;
-  frame.colorsInKeys = colorsInKeys_ && !withKeys ? 1u : 0u;
+  frame.colorsInKeys = resolveOutput(withKeys) == RESOLVE_OUTPUT_KEY_SLOTS ? 1u : 0u;
   frame.shadeColors = colorsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
   lastFrame_ = frame;

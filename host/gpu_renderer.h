@@ -74,7 +74,8 @@ class GpuRenderer {
 
   void release();  // destroys whatever exists; safe to call twice
   std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
-                                          uint32_t interpolation) const;
+                                          uint32_t interpolation, uint32_t output) const;
+  uint32_t resolveOutput(bool withKeys) const;
   void compilePipelines(const std::vector<PipelineRequest>& requests);
   const ComputePipeline& pipeline(const PipelineRequest& request) const;
   void selectPipelines(const FrameInputs& in);

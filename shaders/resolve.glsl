@@ -3,6 +3,7 @@
 // large triangles, then resolve_small the tiles small triangles touched.
 
 layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
+layout(constant_id = SPEC_RESOLVE_OUTPUT) const uint OUTPUT = RESOLVE_OUTPUT_KEY_SLOTS;
 
 // A touched bin: its first pixel, its flags (shared.h BIN_*) and the head of its large-triangle list.
 struct Bin {
@@ -27,15 +28,15 @@ bool inImage(int x, int y) { return x < int(frame.width) && y < int(frame.height
 
 uint pixelIndex(int x, int y) { return uint(y) * frame.width + uint(x); }
 
-// Pixel i's final colour, won by `key`: into its key slot (frame.colorsInKeys), or into the colour
-// buffer with the key reset for the next frame (kept final for diffs, frame.keepKeys;
-// `keyChanged` false when the slot already holds KEY_CLEAR).
+// Pixel i's final colour, won by `key`, where OUTPUT says: into its key slot, or into the colour
+// buffer with the key reset for the next frame (or kept final, for diffs; `keyChanged` false when
+// the slot already holds KEY_CLEAR).
 void storeColor(uint i, uint color, uint64_t key, bool keyChanged) {
-  if (frame.colorsInKeys != 0u) {
+  if (OUTPUT == RESOLVE_OUTPUT_KEY_SLOTS) {
     keys[i] = colorSlot(color);
     return;
   }
-  if (frame.keepKeys != 0u) keys[i] = key;
+  if (OUTPUT == RESOLVE_OUTPUT_KEEP_KEYS) keys[i] = key;
   else if (keyChanged) keys[i] = KEY_CLEAR;
   colors[i] = color;
 }

@@ -77,6 +77,13 @@ PHONGVK_CONST uint SPEC_CONSTANT_ATTENUATION = 2;
 PHONGVK_CONST uint SPEC_INTERPOLATION = 0;
 // resolve: tiles a workgroup takes at once (local_size_y; 8 lanes each): 1 on CPU devices, 8 on GPUs.
 PHONGVK_CONST uint SPEC_RESOLVE_TILES = 1;
+// resolve: where the colours go (RESOLVE_OUTPUT_*, from FrameData.keepKeys and .colorsInKeys). A
+// constant, not a frame field: lavapipe runs every side of a branch, and the three stores of a
+// frame-chosen output each cost a loop over the lanes per pixel.
+PHONGVK_CONST uint SPEC_RESOLVE_OUTPUT = 2;
+PHONGVK_CONST uint RESOLVE_OUTPUT_KEY_SLOTS = 0;   // colorsInKeys: the colour into the pixel's key slot
+PHONGVK_CONST uint RESOLVE_OUTPUT_COLORS = 1;      // into the colour buffer, the key reset to KEY_CLEAR
+PHONGVK_CONST uint RESOLVE_OUTPUT_KEEP_KEYS = 2;   // keepKeys: into the colour buffer, the final key kept
 
 // Interpolation modes (FrameData.interpolation).
 PHONGVK_CONST uint INTERP_PERSPECTIVE = 0;
@@ -190,7 +197,8 @@ struct FrameData {
   uint binCount;       // binsX * bins down
   uint keepKeys;       // 1: resolve leaves each pixel's final key in the key buffer (for diffs)
   uint colorsInKeys;   // 1: resolve writes each colour into its pixel's key slot (raster.h colorSlot), the
-                       // host reads and clears it there; 0: into the colour buffer, clearing the key
+                       // host reads and clears it there; 0: into the colour buffer, clearing the key.
+                       // The resolve passes take both as SPEC_RESOLVE_OUTPUT.
   uint loopProbe;      // LOOP_PROBE_ITERATIONS
   uint pad2;
   uint pad3;
