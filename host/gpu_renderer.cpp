@@ -281,7 +281,7 @@ void GpuRenderer::ensureColorBuffer(bool wholeImage) {
 void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
   const uint32_t evenEntries = (entries + 1u) & ~1u;
   const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(evenEntries) * sizeof(glm::uvec2);
-  const VkDeviceSize setupBytes = VkDeviceSize(setups) * sizeof(LargeTriangle);
+  const VkDeviceSize setupBytes = VkDeviceSize(setups) * sizeof(LargeSetup);
   checkFits(context_, largeBytes, "the large triangles' bin entries");
   checkFits(context_, setupBytes, "the large triangles' set-ups");
   checkTexels(context_, largeBytes / TEXEL_BYTES, "the large triangles' bin entries");

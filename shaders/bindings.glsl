@@ -24,7 +24,7 @@ layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 la
 // large-triangle list, binData[2 binCount + k] the k-th touched bin as x | y << 16. Resolve visits
 // only those, resetting the keys it read, so a frame never clears or scans the whole key buffer.
 layout(std430, binding = BINDING_BINS) buffer Bins { BinList binList; uint binData[]; };
-layout(std430, binding = BINDING_LARGE_SETUPS) buffer LargeSetups { LargeTriangle largeSetups[]; };
+layout(std430, binding = BINDING_LARGE_SETUPS) writeonly buffer LargeSetups { LargeSetup largeSetups[]; };
 layout(std430, binding = BINDING_CLIP_LIST) buffer ClipList { IdList clipList; uint clipIds[]; };
 layout(std430, binding = BINDING_STATUS) buffer Status { FrameStatus status; };
 
@@ -73,9 +73,9 @@ uvec2 largeEntry(uint e) {
   return (e & 1u) == 0u ? t.xy : t.zw;
 }
 
-// Large set-up `slot` (raster.h LargeTriangle, five texels).
+// Large set-up `slot` (raster.h LargeSetup, ten texels): its raster half, the first five.
 LargeTriangle largeSetup(uint slot) {
-  int k = int(5u * slot);
+  int k = int(10u * slot);
   uvec4 a = texelFetch(largeSetupTexels, k);
   uvec4 b = texelFetch(largeSetupTexels, k + 1);
   uvec4 c = texelFetch(largeSetupTexels, k + 2);
@@ -83,6 +83,14 @@ LargeTriangle largeSetup(uint slot) {
   uvec4 f = texelFetch(largeSetupTexels, k + 4);
   return LargeTriangle(ivec4(a), TrianglePlane(uintBitsToFloat(b.xyz), uintBitsToFloat(b.w)), ivec2(c.xy), ivec2(c.zw),
                        ivec2(d.xy), int(d.z), int(d.w), int(f.x), uintBitsToFloat(f.y), uintBitsToFloat(f.z), f.w);
+}
+
+// Large set-up `slot`'s shading half (raster.h LargeShading), the last five texels.
+LargeShading largeShading(uint slot) {
+  int k = int(10u * slot) + 5;
+  return LargeShading(floats(texelFetch(largeSetupTexels, k)), floats(texelFetch(largeSetupTexels, k + 1)),
+                      floats(texelFetch(largeSetupTexels, k + 2)), floats(texelFetch(largeSetupTexels, k + 3)),
+                      floats(texelFetch(largeSetupTexels, k + 4)));
 }
 
 // Shaded vertex v (for the passes after shade_vertices, which writes shadedPositions[] and
@@ -106,4 +114,11 @@ void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullB
   h0 = floats(texelFetch(shadedTexels, int(tri.x))).xyz;
   h1 = floats(texelFetch(shadedTexels, int(tri.y))).xyz;
   h2 = floats(texelFetch(shadedTexels, int(tri.z))).xyz;
+}
+
+// Triangle `id`'s Gouraud constants (raster.h).
+GouraudTriangle loadGouraud(uint id) {
+  ShadedVertex a, b, c;
+  loadTriangle(id, a, b, c);
+  return gouraudTriangle(a, b, c);
 }

@@ -628,6 +628,47 @@ FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
   return c;
 }
 
+// A large triangle's GouraudTriangle as resolve reads it for each pixel the triangle wins: stored
+// with its set-up by the clip pass (LargeSetup), five texels instead of the triangle's index, its
+// three vertices' positions and colours and the products above (fig1_cube: 7 texel fetches and
+// the set-up arithmetic per row of each tile). Only the fields interpolation `mode` uses: the w
+// of t0..t2 holds n (perspective) or w1, w2, det (screen).
+struct LargeShading {
+  vec4 t0;  // u1, n.x | w1
+  vec4 t1;  // u2, n.y | w2
+  vec4 t2;  // c0, n.z | det
+  vec4 t3;  // dc1, dc2.x
+  vec4 t4;  // dc2.y, dc2.z, 0, 0
+};
+
+FN LargeShading packShading(GouraudTriangle g, uint mode) {
+  bool screen = mode == INTERP_SCREEN;
+  LargeShading s;
+  s.t0 = vec4(g.u1, screen ? g.w1 : g.n.x);
+  s.t1 = vec4(g.u2, screen ? g.w2 : g.n.y);
+  s.t2 = vec4(g.c0, screen ? g.det : g.n.z);
+  s.t3 = vec4(g.dc1, g.dc2.x);
+  s.t4 = vec4(g.dc2.y, g.dc2.z, 0.0f, 0.0f);
+  return s;
+}
+
+// The GouraudTriangle packShading(g, mode) kept: every field interpolateColor reads in `mode`
+// equals g's, bit for bit; the others are 0.
+FN GouraudTriangle unpackShading(LargeShading s, uint mode) {
+  bool screen = mode == INTERP_SCREEN;
+  GouraudTriangle g;
+  g.u1 = vec3(s.t0);
+  g.u2 = vec3(s.t1);
+  g.c0 = vec3(s.t2);
+  g.n = screen ? vec3(0.0f) : vec3(s.t0.w, s.t1.w, s.t2.w);
+  g.w1 = screen ? s.t0.w : 0.0f;
+  g.w2 = screen ? s.t1.w : 0.0f;
+  g.det = screen ? s.t2.w : 0.0f;
+  g.dc1 = vec3(s.t3);
+  g.dc2 = vec3(s.t3.w, s.t4.x, s.t4.y);
+  return g;
+}
+
 // Clamp to [0, 1], round(c * 255), pack as RGBA8 with opaque alpha.
 FN uint packColor(vec3 c) {
   PRECISE vec3 q = floor(clamp(c, vec3(0.0f), vec3(1.0f)) * 255.0f + 0.5f);
@@ -645,9 +686,17 @@ FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int 
   return shadePixel(gouraudTriangle(a, b, c), x, y, frame, mode);
 }
 
+// What the clip pass stores per large sub-triangle (std430, 160 bytes = 10 texels): resolve's
+// bin-entry loop reads the raster half, and the shading half only for the pixels it wins.
+struct LargeSetup {
+  LargeTriangle raster;
+  LargeShading shading;
+};
+
 SHARED_END
 
 #ifdef __cplusplus
+static_assert(sizeof(phongvk::gpu::LargeSetup) == 160 && offsetof(phongvk::gpu::LargeSetup, shading) == 80);
 static_assert(sizeof(phongvk::gpu::LargeTriangle) == 80 && offsetof(phongvk::gpu::LargeTriangle, v0) == 32);
 static_assert(offsetof(phongvk::gpu::LargeTriangle, zMin) == 68 && offsetof(phongvk::gpu::LargeTriangle, triangle) == 76);
 static_assert(offsetof(phongvk::gpu::LargeTriangle, bias0) == 56 && offsetof(phongvk::gpu::LargeTriangle, bias2) == 64);

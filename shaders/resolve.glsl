@@ -41,9 +41,3 @@ void storeColor(uint i, uint color, uint64_t key, bool keyChanged) {
   colors[i] = color;
 }
 
-// Triangle `id`'s Gouraud constants (raster.h).
-GouraudTriangle loadGouraud(uint id) {
-  ShadedVertex a, b, c;
-  loadTriangle(id, a, b, c);
-  return gouraudTriangle(a, b, c);
-}

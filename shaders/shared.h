@@ -47,7 +47,7 @@ PHONGVK_CONST float GUARD_BAND = 524288.0f;  // 2^19 pixels
 // Small triangles stay one invocation each, with atomicMin on the key buffer.
 PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 1024;
 // The large triangles' buffers grow with the image, not the triangle count (a large triangle
-// covers many pixels, so few fit on screen at once): room for one set-up record (80 bytes) per
+// covers many pixels, so few fit on screen at once): room for one set-up record (160 bytes) per
 // LARGE_SETUP_PIXELS pixels and one bin entry (8 bytes) per LARGE_ENTRY_PIXELS pixels, with the
 // minimums below. When a frame needs more, the host doubles them and renders it again
 // (STATUS_LARGE_OVERFLOW); they keep that size for the frames after.
@@ -104,7 +104,7 @@ PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one 
 PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
 PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (set-up slot, next) bin entries
 PHONGVK_CONST uint BINDING_BINS = 10;        // BinList header, flags and list heads per bin, touched bins
-PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeTriangle (raster.h) of each large triangle
+PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeSetup (raster.h) of each large triangle
 PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles for the clip pass (clipped or not small)
 // The shaded vertices again, as uniform texel buffers (one texel per vertex: hpos; colour) for the
 // passes that only read them. Triangles are a texel buffer too: texelFetch is gathered in SIMD by
