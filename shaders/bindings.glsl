@@ -5,7 +5,13 @@
 // being whole texels, unpacked by the functions below (uintBitsToFloat keeps every bit, even of
 // subnormals and NaNs): lavapipe gathers a texelFetch in SIMD, while it loads from a storage
 // buffer lane by lane, with a branch and a bounds check each.
-layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frame; };
+layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frameBlock; };
+// The frame as the passes read it: a private copy every main makes first (loadFrame). Where
+// FrameData went to a function by value straight from the block, lavapipe loaded the members it
+// used lane by lane, a gather with a bounds check each, in every pixel loop (resolve_large on
+// fig1_cube: 33 such gathers, a fifth of its instructions); the copy is loaded once.
+FrameData frame;
+void loadFrame() { frame = frameBlock; }
 layout(binding = BINDING_VERTICES) uniform usamplerBuffer vertexTexels;
 layout(binding = BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
 layout(binding = BINDING_OBJECTS) uniform usamplerBuffer objectTexels;

@@ -16,6 +16,7 @@
 layout(local_size_x = CLIP_GROUP_SIZE) in;
 
 void main() {
+  loadFrame();
   for (uint k = gl_GlobalInvocationID.x; k < clipList.count; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
     uint id = clipIds[k];
     vec3 h0, h1, h2;

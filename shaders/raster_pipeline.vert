@@ -36,6 +36,7 @@ vec4 clipPosition(vec3 h) {
 }
 
 void main() {
+  loadFrame();
   VertexIn v = vertexIn(gl_VertexIndex);
   ObjectData object = objectData(v.object);
   MaterialData m = materialData(object.material);

@@ -26,6 +26,7 @@ void rasterizeSmallTriangle(TriangleSetup t) {
 }
 
 void main() {
+  loadFrame();
   // Grid-stride: the host caps the group count at frame.groupCap.
   for (uint id = gl_GlobalInvocationID.x; id < frame.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
     vec3 h0, h1, h2;

@@ -80,6 +80,7 @@ void resolveTile(ivec2 origin, uint head, bool keysWritten) {
 }
 
 void main() {
+  loadFrame();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
     Bin b = touchedBin(k);
     if (b.head == LIST_END) continue;  // resolve_small's

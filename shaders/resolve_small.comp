@@ -28,6 +28,7 @@ void resolvePixelOf(uvec2 origin) {
 }
 
 void main() {
+  loadFrame();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
     Bin b = touchedBin(k);
     // The tiles small triangles wrote keys in, lowest first (none: only large triangles, resolve_large's).

@@ -29,6 +29,7 @@ void shadeVertex(uint i) {
 }
 
 void main() {
+  loadFrame();
   // Grid-stride: the host caps the group count at frame.groupCap.
   for (uint i = gl_GlobalInvocationID.x; i < frame.vertexCount; i += gl_NumWorkGroups.x * SHADE_GROUP_SIZE) {
     shadeVertex(i);
