@@ -358,8 +358,11 @@ void GpuRenderer::setRendererLimits(FrameData& frame) const {
 void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   const bool materialsChanged = uploadIfChanged(context_, materials_.buffer, in.materials, lastMaterials_, "materials");
   const bool lightsChanged = uploadIfChanged(context_, lights_.buffer, in.lights, lastLights_, "lights");
-  uploadIfChanged(context_, objects_.buffer, in.objects, lastObjects_, "objects");
+  const bool objectsChanged = uploadIfChanged(context_, objects_.buffer, in.objects, lastObjects_, "objects");
   const FrameData& f = in.frame;
+  // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
+  const bool positionsStale = !framesSent_ || objectsChanged || f.right != lastFrame_.right ||
+                              f.up != lastFrame_.up || f.forward != lastFrame_.forward || f.focal != lastFrame_.focal;
   const bool eyeMoved = !framesSent_ || f.eye != lastFrame_.eye;
   const bool ambientChanged = !framesSent_ || f.ambient != lastFrame_.ambient;
   const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged ||
@@ -372,10 +375,12 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   frame.keepKeys = withKeys ? 1u : 0u;
   frame.colorsInKeys = resolveOutput(withKeys) == RESOLVE_OUTPUT_KEY_SLOTS ? 1u : 0u;
   frame.shadeColors = colorsStale ? 1u : 0u;
+  frame.shadePositions = positionsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
   lastFrame_ = frame;
   ++framesSent_;
   framesShaded_ += colorsStale;
+  framesTransformed_ += positionsStale;
 }
 
 void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool withKeys) {
@@ -399,10 +404,12 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].layout, 0, 1, &set_, 0, nullptr);
   };
   writeTimestamp(cmd, timestamps_, 0);
-  bind(SHADE);
   const uint32_t cap = frame.groupCap;
-  vkCmdDispatch(cmd, std::min(groupCount(vertexCount_, SHADE_GROUP_SIZE), cap), 1, 1);
-  computeBarrier(cmd);
+  if (frame.shadeColors != 0u || frame.shadePositions != 0u) {  // else last frame's still hold
+    bind(SHADE);
+    vkCmdDispatch(cmd, std::min(groupCount(vertexCount_, SHADE_GROUP_SIZE), cap), 1, 1);
+    computeBarrier(cmd);
+  }
   writeTimestamp(cmd, timestamps_, 1);
   bind(RASTER);
   vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
@@ -478,7 +485,7 @@ bool GpuRenderer::renderAttempt(bool withKeys) {
 
 // Makes room for what the last attempt lacked (STATUS_* flags): twice the large triangles' lists,
 // or 16 times the workgroups per pass. The attempt's keys and colours are thrown away, and the
-// next one relights the vertices (a cut-short shade pass may have left some unlit).
+// next one transforms and relights the vertices (a cut-short shade pass may have left some out).
 void GpuRenderer::prepareRetry(uint32_t statusFlags) {
   if (statusFlags & STATUS_LARGE_OVERFLOW) {
     createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
@@ -495,6 +502,7 @@ void GpuRenderer::prepareRetry(uint32_t statusFlags) {
   ++framesRepeated_;
   setRendererLimits(lastFrame_);
   lastFrame_.shadeColors = 1u;
+  lastFrame_.shadePositions = 1u;
   uploadToBuffer(context_, frame_, &lastFrame_, sizeof(FrameData));
 }
 

@@ -61,6 +61,10 @@ class GpuRenderer {
   // Frames so far whose per-vertex lighting was recomputed (the others only transformed).
   uint64_t framesShaded() const { return framesShaded_; }
 
+  // Frames so far whose vertex positions were transformed (the others kept the previous frame's:
+  // same view and objects).
+  uint64_t framesTransformed() const { return framesTransformed_; }
+
  private:
   enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
@@ -123,6 +127,7 @@ class GpuRenderer {
   gpu::FrameData lastFrame_{};
   uint64_t framesSent_ = 0;
   uint64_t framesShaded_ = 0;
+  uint64_t framesTransformed_ = 0;
 };
 
 }  // namespace phongvk

@@ -2,6 +2,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_control_flow_attributes : require
 #include "shared.h"
 #include "raster.h"
 #include "bindings.glsl"
@@ -17,7 +18,11 @@ void shadeVertex(uint i) {
   VertexIn v = vertexIn(i);
   ObjectData object = objectData(v.object);
   MaterialData m = materialData(object.material);
-  shadedPositions[i] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
+  // Only when the view or an object moved: a loop of 0 or 1 trips, the same for every lane, which
+  // lavapipe really skips (an if would still run the store's loop over the lanes).
+  [[dont_unroll]] for (uint k = frame.shadePositions; k != 0u; --k) {
+    shadedPositions[i] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
+  }
   if (frame.shadeColors == 0u) return;  // lighting inputs unchanged and view-independent
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);

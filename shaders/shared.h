@@ -200,7 +200,8 @@ struct FrameData {
                        // host reads and clears it there; 0: into the colour buffer, clearing the key.
                        // The resolve passes take both as SPEC_RESOLVE_OUTPUT.
   uint loopProbe;      // LOOP_PROBE_ITERATIONS
-  uint pad2;
+  uint shadePositions; // 0: the shaded positions of the previous frame are still right (same view
+                       // and objects); with shadeColors 0 too the host skips the shade pass
   uint pad3;
   uint pad4;
 };

@@ -130,6 +130,45 @@ TEST(GpuRender, SequenceOfFramesSkipsViewIndependentLightingAndStillMatches) {
       EXPECT_EQ(out.keys, ref.keys) << "frame " << i;
     }
     EXPECT_EQ(gpu.framesShaded(), 1u);
+    EXPECT_EQ(gpu.framesTransformed(), 4u);
+  }
+  destroyContext(context);
+  EXPECT_EQ(context.validation->count(), 0u);
+}
+
+TEST(GpuRender, FramesThatOnlyChangeLightingKeepThePositionsAndStillMatch) {
+  // The view stays: the shaded positions of the first frame serve the next two (one relit, one
+  // unchanged, whose shade pass is skipped altogether); then the camera moves and they are
+  // transformed again. Every frame equals the reference, keys included.
+  Scene scene = parseScene(R"({
+    "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 160, "height": 120},
+    "lights": [{"position": [1, -1, 2]}],
+    "objects": [{"shape": "sphere", "radius": 0.6, "material": {"ks": 0.5}},
+                {"shape": "cylinder", "center": [0, 0, -0.7], "radius": 3, "height": 0.01}]
+  })",
+                           "relight.json", ".");
+  VulkanContext context = createContext({-1, true});
+  {
+    const SceneData data = buildSceneData(scene);
+    GpuRenderer gpu(context, data);
+    FrameInputs in = makeFrame(data, makeView(scene.camera));
+    auto check = [&](const char* what) {
+      const RenderOutput out = gpu.render(in, true);
+      const RenderOutput ref = renderReference(data, in);
+      EXPECT_EQ(out.image.rgb, ref.image.rgb) << what;
+      EXPECT_EQ(out.keys, ref.keys) << what;
+    };
+    check("first frame");
+    in.frame.ambient = glm::vec3(0.3f, 0.1f, 0.2f);
+    check("relit");
+    check("unchanged");
+    EXPECT_EQ(gpu.framesTransformed(), 1u);
+    EXPECT_EQ(gpu.framesShaded(), 2u);
+    scene.camera.position = {0, 3, 1.5};
+    scene.camera.direction = -scene.camera.position;
+    in = makeFrame(data, makeView(scene.camera));
+    check("moved");
+    EXPECT_EQ(gpu.framesTransformed(), 2u);
   }
   destroyContext(context);
   EXPECT_EQ(context.validation->count(), 0u);
