@@ -221,7 +221,10 @@ FN ivec2 rowSpan(EdgeSetup s, int y) {
 // products < 2^28): the same values, signs and spans as the 64-bit setup above, without 64-bit
 // arithmetic, which SIMD CPUs (lavapipe) emulate. The reference uses the 64-bit code; tests check
 // that both give the same spans.
-PHONGVK_CONST int SMALL_EXTENT = 8192;  // subpixels: 32 pixels
+// 16 pixels since session 5 (was 32): a box of at most 256 pixels, the clip pass's
+// SMALL_TRIANGLE_MAX_PIXELS, instead of up to 1024 tested one invocation each; a 2x2 grid of
+// spheres of ~200-pixel triangles -20%, nothing measured slower.
+PHONGVK_CONST int SMALL_EXTENT = 4096;  // subpixels: 16 pixels
 
 struct EdgeSetup32 {
   ivec2 v0;      // relative to origin, oriented so that inside is positive
