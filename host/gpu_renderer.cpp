@@ -208,9 +208,9 @@ uint32_t GpuRenderer::resolveOutput(bool withKeys) const {
   return colorsInKeys_ ? RESOLVE_OUTPUT_KEY_SLOTS : RESOLVE_OUTPUT_COLORS;
 }
 
-void GpuRenderer::selectPipelines(const FrameInputs& in) {
+void GpuRenderer::selectPipelines(const FrameInputs& in, bool withKeys) {
   const std::vector<PipelineRequest> requests =
-      requestsFor(in.materials, in.lights.size(), in.frame.interpolation, resolveOutput(lastFrame_.keepKeys != 0u));
+      requestsFor(in.materials, in.lights.size(), in.frame.interpolation, resolveOutput(withKeys));
   compilePipelines(requests);
   for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);
 }
@@ -452,7 +452,7 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
                  MemoryKind::HostVisible);
   }
   uploadFrame(in, withKeys);
-  selectPipelines(in);
+  selectPipelines(in, withKeys);
   if (lastFrame_.colorsInKeys == 0u) ensureColorBuffer(true);
   while (!renderAttempt(withKeys)) {
   }

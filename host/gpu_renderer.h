@@ -82,7 +82,7 @@ class GpuRenderer {
   uint32_t resolveOutput(bool withKeys) const;
   void compilePipelines(const std::vector<PipelineRequest>& requests);
   const ComputePipeline& pipeline(const PipelineRequest& request) const;
-  void selectPipelines(const FrameInputs& in);
+  void selectPipelines(const FrameInputs& in, bool withKeys);
   void uploadScene(const SceneData& data);
   void ensureImageBuffers(uint32_t width, uint32_t height);
   void ensureColorBuffer(bool wholeImage);

@@ -105,6 +105,15 @@ TEST(GpuRender, SameBytesOnEveryThreadCount) {
   }
 }
 
+// Renders `in` with keys: the image and the keys must equal the reference's (`what` names the frame).
+void expectFrameMatchesReference(GpuRenderer& gpu, const SceneData& data, const FrameInputs& in,
+                                 const std::string& what) {
+  const RenderOutput out = gpu.render(in, true);
+  const RenderOutput ref = renderReference(data, in);
+  EXPECT_EQ(out.image.rgb, ref.image.rgb) << what;
+  EXPECT_EQ(out.keys, ref.keys) << what;
+}
+
 TEST(GpuRender, SequenceOfFramesSkipsViewIndependentLightingAndStillMatches) {
   // ks = 0 everywhere: moving the camera leaves the lighting bitwise unchanged, so the renderer
   // shades colours once and only transforms afterwards; every frame still equals the reference.
@@ -123,11 +132,7 @@ TEST(GpuRender, SequenceOfFramesSkipsViewIndependentLightingAndStillMatches) {
       const double angle = i * 0.7;
       scene.camera.position = {3 * std::cos(angle), 3 * std::sin(angle), 1};
       scene.camera.direction = -scene.camera.position;
-      const FrameInputs in = makeFrame(data, makeView(scene.camera));
-      const RenderOutput out = gpu.render(in, true);
-      const RenderOutput ref = renderReference(data, in);
-      EXPECT_EQ(out.image.rgb, ref.image.rgb) << "frame " << i;
-      EXPECT_EQ(out.keys, ref.keys) << "frame " << i;
+      expectFrameMatchesReference(gpu, data, makeFrame(data, makeView(scene.camera)), "frame " + std::to_string(i));
     }
     EXPECT_EQ(gpu.framesShaded(), 1u);
     EXPECT_EQ(gpu.framesTransformed(), 4u);
@@ -152,22 +157,15 @@ TEST(GpuRender, FramesThatOnlyChangeLightingKeepThePositionsAndStillMatch) {
     const SceneData data = buildSceneData(scene);
     GpuRenderer gpu(context, data);
     FrameInputs in = makeFrame(data, makeView(scene.camera));
-    auto check = [&](const char* what) {
-      const RenderOutput out = gpu.render(in, true);
-      const RenderOutput ref = renderReference(data, in);
-      EXPECT_EQ(out.image.rgb, ref.image.rgb) << what;
-      EXPECT_EQ(out.keys, ref.keys) << what;
-    };
-    check("first frame");
+    expectFrameMatchesReference(gpu, data, in, "first frame");
     in.frame.ambient = glm::vec3(0.3f, 0.1f, 0.2f);
-    check("relit");
-    check("unchanged");
+    expectFrameMatchesReference(gpu, data, in, "relit");
+    expectFrameMatchesReference(gpu, data, in, "unchanged");
     EXPECT_EQ(gpu.framesTransformed(), 1u);
     EXPECT_EQ(gpu.framesShaded(), 2u);
     scene.camera.position = {0, 3, 1.5};
     scene.camera.direction = -scene.camera.position;
-    in = makeFrame(data, makeView(scene.camera));
-    check("moved");
+    expectFrameMatchesReference(gpu, data, makeFrame(data, makeView(scene.camera)), "moved");
     EXPECT_EQ(gpu.framesTransformed(), 2u);
   }
   destroyContext(context);
