@@ -276,11 +276,10 @@ void GpuRenderer::ensureColorBuffer(bool wholeImage) {
 }
 
 // Room for `entries` bin entries and `setups` set-up records of large triangles, replacing any
-// there was. Both are written as storage buffers and read by resolve as texels (an even entry
-// count: whole texels). Throws, naming the limit, when they would pass the device's.
+// there was. Both are written as storage buffers and read by resolve as texels (an entry is one
+// texel). Throws, naming the limit, when they would pass the device's.
 void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
-  const uint32_t evenEntries = (entries + 1u) & ~1u;
-  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(evenEntries) * sizeof(glm::uvec2);
+  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(entries) * sizeof(LargeEntry);
   const VkDeviceSize setupBytes = VkDeviceSize(setups) * sizeof(LargeSetup);
   checkFits(context_, largeBytes, "the large triangles' bin entries");
   checkFits(context_, setupBytes, "the large triangles' set-ups");
@@ -290,7 +289,7 @@ void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
   destroyTexelBuffer(largeSetups_, context_);
   createTexelBuffer(large_, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal);
   createTexelBuffer(largeSetups_, context_, nullptr, setupBytes, STORAGE, MemoryKind::DeviceLocal);
-  largeCapacity_ = evenEntries;
+  largeCapacity_ = entries;
   largeSetupCapacity_ = setups;
 }
 

@@ -25,7 +25,7 @@ layout(std430, binding = BINDING_SHADED) writeonly buffer ShadedPositions { vec4
 layout(std430, binding = BINDING_SHADED_COLORS) writeonly buffer ShadedColors { vec4 shadedColors[]; };
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
-layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; uvec2 largeEntries[]; };
+layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; LargeEntry largeEntries[]; };
 // Bins (shared.h BinList): binData[b] is bin b's flags, binData[binCount + b] the head of its
 // large-triangle list, binData[2 binCount + k] the k-th touched bin as x | y << 16. Resolve visits
 // only those, resetting the keys it read, so a frame never clears or scans the whole key buffer.
@@ -73,10 +73,10 @@ LightData lightData(uint i) {
   return LightData(a.xyz, a.w, b.xyz, b.w);
 }
 
-// Bin entry e of the large list, (set-up slot, next entry): 8 bytes after the 16-byte header.
-uvec2 largeEntry(uint e) {
-  uvec4 t = texelFetch(largeTexels, int(1u + e / 2u));
-  return (e & 1u) == 0u ? t.xy : t.zw;
+// Bin entry e of the large list: one texel after the 16-byte header.
+LargeEntry largeEntry(uint e) {
+  uvec4 t = texelFetch(largeTexels, int(1u + e));
+  return LargeEntry(t.x, t.y, t.z, t.w);
 }
 
 // Large set-up `slot` (raster.h LargeSetup, ten texels): its raster half, the first five.

@@ -6,7 +6,8 @@
 // built with -ffp-contract=off. Rules for code in those headers:
 //   - float literals carry an `f` suffix (a bare 0.5 is a double in C++ and would promote);
 //   - dot/cross products are spelled out (dot3, cross3) so the association order is fixed;
-//   - functions are declared with FN; out/inout parameters with OUT/INOUT and OUT_ARRAY/INOUT_ARRAY.
+//   - functions are declared with FN; out/inout parameters with OUT/INOUT and OUT_ARRAY/INOUT_ARRAY;
+//   - a loop the shader must not keep as a loop is marked UNROLL.
 #ifndef PHONGVK_GLSL_CPP_H
 #define PHONGVK_GLSL_CPP_H
 
@@ -22,6 +23,7 @@
 #define INOUT(T) T&
 #define OUT_ARRAY(T, name, n) T (&name)[n]
 #define INOUT_ARRAY(T, name, n) T (&name)[n]
+#define UNROLL
 #define SHARED_BEGIN namespace phongvk::gpu {
 #define SHARED_END }
 namespace phongvk::gpu {
@@ -39,7 +41,9 @@ inline int32_t floatBitsToInt(float f) { return std::bit_cast<int32_t>(f); }
 inline float intBitsToFloat(int32_t i) { return std::bit_cast<float>(i); }
 }  // namespace phongvk::gpu
 #else
+#extension GL_EXT_control_flow_attributes : require
 #define FN
+#define UNROLL [[unroll]]
 #define PRECISE precise
 #define OUT(T) out T
 #define INOUT(T) inout T

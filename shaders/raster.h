@@ -539,6 +539,29 @@ FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
   return min(c0, min(c1, c2));
 }
 
+// The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre: bit
+// j * BIN_TILES + i for tile (i, j) unless classifyBlock calls it outside. 0: none. Unrolled:
+// lavapipe counts every loop iteration against one invocation's budget (bindings.glsl
+// checkLoopBudget), and 16 of them per bin of a triangle across a 4K image's 8160 bins pass it.
+FN uint binTileMask(LargeTriangle t, ivec2 origin) {
+  BlockEdges e = blockEdges(t, origin);
+  uint mask = 0u;
+  UNROLL for (int j = 0; j < int(BIN_TILES); ++j) {
+    UNROLL for (int i = 0; i < int(BIN_TILES); ++i) {
+      int dx = i * int(TILE_SIZE);
+      int dy = j * int(TILE_SIZE);
+      BlockEdges tile;
+      tile.e0 = edgeStep(t.v1, t.v2, e.e0, dx, dy);
+      tile.e1 = edgeStep(t.v2, t.v0, e.e1, dx, dy);
+      tile.e2 = edgeStep(t.v0, t.v1, e.e2, dx, dy);
+      if (classifyBlock(t, tile, origin + ivec2(dx, dy), int(TILE_SIZE)) != BLOCK_OUTSIDE) {
+        mask |= 1u << uint(j * int(BIN_TILES) + i);
+      }
+    }
+  }
+  return mask;
+}
+
 // The edge values walking down column i of a block: at the current row (starting at row 0), and
 // what one row down adds. Integer steps, so each row's values are exactly edgeFunction's there.
 struct ColumnEdges {
@@ -635,11 +658,10 @@ FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
   return c;
 }
 
-// A large triangle's GouraudTriangle as resolve reads it for each pixel the triangle wins: stored
-// with its set-up by the clip pass (LargeSetup), five texels instead of the triangle's index, its
-// three vertices' positions and colours and the products above (fig1_cube: 7 texel fetches and
-// the set-up arithmetic per row of each tile). Only the fields interpolation `mode` uses: the w
-// of t0..t2 holds n (perspective) or w1, w2, det (screen).
+// A large triangle's GouraudTriangle as resolve reads it for each tile the triangle may cover:
+// stored with its set-up by the clip pass (LargeSetup), five texels instead of the triangle's
+// index, its three vertices' positions and colours and the products above. Only the fields
+// interpolation `mode` uses: the w of t0..t2 holds n (perspective) or w1, w2, det (screen).
 struct LargeShading {
   vec4 t0;  // u1, n.x | w1
   vec4 t1;  // u2, n.y | w2
@@ -694,7 +716,7 @@ FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int 
 }
 
 // What the clip pass stores per large sub-triangle (std430, 160 bytes = 10 texels): resolve's
-// bin-entry loop reads the raster half, and the shading half only for the pixels it wins.
+// bin-entry loop reads both halves for each tile the triangle may cover (LargeEntry.tiles).
 struct LargeSetup {
   LargeTriangle raster;
   LargeShading shading;

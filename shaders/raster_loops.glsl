@@ -62,8 +62,8 @@ uint reserve(uint count, uint capacity, bool entries) {
 }
 
 // Stores sub-triangle s's set-up and links it into the list of every bin whose pixels it may
-// cover; resolve rasterizes it there. False, linking nothing, when the set-up records or the bin
-// entries are full.
+// cover, with the bin's tiles it may cover (binTileMask); resolve rasterizes it there, in those
+// tiles. False, linking nothing, when the set-up records or the bin entries are full.
 bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
   ivec4 bins = binsOf(s.bbox);
   uint slot = reserve(1u, frame.largeSetupCapacity, false);
@@ -77,9 +77,10 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
     for (int bx = bins.x; bx <= bins.z; ++bx) {
       ivec2 origin = ivec2(bx, by) * int(BIN_SIZE);
       // A bin of the box that the triangle misses gets no entry (its reserved one stays unused).
-      if (classifyBlock(record, blockEdges(record, origin), origin, int(BIN_SIZE)) == BLOCK_OUTSIDE) continue;
+      uint tiles = binTileMask(record, origin);
+      if (tiles == 0u) continue;
       uint bin = uint(by) * frame.binsX + uint(bx);
-      largeEntries[e] = uvec2(slot, atomicExchange(binData[frame.binCount + bin], e));
+      largeEntries[e] = LargeEntry(slot, atomicExchange(binData[frame.binCount + bin], e), tiles, 0u);
       ++e;
       touchBin(uvec2(bx, by), 0u);
     }

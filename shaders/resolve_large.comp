@@ -2,15 +2,19 @@
 // 32x32 bin at a time, 8x8 tile by tile; each lane owns the 8 pixels of one column of a tile,
 // 8 lanes a tile (one SIMD batch on a CPU device, so everything per tile is uniform there; a GPU
 // workgroup takes several tiles at once, SPEC_RESOLVE_TILES). Per pixel: its key from the key
-// buffer (where small triangles went by atomicMin, only in tiles they touched), then each of the
-// bin's large triangles tested at the lane's 8 pixels (edge values stepped down the column), the
-// smallest key kept in registers. There is no per-tile classification: lavapipe runs both sides of
-// every branch, so skipping tiles or taking a cheaper path for covered ones only added work
-// (fig1_cube 13.9 -> 12.7 ms without the covered-tile path, -> ~12 ms without classifying).
-// Where a large triangle wins, its Gouraud colour (per pixel, from the winner's LargeShading, the
-// constants the clip pass stored with its set-up: once per row instead of once per row and bin
-// entry, fig1_cube -12%) -> packed RGBA8, stored by resolve.glsl storeColor; where a small one
-// wins, the key stays for resolve_small.
+// buffer (where small triangles went by atomicMin, only in tiles they touched), then the bin's
+// large triangles that may cover the tile (LargeEntry.tiles, set by the clip pass; the others are
+// skipped in a loop, nextEntryIn, which lavapipe really leaves out, unlike a branch, whose both
+// sides it runs), each tested at the lane's 8 pixels (edge values stepped down the column). Where
+// one offers a smaller key, the key and its Gouraud colour (from the constants the clip pass
+// stored with the set-up, LargeShading) are kept in registers. Then where a large triangle won:
+// the colour stored by resolve.glsl storeColor; where a small one wins, the key stays for
+// resolve_small.
+//
+// Session 6: skipping the entries that miss the tile, and with them shading per entry instead of
+// reading the winner's constants per row (5 gathers a row), fig3 -11%, floor_and_walls -10%,
+// its 4K render -9%, fig1_cube -1 to -5% (PERFORMANCE.md). Before, 57% of the (tile, entry)
+// pairs missed their tile, which made shading per entry a loss on fig1_cube.
 //
 // The 8 rows are spelled out by the FOR_ROWS macro instead of indexing per-lane arrays, which
 // lavapipe may keep in memory.
@@ -27,54 +31,60 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 
 #define FOR_ROWS(DO) DO(0) DO(1) DO(2) DO(3) DO(4) DO(5) DO(6) DO(7)
 
-// Per row r: the smallest key so far, and the set-up slot of the large triangle holding it
-// (LIST_END: none does).
+// Per row r: the smallest key so far, whether a large triangle holds it, and that triangle's
+// colour there.
 #define DECLARE_ROW(r)              \
   uint64_t best##r = KEY_CLEAR;     \
-  uint slot##r = LIST_END;          \
+  uint color##r = 0u;               \
+  bool won##r = false;              \
   if (keysWritten && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
 
-// Row r against large triangle t (set-up slot `slot`), if it covers the pixel (its edge values,
-// stepped down the lane's column row by row, decide); then the next row.
+// Row r against large triangle t (shading g), if it covers the pixel (its edge values, stepped
+// down the lane's column row by row, decide); then the next row. lavapipe shades every row
+// whether or not the triangle wins it (both sides of a branch run).
 #define RASTER_ROW(r)                                                                              \
   if (columnCovers(c)) {                                                                           \
     uint64_t key = planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, origin.y + r, frame);          \
     if (key < best##r) {                                                                           \
       best##r = key;                                                                               \
-      slot##r = slot;                                                                              \
+      won##r = true;                                                                               \
+      color##r = shadePixel(g, x, origin.y + r, frame, INTERPOLATION);                             \
     }                                                                                              \
   }                                                                                                \
   c = nextRow(c);
 
-// Row r, if a large triangle won it: the winner's Gouraud colour (from its set-up slot), stored
-// (storeColor). A pixel won by a small triangle keeps its key for resolve_small; an uncovered one
-// is left alone (the host gives it the background). lavapipe computes the colour of every row
-// whoever won (both sides of a branch run), so the slot read is 0 unless a large triangle won:
-// never a read past the set-ups.
-#define FINISH_ROW(r)                                                                            \
-  {                                                                                              \
-    bool large = slot##r != LIST_END;                                                            \
-    GouraudTriangle g = unpackShading(largeShading(large ? slot##r : 0u), INTERPOLATION);        \
-    uint color = shadePixel(g, x, origin.y + r, frame, INTERPOLATION);                           \
-    if (large && inImage(x, origin.y + r)) {                                                     \
-      storeColor(pixelIndex(x, origin.y + r), color, best##r, keysWritten);                      \
-    }                                                                                            \
-  }
+// Row r, if a large triangle won it: its colour, stored (storeColor). A pixel won by a small
+// triangle keeps its key for resolve_small; an uncovered one is left alone (the host gives it the
+// background).
+#define FINISH_ROW(r) \
+  if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), color##r, best##r, keysWritten);
 
-// This lane's column of the tile at `origin` (pixels) in a bin whose large-triangle list starts
-// at `head`; `keysWritten` when small triangles wrote keys in the tile. Pixels no large triangle
-// wins are left to resolve_small.
-void resolveTile(ivec2 origin, uint head, bool keysWritten) {
+// From entry e of a bin's list on, the first whose tiles include `tile` (a bit of LargeEntry.tiles),
+// as (set-up slot, next entry); (LIST_END, LIST_END) past the last. A loop, so lavapipe really
+// skips the entries that miss the tile (it runs every side of a branch).
+uvec2 nextEntryIn(uint e, uint tile) {
+  uvec2 found = uvec2(LIST_END);
+  while (e != LIST_END && found.x == LIST_END) {
+    LargeEntry entry = largeEntry(e);
+    if ((entry.tiles & tile) != 0u) found = uvec2(entry.slot, entry.next);
+    e = entry.next;
+  }
+  return found;
+}
+
+// This lane's column of the tile at `origin` (pixels), bit `tile` of its bin's LargeEntry.tiles,
+// in a bin whose large-triangle list starts at `head`; `keysWritten` when small triangles wrote
+// keys in the tile. Pixels no large triangle wins are left to resolve_small.
+void resolveTile(ivec2 origin, uint head, uint tile, bool keysWritten) {
   int column = int(gl_LocalInvocationID.x);
   int x = origin.x + column;
   FOR_ROWS(DECLARE_ROW)
-  for (uint e = head; e != LIST_END;) {
-    uvec2 entry = largeEntry(e);  // (set-up slot, next entry)
+  for (uvec2 entry = nextEntryIn(head, tile); entry.x != LIST_END; entry = nextEntryIn(entry.y, tile)) {
     uint slot = entry.x;
     LargeTriangle t = largeSetup(slot);
+    GouraudTriangle g = unpackShading(largeShading(slot), INTERPOLATION);
     ColumnEdges c = columnEdges(t, blockEdges(t, origin), column);
     FOR_ROWS(RASTER_ROW)
-    e = entry.y;
   }
   FOR_ROWS(FINISH_ROW)
 }
@@ -86,7 +96,7 @@ void main() {
     if (b.head == LIST_END) continue;  // resolve_small's
     [[dont_unroll]] for (uint t = gl_LocalInvocationID.y; t < BIN_TILES * BIN_TILES; t += gl_WorkGroupSize.y) {
       uvec2 origin = tileOrigin(b, t);
-      if (origin.x < frame.width && origin.y < frame.height) resolveTile(ivec2(origin), b.head, tileKeysWritten(b, t));
+      if (origin.x < frame.width && origin.y < frame.height) resolveTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
     }
   }
   checkLoopBudget();

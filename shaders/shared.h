@@ -50,7 +50,7 @@ PHONGVK_CONST float GUARD_BAND = 524288.0f;  // 2^19 pixels
 PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 256;
 // The large triangles' buffers grow with the image, not the triangle count (a large triangle
 // covers many pixels, so few fit on screen at once): room for one set-up record (160 bytes) per
-// LARGE_SETUP_PIXELS pixels and one bin entry (8 bytes) per LARGE_ENTRY_PIXELS pixels, with the
+// LARGE_SETUP_PIXELS pixels and one bin entry (16 bytes) per LARGE_ENTRY_PIXELS pixels, with the
 // minimums below. When a frame needs more, the host doubles them and renders it again
 // (STATUS_LARGE_OVERFLOW); they keep that size for the frames after.
 PHONGVK_CONST uint LARGE_SETUP_PIXELS = 512;
@@ -104,7 +104,7 @@ PHONGVK_CONST uint BINDING_LIGHTS = 5;       // LightData[]
 PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex.hpos per vertex (vec4[])
 PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
 PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
-PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + uvec2 (set-up slot, next) bin entries
+PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + LargeEntry bin entries
 PHONGVK_CONST uint BINDING_BINS = 10;        // BinList header, flags and list heads per bin, touched bins
 PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeSetup (raster.h) of each large triangle
 PHONGVK_CONST uint BINDING_CLIP_LIST = 12;   // IdList header + ids of triangles for the clip pass (clipped or not small)
@@ -235,13 +235,23 @@ struct IdList {
   uint groupsZ;
 };
 
-// Header of the large triangles' bin entries: uvec2 (set-up slot, next entry of the same bin)
-// follow it in the buffer, each bin's list threaded through them from its head.
+// Header of the large triangles' bin entries (LargeEntry), which follow it in the buffer, each
+// bin's list threaded through them from its head.
 struct LargeList {
   uint count;        // entries reserved (may exceed the capacity: the frame is then rendered again)
   uint setups;       // set-up slots reserved (likewise)
   uint pad0;
   uint pad1;
+};
+
+// One large triangle in one bin's list: its set-up slot, the next entry of the bin (LIST_END: none)
+// and the bin's tiles it may cover (bit j * BIN_TILES + i for tile (i, j), raster.h binTileMask):
+// resolve skips the others without reading the set-up.
+struct LargeEntry {
+  uint slot;
+  uint next;
+  uint tiles;
+  uint pad;
 };
 
 #ifdef __cplusplus
@@ -257,7 +267,7 @@ static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, trian
 static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
 static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 176);
 static_assert(sizeof(FrameStatus) == 16);
-static_assert(sizeof(LargeList) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 16);
+static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 16);
 }  // namespace phongvk::gpu
 #endif
 

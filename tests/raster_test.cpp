@@ -322,22 +322,28 @@ TEST(Raster, ThirtyTwoBitCoverageOfSmallTrianglesEqualsTheSixtyFourBitOne) {
   EXPECT_GT(covered, 100000);
 }
 
+// Trial `trial`'s random triangle for the block tests, set up in a 1024x1024 image (false: it
+// covers nothing there). Its vertices lie around the image, one in four reaching the guard band
+// (2^27 subpixels), where the edge functions need all 64 bits.
+bool randomBlockTriangle(std::mt19937& rng, int trial, EdgeSetup& s) {
+  std::uniform_int_distribution<int> near(-200 * 256, 1200 * 256);
+  std::uniform_int_distribution<int> far(-(1 << 27), 1 << 27);
+  i64vec2 v[3];
+  for (int k = 0; k < 3; ++k) v[k] = trial % 4 == k ? i64vec2(far(rng), far(rng)) : i64vec2(near(rng), near(rng));
+  return setupEdges(v[0], v[1], v[2], trial % 2 == 0, 1024, 1024, s);
+}
+
 TEST(Raster, BlockClassificationAndSteppedEdgesAgreeWithCovers) {
   // Resolve rasterizes large triangles a block at a time (LargeTriangle): a block called inside
   // must have every pixel covered, one called outside none, and the edge functions stepped from the
-  // block's corner, row by row down a column, must decide each pixel exactly as covers() does. Vertices reach the guard band
-  // (2^27 subpixels), where the edge functions need all 64 bits.
+  // block's corner, row by row down a column, must decide each pixel exactly as covers() does.
   std::mt19937 rng(17);
-  std::uniform_int_distribution<int> near(-200 * 256, 1200 * 256);
-  std::uniform_int_distribution<int> far(-(1 << 27), 1 << 27);
   std::uniform_int_distribution<int> blockAt(0, 1000);
   const uint width = 1024, height = 1024;
   int counts[3] = {0, 0, 0};
   for (int trial = 0; trial < 4000; ++trial) {
-    i64vec2 v[3];
-    for (int k = 0; k < 3; ++k) v[k] = trial % 4 == k ? i64vec2(far(rng), far(rng)) : i64vec2(near(rng), near(rng));
     EdgeSetup s;
-    if (!setupEdges(v[0], v[1], v[2], trial % 2 == 0, width, height, s)) continue;
+    if (!randomBlockTriangle(rng, trial, s)) continue;
     TriangleSetup t{};
     const LargeTriangle large = largeTriangle(t, s);
     for (int b = 0; b < 8; ++b) {
@@ -365,6 +371,45 @@ TEST(Raster, BlockClassificationAndSteppedEdgesAgreeWithCovers) {
   EXPECT_GT(counts[BLOCK_OUTSIDE], 1000);
   EXPECT_GT(counts[BLOCK_PARTIAL], 1000);
   EXPECT_GT(counts[BLOCK_INSIDE], 1000);
+}
+
+TEST(Raster, BinTileMaskKeepsEveryTileWithACoveredPixel) {
+  // The clip pass links a large triangle into a bin with the mask of the bin's tiles it may cover,
+  // and resolve rasterizes it only in those: a tile with a covered pixel centre in the image
+  // must be in the mask, and the mask must be classifyBlock's (a tile outside has no such pixel).
+  std::mt19937 rng(29);
+  std::uniform_int_distribution<int> binAt(0, 1024 / int(BIN_SIZE) - 1);
+  int kept = 0, dropped = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    EdgeSetup s;
+    if (!randomBlockTriangle(rng, trial, s)) continue;
+    TriangleSetup t{};
+    const LargeTriangle large = largeTriangle(t, s);
+    for (int b = 0; b < 4; ++b) {
+      // Half the bins under the triangle's box, half anywhere in the image.
+      const ivec2 pixel = b < 2 ? ivec2(std::uniform_int_distribution<int>(s.bbox.x, s.bbox.z)(rng),
+                                        std::uniform_int_distribution<int>(s.bbox.y, s.bbox.w)(rng))
+                                : ivec2(binAt(rng), binAt(rng)) * int(BIN_SIZE);
+      const ivec2 bin = pixel / int(BIN_SIZE) * int(BIN_SIZE);
+      const uint mask = binTileMask(large, bin);
+      for (uint tile = 0; tile < BIN_TILES * BIN_TILES; ++tile) {
+        const ivec2 origin = bin + ivec2(tile % BIN_TILES, tile / BIN_TILES) * int(TILE_SIZE);
+        const bool inMask = (mask >> tile & 1u) != 0u;
+        ASSERT_EQ(inMask, classifyBlock(large, blockEdges(large, origin), origin, int(TILE_SIZE)) != BLOCK_OUTSIDE)
+            << "trial " << trial << " tile " << tile;
+        (inMask ? kept : dropped)++;
+        for (int j = 0; j < int(TILE_SIZE) && !inMask; ++j) {
+          for (int i = 0; i < int(TILE_SIZE); ++i) {
+            const bool inImage = origin.x + i < 1024 && origin.y + j < 1024;
+            ASSERT_FALSE(inImage && covers(s, pixelCentre(origin.x + i, origin.y + j)))
+                << "trial " << trial << " tile " << tile << " pixel " << i << "," << j;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(kept, 1000);
+  EXPECT_GT(dropped, 1000);
 }
 
 }  // namespace
