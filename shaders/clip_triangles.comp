@@ -1,8 +1,8 @@
 // Clip pass: the triangles the triangle pass did not draw itself, those crossing the near plane or
-// the guard band and those too large for its 32-bit edge functions (usually few). Each is clipped
-// to a polygon (raster.h setupClipped; a triangle inside the clip volume stays itself, snapped
-// exactly as the triangle pass snaps it) whose fan sub-triangles become triangle setups of their
-// own: large ones go to resolve's bin lists, the others are rasterized here. Kept out of the
+// the guard band and those too large for its 32-bit edge functions. One inside the clip volume is
+// set up as itself (raster.h setupUnclipped, as the triangle pass does); one crossing it is
+// clipped to a polygon (setupClipped) whose fan sub-triangles become triangle setups of their
+// own. Large ones go to resolve's bin lists, the others are rasterized here. Kept out of the
 // triangle pass because on lavapipe code a pass merely contains costs every triangle it runs.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -23,7 +23,13 @@ void main() {
     bool cullBack;
     loadForSetup(id, h0, h1, h2, cullBack);
     TriangleSetup t;
-    if (!setupPlane(h0, h1, h2, cullBack, id, frame, t) || !setupClipped(h0, h1, h2, frame, t)) continue;
+    if (!setupPlane(h0, h1, h2, cullBack, id, frame, t)) continue;
+    // Inside the clip volume (most here: not small): set up as itself, as the reference does. The
+    // clipper runs in a 0/1-trip loop, which lavapipe skips whole when no lane needs it.
+    bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane);
+    bool drawn = inside && setupUnclipped(h0, h1, h2, frame, t);
+    for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
+    if (!drawn) continue;
     for (int f = 0; f + 2 < t.count; ++f) {
       TriangleSetup sub = fanTriangle(t, f, frame);
       EdgeSetup s;
