@@ -91,12 +91,13 @@ LargeTriangle largeSetup(uint slot) {
                        ivec2(d.xy), int(d.z), int(d.w), int(f.x), uintBitsToFloat(f.y), uintBitsToFloat(f.z), f.w);
 }
 
-// Large set-up `slot`'s shading half (raster.h LargeShading), the last five texels.
-LargeShading largeShading(uint slot) {
+// Large set-up `slot`'s shading half (raster.h LargeShading), the last five texels; the fifth (W)
+// only for interpolation `mode` INTERP_SCREEN (a specialization constant: no read otherwise).
+LargeShading largeShading(uint slot, uint mode) {
   int k = int(10u * slot) + 5;
+  vec4 w = mode == INTERP_SCREEN ? floats(texelFetch(largeSetupTexels, k + 4)) : vec4(0.0f);
   return LargeShading(floats(texelFetch(largeSetupTexels, k)), floats(texelFetch(largeSetupTexels, k + 1)),
-                      floats(texelFetch(largeSetupTexels, k + 2)), floats(texelFetch(largeSetupTexels, k + 3)),
-                      floats(texelFetch(largeSetupTexels, k + 4)));
+                      floats(texelFetch(largeSetupTexels, k + 2)), floats(texelFetch(largeSetupTexels, k + 3)), w);
 }
 
 // Shaded vertex v (for the passes after shade_vertices, which writes shadedPositions[] and

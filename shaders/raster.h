@@ -680,42 +680,44 @@ FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
 }
 
 // A large triangle's GouraudTriangle as resolve reads it for each tile the triangle may cover:
-// stored with its set-up by the clip pass (LargeSetup), five texels instead of the triangle's
-// index, its three vertices' positions and colours and the products above. Only the fields
-// interpolation `mode` uses: the w of t0..t2 holds n (perspective) or w1, w2, det (screen).
+// stored with its set-up by the clip pass (LargeSetup) instead of the triangle's index, its three
+// vertices' positions and colours and the products above. n and det are the triangle plane's n
+// and h0n (trianglePlane: the same products of the same positions), so they are not stored; and
+// since perspective-correct interpolation reads only t0..t3, resolve reads t4 (W) only for
+// screen-space interpolation.
 struct LargeShading {
-  vec4 t0;  // u1, n.x | w1
-  vec4 t1;  // u2, n.y | w2
-  vec4 t2;  // c0, n.z | det
-  vec4 t3;  // dc1, dc2.x
-  vec4 t4;  // dc2.y, dc2.z, 0, 0
+  vec4 t0;  // u1, c0.x
+  vec4 t1;  // u2, c0.y
+  vec4 t2;  // dc1, c0.z
+  vec4 t3;  // dc2, 0
+  vec4 t4;  // w1, w2, 0, 0
 };
 
-FN LargeShading packShading(GouraudTriangle g, uint mode) {
-  bool screen = mode == INTERP_SCREEN;
+FN LargeShading packShading(GouraudTriangle g) {
   LargeShading s;
-  s.t0 = vec4(g.u1, screen ? g.w1 : g.n.x);
-  s.t1 = vec4(g.u2, screen ? g.w2 : g.n.y);
-  s.t2 = vec4(g.c0, screen ? g.det : g.n.z);
-  s.t3 = vec4(g.dc1, g.dc2.x);
-  s.t4 = vec4(g.dc2.y, g.dc2.z, 0.0f, 0.0f);
+  s.t0 = vec4(g.u1, g.c0.x);
+  s.t1 = vec4(g.u2, g.c0.y);
+  s.t2 = vec4(g.dc1, g.c0.z);
+  s.t3 = vec4(g.dc2, 0.0f);
+  s.t4 = vec4(g.w1, g.w2, 0.0f, 0.0f);
   return s;
 }
 
-// The GouraudTriangle packShading(g, mode) kept: every field interpolateColor reads in `mode`
-// equals g's, bit for bit; the others are 0.
-FN GouraudTriangle unpackShading(LargeShading s, uint mode) {
-  bool screen = mode == INTERP_SCREEN;
+// The GouraudTriangle that packShading(g) kept, with n and det from g's triangle's plane: every
+// field equals g's, bit for bit (t4 may be left zero in perspective mode, which does not read W).
+// With n shared, the dot product of the pixel ray and n is the same value in depthAt and in
+// interpolateColor, computed once per pixel.
+FN GouraudTriangle unpackShading(LargeShading s, TrianglePlane plane) {
   GouraudTriangle g;
   g.u1 = vec3(s.t0);
   g.u2 = vec3(s.t1);
-  g.c0 = vec3(s.t2);
-  g.n = screen ? vec3(0.0f) : vec3(s.t0.w, s.t1.w, s.t2.w);
-  g.w1 = screen ? s.t0.w : 0.0f;
-  g.w2 = screen ? s.t1.w : 0.0f;
-  g.det = screen ? s.t2.w : 0.0f;
-  g.dc1 = vec3(s.t3);
-  g.dc2 = vec3(s.t3.w, s.t4.x, s.t4.y);
+  g.c0 = vec3(s.t0.w, s.t1.w, s.t2.w);
+  g.n = plane.n;
+  g.det = plane.h0n;
+  g.w1 = s.t4.x;
+  g.w2 = s.t4.y;
+  g.dc1 = vec3(s.t2);
+  g.dc2 = vec3(s.t3);
   return g;
 }
 

@@ -71,7 +71,7 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
   uint first = reserve(uint((bins.z - bins.x + 1) * (bins.w - bins.y + 1)), frame.largeCapacity, true);
   if (first == LIST_END) return false;
   LargeTriangle record = largeTriangle(t, s);
-  largeSetups[slot] = LargeSetup(record, packShading(loadGouraud(t.triangle), frame.interpolation));
+  largeSetups[slot] = LargeSetup(record, packShading(loadGouraud(t.triangle)));
   uint e = first;
   for (int by = bins.y; by <= bins.w; ++by) {
     for (int bx = bins.x; bx <= bins.z; ++bx) {

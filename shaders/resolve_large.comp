@@ -82,7 +82,7 @@ void resolveTile(ivec2 origin, uint head, uint tile, bool keysWritten) {
   for (uvec2 entry = nextEntryIn(head, tile); entry.x != LIST_END; entry = nextEntryIn(entry.y, tile)) {
     uint slot = entry.x;
     LargeTriangle t = largeSetup(slot);
-    GouraudTriangle g = unpackShading(largeShading(slot), INTERPOLATION);
+    GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), t.plane);
     ColumnEdges c = columnEdges(t, blockEdges(t, origin), column);
     FOR_ROWS(RASTER_ROW)
   }

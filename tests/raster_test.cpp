@@ -439,5 +439,37 @@ TEST(Raster, BinTileMaskKeepsEveryTileWithACoveredPixel) {
   EXPECT_GT(counts[2], 1000);
 }
 
+TEST(Raster, LargeShadingKeepsTheColourOfEveryPixelBitForBit) {
+  // The clip pass stores a large triangle's Gouraud constants without n and det, which resolve
+  // takes from the triangle's plane: every pixel's colour must be the one computed from the
+  // triangle itself, in both interpolation modes, bit for bit.
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<float> xy(-3000.0f, 3000.0f), w(0.05f, 50.0f), colour(0.0f, 1.5f);
+  std::uniform_real_distribution<float> pixel(-800.0f, 800.0f);
+  int compared = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    ShadedVertex v[3];
+    for (ShadedVertex& s : v) {
+      const float z = w(rng);
+      s.hpos = vec4(xy(rng) * z / 100.0f, xy(rng) * z / 100.0f, z, 1.0f);
+      s.color = vec4(colour(rng), colour(rng), colour(rng), 1.0f);
+    }
+    const GouraudTriangle g = gouraudTriangle(v[0], v[1], v[2]);
+    const TrianglePlane plane = trianglePlane(vec3(v[0].hpos), vec3(v[1].hpos), vec3(v[2].hpos));
+    const GouraudTriangle stored = unpackShading(packShading(g), plane);
+    for (int k = 0; k < 8; ++k) {
+      const vec3 p(pixel(rng), pixel(rng), 1.0f);
+      for (uint mode : {INTERP_PERSPECTIVE, INTERP_SCREEN}) {
+        const vec3 expected = interpolateColor(g, p, mode), got = interpolateColor(stored, p, mode);
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_EQ(std::bit_cast<uint32_t>(got[c]), std::bit_cast<uint32_t>(expected[c])) << "trial " << trial;
+        }
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 2000 * 8 * 2);
+}
+
 }  // namespace
 }  // namespace phongvk
