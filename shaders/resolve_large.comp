@@ -32,23 +32,24 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 #define FOR_ROWS(DO) DO(0) DO(1) DO(2) DO(3) DO(4) DO(5) DO(6) DO(7)
 
 // Per row r: the smallest key so far, whether a large triangle holds it, and that triangle's
-// colour there.
+// colour there (unpacked).
 #define DECLARE_ROW(r)              \
   uint64_t best##r = KEY_CLEAR;     \
-  uint color##r = 0u;               \
+  vec3 color##r = vec3(0.0f);       \
   bool won##r = false;              \
   if (keysWritten && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
 
 // Row r against large triangle t (shading g), if it covers the pixel (its edge values, stepped
 // down the lane's column row by row, decide); then the next row. lavapipe shades every row
-// whether or not the triangle wins it (both sides of a branch run).
+// whether or not the triangle wins it (both sides of a branch run); the colour is packed once,
+// for the winner (FINISH_ROW).
 #define RASTER_ROW(r)                                                                              \
   if (columnCovers(c)) {                                                                           \
     uint64_t key = planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, origin.y + r, frame);          \
     if (key < best##r) {                                                                           \
       best##r = key;                                                                               \
       won##r = true;                                                                               \
-      color##r = shadePixel(g, x, origin.y + r, frame, INTERPOLATION);                             \
+      color##r = interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION);   \
     }                                                                                              \
   }                                                                                                \
   c = nextRow(c);
@@ -57,7 +58,7 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 // triangle keeps its key for resolve_small; an uncovered one is left alone (the host gives it the
 // background).
 #define FINISH_ROW(r) \
-  if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), color##r, best##r, keysWritten);
+  if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packColor(color##r), best##r, keysWritten);
 
 // From entry e of a bin's list on, the first whose tiles include `tile` (a bit of LargeEntry.tiles),
 // as (set-up slot, next entry); (LIST_END, LIST_END) past the last. A loop, so lavapipe really
