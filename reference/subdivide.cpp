@@ -2,6 +2,8 @@
 // (counting sort), each bucket sorted by the higher index: sequential memory, no std::map, no hash.
 #include "subdivide.h"
 
+#include "huge_pages.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cstddef>
@@ -36,15 +38,21 @@ EdgeTable buildEdgeTable(const std::vector<glm::uvec3>& triangles, size_t vertex
   assert(halfEdgeCount < std::numeric_limits<uint32_t>::max());
 
   // Bucket offsets by lower end (counting sort).
-  std::vector<uint32_t> offsets(vertexCount + 1, 0);
+  std::vector<uint32_t> offsets;
+  reserveLarge(offsets, vertexCount + 1);
+  offsets.resize(vertexCount + 1, 0);
   for (const glm::uvec3& t : triangles)
     for (int k = 0; k < 3; ++k) offsets[std::min(t[k], t[(k + 1) % 3]) + 1]++;
   for (size_t v = 0; v < vertexCount; ++v) offsets[v + 1] += offsets[v];
 
   // Each entry: higher end in the top 32 bits, half-edge id below, so sorting a bucket groups
   // equal edges and keeps their half-edges in order.
-  std::vector<uint64_t> entries(halfEdgeCount);
-  std::vector<uint32_t> cursor(offsets.begin(), offsets.end() - 1);
+  std::vector<uint64_t> entries;
+  reserveLarge(entries, halfEdgeCount);
+  entries.resize(halfEdgeCount);
+  std::vector<uint32_t> cursor;
+  reserveLarge(cursor, vertexCount);
+  cursor.assign(offsets.begin(), offsets.end() - 1);
   for (size_t t = 0; t < triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
       uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
@@ -53,9 +61,10 @@ EdgeTable buildEdgeTable(const std::vector<glm::uvec3>& triangles, size_t vertex
   }
 
   EdgeTable table;
+  reserveLarge(table.edgeOfHalfEdge, halfEdgeCount);
   table.edgeOfHalfEdge.resize(halfEdgeCount);
-  table.lo.reserve(halfEdgeCount / 2 + 3);
-  table.hi.reserve(halfEdgeCount / 2 + 3);
+  reserveLarge(table.lo, halfEdgeCount / 2 + 3);
+  reserveLarge(table.hi, halfEdgeCount / 2 + 3);
   for (size_t v = 0; v < vertexCount; ++v) {
     auto first = entries.begin() + offsets[v], last = entries.begin() + offsets[v + 1];
     std::sort(first, last);
@@ -79,6 +88,9 @@ SurfaceVertex vertexAt(const SurfaceMesh& m, uint32_t i) {
 
 void appendMidpoints(SurfaceMesh& m, const EdgeTable& edges) {
   const size_t vertexCount = m.mesh.positions.size(), edgeCount = edges.lo.size();
+  reserveLarge(m.mesh.positions, vertexCount + edgeCount);
+  reserveLarge(m.mesh.normals, vertexCount + edgeCount);
+  reserveLarge(m.surfaces, vertexCount + edgeCount);
   m.mesh.positions.resize(vertexCount + edgeCount);
   m.mesh.normals.resize(vertexCount + edgeCount);
   m.surfaces.resize(vertexCount + edgeCount);
@@ -97,7 +109,9 @@ void subdivideOnce(SurfaceMesh& m) {
   appendMidpoints(m, edges);
 
   const std::vector<glm::uvec3>& old = m.mesh.triangles;
-  std::vector<glm::uvec3> split(old.size() * 4);
+  std::vector<glm::uvec3> split;
+  reserveLarge(split, old.size() * 4);
+  split.resize(old.size() * 4);
   for (size_t t = 0; t < old.size(); ++t) {
     uint32_t a = old[t].x, b = old[t].y, c = old[t].z;
     uint32_t ab = firstMidpoint + edges.edgeOfHalfEdge[t * 3 + 0];

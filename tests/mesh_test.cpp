@@ -1,6 +1,7 @@
 // mesh_test.cpp — the facts every object mesh must satisfy (mesh.h, primitives.h, hull.h,
 // subdivide.h, obj_import.h, normals.h): counts, watertightness, winding, normals, errors.
 #include "reference/mesh.h"
+#include "reference/huge_pages.h"
 #include "reference/hull.h"
 #include "reference/normals.h"
 #include "tests/test_util.h"
@@ -105,6 +106,25 @@ void expectClosedConvexShape(const Mesh& mesh, glm::dvec3 inside) {
 }
 
 // ---- cube ----
+
+TEST(HugePages, ReserveLargeKeepsTheElementsAndTheRoom) {
+  // Subdivision and the scene's flat arrays reserve through reserveLarge: growing must keep what
+  // the vector held, and a smaller request must change nothing.
+  std::vector<uint32_t> v = {7, 8, 9};
+  reserveLarge(v, size_t(3) << 20);  // 12 MiB: whole 2 MiB pages inside, so madvise is asked
+  ASSERT_GE(v.capacity(), size_t(3) << 20);
+  EXPECT_EQ(v, (std::vector<uint32_t>{7, 8, 9}));
+  const uint32_t* data = v.data();
+  reserveLarge(v, 10);
+  EXPECT_EQ(v.data(), data);
+  v.resize(size_t(3) << 20, 5u);  // the advised pages are ordinary memory to write
+  EXPECT_EQ(v[2], 9u);
+  EXPECT_EQ(v.back(), 5u);
+  std::vector<double> empty;
+  reserveLarge(empty, 1);  // no whole huge page inside: nothing asked
+  EXPECT_GE(empty.capacity(), 1u);
+  EXPECT_TRUE(empty.empty());
+}
 
 TEST(Cube, HasSharpFacesOfFourVerticesEach) {
   Object object = makeObject(Shape::Cube);
