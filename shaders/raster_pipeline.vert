@@ -8,6 +8,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#define PHONGVK_GRAPHICS_STAGE  // bindings.glsl: no workgroups here
 #include "shared.h"
 #include "raster.h"
 #include "bindings.glsl"

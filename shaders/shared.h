@@ -223,7 +223,7 @@ struct FrameStatus {
 struct BinList {
   uint count;        // bins touched
   uint groupsX;      // indirect dispatch (min(count, frame.groupCap), 1, 1)
-  uint groupsY;
+  uint groupsY;      // 1: every dispatch is one row of workgroups (bindings.glsl runtimeOne)
   uint groupsZ;
 };
 
@@ -231,7 +231,7 @@ struct BinList {
 struct IdList {
   uint count;
   uint groupsX;      // indirect dispatch (min(count / CLIP_GROUP_SIZE rounded up, groupCap), 1, 1)
-  uint groupsY;
+  uint groupsY;      // 1, as BinList's
   uint groupsZ;
 };
 
