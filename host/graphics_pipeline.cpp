@@ -220,8 +220,8 @@ void destroyGraphicsLayout(GraphicsLayout& layout, const VulkanContext& context)
 VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPipelineInfo& info) {
   const ShaderModule vertex(context, info.vertexSpirv);
   const ShaderModule fragment(context, info.fragmentSpirv);
-  const VkSpecializationMapEntry specEntry = {0, 0, sizeof(uint32_t)};
-  const VkSpecializationInfo spec = {1, &specEntry, sizeof(uint32_t), &info.spec};
+  const VkSpecializationMapEntry specEntries[] = {{0, 0, sizeof(uint32_t)}, {1, sizeof(uint32_t), sizeof(uint32_t)}};
+  const VkSpecializationInfo spec = {2, specEntries, sizeof(info.spec), info.spec.data()};
   const VkPipelineShaderStageCreateInfo stages[] = {
       shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex.module, spec),
       shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment.module, spec),

@@ -262,7 +262,7 @@ VkPipeline RasterRenderer::State::pipelineFor(uint32_t interpolation, bool cullB
   GraphicsPipelineInfo info;
   info.vertexSpirv = spirv_raster_pipeline_vert;
   info.fragmentSpirv = spirv_raster_pipeline_frag;
-  info.spec = interpolation;
+  info.spec = {interpolation, uint32_t(lightCount)};  // raster_pipeline.vert: the mode, the light count
   info.layout = layout.layout;
   info.renderPass = renderPass;
   info.cullMode = cullBack ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;

@@ -15,6 +15,11 @@
 
 // INTERP_PERSPECTIVE or INTERP_SCREEN (FrameData.interpolation); one pipeline per mode.
 layout(constant_id = 0) const uint INTERPOLATION = INTERP_PERSPECTIVE;
+// The scene's light count (fixed per renderer), as the compute port's shade pass has it. A loop
+// bound read from the uniform block made lavapipe 22.3 inline it and compile the vertex shader
+// anew at every draw, keeping every copy (bindings.glsl loadFrame): the baseline paid that each
+// frame, and the process grew.
+layout(constant_id = 1) const uint LIGHT_COUNT = 0u;
 
 // The Gouraud colour, interpolated perspective-correctly by the hardware. For screen-linear
 // interpolation it is (colour * W, W): the interpolated ratio sum(b_i W_i c_i) / sum(b_i W_i) is
@@ -46,6 +51,6 @@ void main() {
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);
   vec3 color = phongAmbient(m, frame.ambient);
-  for (uint l = 0u; l < frame.lightCount; ++l) color += phongLight(P, v.normal, V, m, lightData(l));
+  for (uint l = 0u; l < LIGHT_COUNT; ++l) color += phongLight(P, v.normal, V, m, lightData(l));
   gouraud = INTERPOLATION == INTERP_SCREEN ? vec4(color * h.z, h.z) : vec4(color, 1.0f);
 }

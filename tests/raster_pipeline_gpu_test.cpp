@@ -236,5 +236,21 @@ TEST_F(RasterTest, FrameMayNotChangeTheNumberOfLights) {
   EXPECT_THROW(raster.render(in), std::invalid_argument);
 }
 
+TEST(RasterPipeline, RelitFramesCompileNothingNew) {
+  // The baseline's vertex shader took its light-loop bound from the uniform block, which lavapipe
+  // 22.3 inlined and compiled anew at every draw, keeping every copy: relit frames must add no
+  // code mappings to the process once the first frames are done.
+  if (test::executableMappings() < 0) GTEST_SKIP() << "no /proc/self/maps";
+  Scene scene = loadScene(test::sourcePath("scenes/paper/fig1_cube.json"));
+  VulkanContext context = createContext({-1, false});
+  {
+    const SceneData data = buildSceneData(scene);
+    RasterRenderer raster(context, data);
+    const FrameInputs in = makeFrame(data, makeView(scene.camera));
+    EXPECT_EQ(test::mappingsAddedByRelitFrames(in, [&](const FrameInputs& f) { raster.render(f); }), 0);
+  }
+  destroyContext(context);
+}
+
 }  // namespace
 }  // namespace phongvk

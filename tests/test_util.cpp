@@ -15,6 +15,23 @@ std::string sourcePath(const std::string& relative) {
   return std::string(PHONGVK_SOURCE_DIR) + "/" + relative;
 }
 
+int executableMappings() {
+  std::ifstream maps("/proc/self/maps");
+  if (!maps) return -1;
+  int count = 0;
+  for (std::string line; std::getline(maps, line);) count += line.find(" r-xp ") != std::string::npos;
+  return count;
+}
+
+int mappingsAddedByRelitFrames(const FrameInputs& in, const std::function<void(const FrameInputs&)>& render) {
+  FrameInputs relit = in;
+  relit.frame.ambient = glm::vec3(0.5f, 0.4f, 0.3f);
+  for (int i = 0; i < 4; ++i) render(i % 2 ? relit : in);
+  const int settled = executableMappings();
+  for (int i = 0; i < 20; ++i) render(i % 2 ? relit : in);
+  return executableMappings() - settled;
+}
+
 namespace {
 
 // Every directory makeTempDir made, removed with its contents when the test process exits.

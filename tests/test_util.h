@@ -1,6 +1,9 @@
 // test_util.h — small helpers shared by the test suites.
 #pragma once
 
+#include "reference/scene_data.h"
+
+#include <functional>
 #include <string>
 
 namespace phongvk::test {
@@ -11,6 +14,14 @@ std::string sourcePath(const std::string& relative);
 // A fresh empty directory under the system temp dir, unique per call; removed with its contents
 // when the test process exits.
 std::string makeTempDir();
+
+// This process's executable memory mappings (Linux /proc/self/maps); -1 where it cannot say. A
+// driver that compiles code per frame (lavapipe inlining uniforms) makes it grow frame by frame.
+int executableMappings();
+
+// Renders `in` and a relit copy (another ambient) alternately through `render`, four frames and
+// then twenty more; the executable mappings the twenty added to the process (0: nothing compiled).
+int mappingsAddedByRelitFrames(const FrameInputs& in, const std::function<void(const FrameInputs&)>& render);
 
 // Writes `text` to `path` (creating it), for tests that need a scene file on disk.
 void writeFile(const std::string& path, const std::string& text);
