@@ -539,48 +539,26 @@ FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
   return min(c0, min(c1, c2));
 }
 
-// The tiles of a bin (bit j * BIN_TILES + i for tile (i, j)) where edge a -> b, worth e at the
-// bin's first pixel centre, is not negative at every pixel centre: classifyEdge per tile, with
-// the steps between tiles and the reach within one added instead of recomputed (exact integers).
-FN uint edgeTileMask(ivec2 a, ivec2 b, int64_t e) {
-  int64_t right = edgeStep(a, b, int64_t(0), int(TILE_SIZE), 0);
-  int64_t down = edgeStep(a, b, int64_t(0), 0, int(TILE_SIZE));
-  int64_t reach = max(edgeStep(a, b, int64_t(0), int(TILE_SIZE) - 1, 0), int64_t(0)) +
-                  max(edgeStep(a, b, int64_t(0), 0, int(TILE_SIZE) - 1), int64_t(0));
-  uint mask = 0u;
-  UNROLL for (int j = 0; j < int(BIN_TILES); ++j) {
-    UNROLL for (int i = 0; i < int(BIN_TILES); ++i) {
-      if (e + reach + int64_t(i) * right + int64_t(j) * down >= int64_t(0)) mask |= 1u << uint(j * int(BIN_TILES) + i);
-    }
-  }
-  return mask;
-}
-
-// The tiles of the bin at pixel `origin` that overlap the pixel box (x0, y0, x1, y1).
-FN uint boxTileMask(ivec4 box, ivec2 origin) {
-  uint columns = 0u;
-  uint rows = 0u;
-  UNROLL for (int i = 0; i < int(BIN_TILES); ++i) {
-    int first = i * int(TILE_SIZE);
-    int last = first + int(TILE_SIZE) - 1;
-    if (origin.x + first <= box.z && origin.x + last >= box.x) columns |= 1u << uint(i);
-    if (origin.y + first <= box.w && origin.y + last >= box.y) rows |= 1u << uint(i);
-  }
-  uint mask = 0u;
-  UNROLL for (int j = 0; j < int(BIN_TILES); ++j) {
-    if ((rows & (1u << uint(j))) != 0u) mask |= columns << uint(j * int(BIN_TILES));
-  }
-  return mask;
-}
-
 // The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre: bit
 // j * BIN_TILES + i for tile (i, j) unless classifyBlock calls it outside. 0: none. Unrolled:
 // lavapipe counts every loop iteration against one invocation's budget (bindings.glsl
 // checkLoopBudget), and 16 of them per bin of a triangle across a 4K image's 8160 bins pass it.
 FN uint binTileMask(LargeTriangle t, ivec2 origin) {
   BlockEdges e = blockEdges(t, origin);
-  return boxTileMask(t.bbox, origin) & edgeTileMask(t.v1, t.v2, e.e0) & edgeTileMask(t.v2, t.v0, e.e1) &
-         edgeTileMask(t.v0, t.v1, e.e2);
+  uint mask = 0u;
+  UNROLL for (int j = 0; j < int(BIN_TILES); ++j) {
+    UNROLL for (int i = 0; i < int(BIN_TILES); ++i) {
+      ivec2 step = ivec2(i, j) * int(TILE_SIZE);
+      BlockEdges tile;
+      tile.e0 = edgeStep(t.v1, t.v2, e.e0, step.x, step.y);
+      tile.e1 = edgeStep(t.v2, t.v0, e.e1, step.x, step.y);
+      tile.e2 = edgeStep(t.v0, t.v1, e.e2, step.x, step.y);
+      if (classifyBlock(t, tile, origin + step, int(TILE_SIZE)) != BLOCK_OUTSIDE) {
+        mask |= 1u << uint(j * int(BIN_TILES) + i);
+      }
+    }
+  }
+  return mask;
 }
 
 // The edge values walking down column i of a block: at the current row (starting at row 0), and
