@@ -48,6 +48,19 @@ void printRepeatTiming(int repeat, const std::function<double()>& frame) {
               *std::min_element(t.wallMs.begin(), t.wallMs.end()), *std::max_element(t.wallMs.begin(), t.wallMs.end()));
 }
 
+// --repeat on the compute backend: the median device time of each pass over the timed frames
+// (`frames` holds the warm-up first, which is left out), so a user sees where a frame goes.
+void printPassTiming(const std::vector<PassTimes>& frames) {
+  std::vector<double> shade, raster, resolve;
+  for (size_t i = 1; i < frames.size(); ++i) {
+    shade.push_back(frames[i].shade);
+    raster.push_back(frames[i].raster);
+    resolve.push_back(frames[i].resolve);
+  }
+  std::printf("device ms by pass: shade %.3f, raster %.3f, resolve %.3f (medians)\n", median(shade), median(raster),
+              median(resolve));
+}
+
 void printSummary(const RenderOptions& options, const Prepared& p, const std::string& backend, double renderMs) {
   std::printf("rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms -> %s\n",
               options.scene.c_str(), p.view.width, p.view.height, p.scene.objects.size(), p.data.triangles.size(),
@@ -87,10 +100,13 @@ RenderOutput renderOnBackend(const RenderOptions& options, const Prepared& p, st
   backend = "gpu (Vulkan compute, " + gpu.context.report.name + ")";
   gpu.load(p.data);
   if (options.repeat > 0) {
+    std::vector<PassTimes> frames;
     printRepeatTiming(options.repeat, [&] {
       gpu.renderer->render(p.frame);
-      return gpu.renderer->lastPassTimes().total;
+      frames.push_back(gpu.renderer->lastPassTimes());
+      return frames.back().total;
     });
+    printPassTiming(frames);
   }
   return gpu.renderer->render(p.frame);
 }

@@ -10,10 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <regex>
 #include <string>
 
 namespace phongvk {
@@ -103,6 +105,24 @@ TEST(GpuRender, SameBytesOnEveryThreadCount) {
     files.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     ASSERT_FALSE(files.back().empty());
     EXPECT_EQ(files.back(), files.front()) << threads << " threads";
+  }
+}
+
+// `render --repeat` prints the frame line and, on the compute backend, each pass's median device
+// time: three finite, non-negative numbers.
+TEST(GpuRender, RepeatPrintsFrameAndPassTimes) {
+  const std::string dir = test::makeTempDir();
+  const auto r = test::runCli("render " + test::sourcePath("scenes/paper/fig1_cube.json") + " -o " + dir +
+                              "/x.png --repeat 3");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::regex frame(R"(frame ms: median [0-9.]+ \(device [0-9.]+, min [0-9.]+, max [0-9.]+\)\n)");
+  EXPECT_TRUE(std::regex_search(r.output, frame)) << r.output;
+  const std::regex passes(R"(device ms by pass: shade ([-0-9.naif]+), raster ([-0-9.naif]+), resolve ([-0-9.naif]+) \(medians\)\n)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.output, m, passes)) << r.output;
+  for (int i = 1; i <= 3; ++i) {
+    const double ms = std::stod(m[i].str());
+    EXPECT_TRUE(std::isfinite(ms) && ms >= 0) << m[0];
   }
 }
 
