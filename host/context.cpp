@@ -1,6 +1,8 @@
 // context.cpp — instance, device choice (with the reasons each device is rejected), device, queue.
 #include "host/context.h"
 
+#include "host/float_probe.h"
+
 #include "host/vk_check.h"
 
 #include <cstdio>
@@ -420,6 +422,7 @@ VulkanContext createContext(const ContextOptions& options) {
     describeDevice(context, reports[chosen]);
     createDevice(context);
     createCommandPool(context);
+    context.floats = probeFloatOps(context);
   } catch (...) {
     destroyContext(context);  // also reloads the tables of a context that was live before
     throw;

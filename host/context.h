@@ -66,6 +66,22 @@ struct MemoryUsage {
   std::atomic<VkDeviceSize> peak{0};
 };
 
+// What the device's float division and square root do (host/float_probe.h probes them when the
+// context is created): off = how many probes differed from the host's IEEE result.
+struct FloatReport {
+  uint32_t probes = 0;
+  uint32_t divideOff = 0;       // the device's a / b
+  uint32_t sqrtOff = 0;         // the device's sqrt(x)
+  uint32_t fmaOff = 0;          // fma(a, b, c): off when it is not fused
+  uint32_t exactDivideOff = 0;  // exact_float.h correctedQuotient of the device quotient
+  uint32_t exactSqrtOff = 0;    // exact_float.h correctedRoot of the device root
+  bool nativeExact() const { return divideOff == 0 && sqrtOff == 0; }
+  bool correctionExact() const { return fmaOff == 0 && exactDivideOff == 0 && exactSqrtOff == 0; }
+  // Whether the renderer's shaders correct the device's operations (shared.h SPEC_EXACT_FLOAT):
+  // only where they are off and the corrected ones are exact.
+  bool useExact() const { return !nativeExact() && correctionExact(); }
+};
+
 struct VulkanContext {
   VkInstance instance = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;  // only when validating
@@ -81,6 +97,7 @@ struct VulkanContext {
   std::shared_ptr<ValidationLog> validation;  // null unless validating
   std::shared_ptr<MemoryUsage> memory = std::make_shared<MemoryUsage>();
   DeviceReport report;              // the chosen device
+  FloatReport floats;               // its float division and square root
 };
 
 // Every physical device with the reasons it is or is not usable (through a temporary instance).
@@ -88,7 +105,8 @@ struct VulkanContext {
 std::vector<DeviceReport> listDevices();
 
 // Creates the instance, picks a device (options.deviceIndex or the best suitable one), creates the
-// device with the features phongvk needs, a compute queue and a command pool.
+// device with the features phongvk needs, a compute queue and a command pool, and probes its float
+// division and square root (`floats`).
 // Throws NoDeviceError when no (or not the requested) device is usable, std::runtime_error when
 // validation was asked for but the layer is not installed, VulkanError on any other failure.
 VulkanContext createContext(const ContextOptions& options);

@@ -92,8 +92,10 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, Re
   try {
     // What the scene's frames will use, all at once; the raster pass's set layout serves every
     // pass (updateDescriptors).
-    compilePipelines(requestsFor(data.materials, data.lights.size(), data.interpolation, resolveOutput(false)));
-    current_[RASTER] = pipeline({RASTER, {}});
+    const std::vector<PipelineRequest> requests =
+        requestsFor(data.materials, data.lights.size(), data.interpolation, resolveOutput(false));
+    compilePipelines(requests);
+    current_[RASTER] = pipeline(requests[RASTER]);
     createDescriptorArena(arena_, context_, 1);
     createTimestampPool(timestamps_, context_, TIMESTAMP_SLOTS);
     uploadScene(data);
@@ -191,7 +193,7 @@ const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) con
 std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::vector<MaterialData>& materials,
                                                                    size_t lightCount, uint32_t interpolation,
                                                                    uint32_t output) const {
-  return {
+  std::vector<PipelineRequest> requests = {
       {SHADE, shadeSpecs(materials, lightCount)},
       {RASTER, {}},
       {CLIP, {}},
@@ -199,6 +201,9 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
       {RESOLVE_LARGE,
        {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
   };
+  // Every pass divides: all correct the device's division and sqrt where the probe asks for it.
+  for (PipelineRequest& r : requests) r.specs.push_back({SPEC_EXACT_FLOAT, context_.floats.useExact()});
+  return requests;
 }
 
 // Where resolve puts a frame's colours (FrameData.keepKeys and .colorsInKeys, as uploadFrame sets

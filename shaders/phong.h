@@ -5,6 +5,7 @@
 
 #include "glsl_cpp.h"
 #include "shared.h"
+#include "exact_float.h"
 
 SHARED_BEGIN
 
@@ -45,18 +46,19 @@ FN vec3 held3(vec3 v) { return min(v, vec3(COLOR_MAX)); }
 // Rescaling by the largest component first gives every device the same, exact-enough length.
 FN float lightDistance(vec3 v) {
   PRECISE float dd = dot3(v, v);
-  if (dd >= 1.17549435e-38f) return sqrt(dd);
+  if (dd >= 1.17549435e-38f) return squareRoot(dd);
   PRECISE float m = max(abs(v.x), max(abs(v.y), abs(v.z)));
   if (m == 0.0f) return 0.0f;
-  PRECISE vec3 u = v / m;
-  PRECISE float d = m * sqrt(dot3(u, u));
+  PRECISE vec3 u = divide(v, m);
+  PRECISE float d = m * squareRoot(dot3(u, u));
   return d;
 }
 
 // x^n for x > 0 (up to a hair above 1) and n > 0, from additions, multiplications, one division
 // and exponent bits only. GLSL's pow is exp2(n * log2(x)) with device-specific precision and
 // C++'s powf is correctly rounded; they disagreed by one 8-bit level on a few pixels. This one
-// gives the reference and every IEEE-conforming device the same bits, accurate to about 2e-7.
+// gives the reference and every device the same bits (its one division is `divide`), accurate to
+// about 2e-7.
 FN float log2Positive(float x) {
   int bits = floatBitsToInt(x);
   int e = ((bits >> 23) & 255) - 127;
@@ -66,7 +68,7 @@ FN float log2Positive(float x) {
     e = e + 1;
   }
   // log2(m) = (2 / ln 2) (t + t^3/3 + t^5/5 + t^7/7 + t^9/9 + ...), t = (m - 1)/(m + 1), |t| <= 0.172
-  PRECISE float t = (m - 1.0f) / (m + 1.0f);
+  PRECISE float t = divide(m - 1.0f, m + 1.0f);
   PRECISE float t2 = t * t;
   PRECISE float series =
       t * (2.88539008f + t2 * (0.961796694f + t2 * (0.577078016f + t2 * (0.412198583f + t2 * 0.320598898f))));
@@ -100,12 +102,12 @@ FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, 
   PRECISE vec3 toLight = light.position - P;
   PRECISE float d = lightDistance(toLight);
   if (d == 0.0f) return vec3(0.0f);  // a light exactly at the vertex adds nothing
-  PRECISE vec3 l = toLight / d;
+  PRECISE vec3 l = divide(toLight, d);
   PRECISE float NdotL = dot3(N, l);
   if (NdotL <= 0.0f) return vec3(0.0f);
   PRECISE float S = held(constantAttenuation
-                             ? 1.0f / m.attenuation.x
-                             : 1.0f / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));
+                             ? divide(1.0f, m.attenuation.x)
+                             : divide(1.0f, m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));
   PRECISE float shade = held(m.kd * NdotL);
   if (specular) {
     PRECISE vec3 r = 2.0f * NdotL * N - l;
@@ -140,8 +142,8 @@ FN vec3 lightingPosition(vec3 local, vec3 lightOffset) {
 // Unit vector from P towards the eye; zero when P is the eye itself.
 FN vec3 toEye(vec3 P, vec3 eye) {
   PRECISE vec3 v = eye - P;
-  PRECISE float len = sqrt(dot3(v, v));
-  PRECISE vec3 V = len > 0.0f ? v / len : vec3(0.0f);
+  PRECISE float len = squareRoot(dot3(v, v));
+  PRECISE vec3 V = len > 0.0f ? divide(v, len) : vec3(0.0f);
   return V;
 }
 

@@ -15,6 +15,7 @@
 #define PHONGVK_RASTER_H
 
 #include "glsl_cpp.h"
+#include "exact_float.h"
 #include "phong.h"
 #include "shared.h"
 
@@ -36,7 +37,7 @@ FN float clipDistance(vec3 h, int plane, float nearPlane) {
 // The point where segment inside -> outside crosses a plane. Always computed from the inside
 // end, so two triangles sharing an edge produce bit-identical points (no crack, no overlap).
 FN vec3 clipIntersect(vec3 inside, vec3 outside, float dIn, float dOut) {
-  PRECISE float t = dIn / (dIn - dOut);
+  PRECISE float t = divide(dIn, dIn - dOut);
   PRECISE vec3 p = inside + t * (outside - inside);
   return p;
 }
@@ -102,8 +103,8 @@ FN bool outsideFrustum(vec3 h0, vec3 h1, vec3 h2, FrameData frame) {
 // inside the guard band, so the result is below 2^28 in magnitude: an int holds it exactly (and
 // a SIMD CPU converts to 32-bit integers natively, to 64-bit lane by lane).
 FN ivec2 snapToSubpixel(vec3 h, vec2 principal) {
-  PRECISE float sx = (h.x / h.z + principal.x) * float(SUBPIXEL_ONE) + 0.5f;
-  PRECISE float sy = (h.y / h.z + principal.y) * float(SUBPIXEL_ONE) + 0.5f;
+  PRECISE float sx = (divide(h.x, h.z) + principal.x) * float(SUBPIXEL_ONE) + 0.5f;
+  PRECISE float sy = (divide(h.y, h.z) + principal.y) * float(SUBPIXEL_ONE) + 0.5f;
   return ivec2(int(floor(sx)), int(floor(sy)));
 }
 
@@ -301,7 +302,7 @@ FN vec3 pixelRay(int x, int y, vec2 principal) {
 
 // View depth where the pixel's ray meets the triangle's plane.
 FN float depthAt(TrianglePlane t, vec3 p) {
-  PRECISE float z = t.h0n / dot3(p, t.n);
+  PRECISE float z = divide(t.h0n, dot3(p, t.n));
   return z;
 }
 
@@ -643,12 +644,12 @@ FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
   PRECISE float b2;
   if (mode == INTERP_SCREEN) {
     // Screen-space barycentrics are the perspective ones times W / (interpolated W).
-    b1 = d1 * g.w1 / g.det;
-    b2 = d2 * g.w2 / g.det;
+    b1 = divide(d1 * g.w1, g.det);
+    b2 = divide(d2 * g.w2, g.det);
   } else {
     PRECISE float pn = dot3(p, g.n);
-    b1 = d1 / pn;
-    b2 = d2 / pn;
+    b1 = divide(d1, pn);
+    b2 = divide(d2, pn);
   }
   // Held to [0, 1] (NaN to 0): only pixels covered thanks to snapping extrapolate.
   b1 = b1 >= 0.0f ? (b1 <= 1.0f ? b1 : 1.0f) : 0.0f;

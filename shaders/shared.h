@@ -83,6 +83,12 @@ PHONGVK_CONST uint SPEC_RESOLVE_TILES = 1;
 // constant, not a frame field: lavapipe runs every side of a branch, and the three stores of a
 // frame-chosen output each cost a loop over the lanes per pixel.
 PHONGVK_CONST uint SPEC_RESOLVE_OUTPUT = 2;
+// Every pass: whether divide and squareRoot correct the device's own operations (exact_float.h).
+// An id no other constant of any shader uses.
+PHONGVK_CONST uint SPEC_EXACT_FLOAT = 8;
+// probe_float.comp: results per probe (native a / b, sqrt, fma; the quotient and root corrected) and group size.
+PHONGVK_CONST uint FLOAT_PROBE_RESULTS = 5;
+PHONGVK_CONST uint FLOAT_PROBE_GROUP_SIZE = 64;
 PHONGVK_CONST uint RESOLVE_OUTPUT_KEY_SLOTS = 0;   // colorsInKeys: the colour into the pixel's key slot
 PHONGVK_CONST uint RESOLVE_OUTPUT_COLORS = 1;      // into the colour buffer, the key reset to KEY_CLEAR
 PHONGVK_CONST uint RESOLVE_OUTPUT_KEEP_KEYS = 2;   // keepKeys: into the colour buffer, the final key kept

@@ -1,0 +1,35 @@
+// float_probe.h — does the device divide and take square roots exactly as the host does?
+//
+// The renderer's key and colour maths must give the reference's bits (DESIGN.md "Visibility"), but
+// Vulkan lets a device's division and sqrt be off by a few ulps (shaders/exact_float.h). When a
+// context is created, probe_float.comp runs a fixed set of inputs through the device's operations
+// and through exact_float.h's corrected ones; the host compares every result with its own IEEE
+// one. The renderer then uses the corrected operations only where the device's own were off
+// (FloatReport::useExact): lavapipe's are exact and pay nothing.
+#pragma once
+
+#include "host/context.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace phongvk {
+
+// One probe: a / b, sqrt(x) and fma(a, b, c) (c = -(a b) rounded: fused gives the product's
+// rounding error, unfused 0).
+struct FloatProbeInput {
+  float a, b, c, x;
+};
+
+// The fixed probes: ordinary and awkward quotients and roots (mantissas of all ones, exact
+// results, ties, tiny and huge operands), then hashed random ones. Every result is a normal float.
+std::vector<FloatProbeInput> floatProbeInputs();
+
+// Compares the device's results (FLOAT_PROBE_RESULTS bit patterns per probe, in probe_float.comp's
+// order) with the host's IEEE results.
+FloatReport compareFloatProbe(const std::vector<FloatProbeInput>& inputs, const std::vector<uint32_t>& results);
+
+// Runs probe_float.comp on the context's device and compares.
+FloatReport probeFloatOps(const VulkanContext& context);
+
+}  // namespace phongvk
