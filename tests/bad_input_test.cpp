@@ -338,27 +338,5 @@ TEST_F(BadCli, BadSceneWritesNothing) {
   }
 }
 
-// The device's key buffer holds 4096x4096 on lavapipe (128 MiB maxStorageBufferRange, 8 bytes a
-// pixel): one row more is refused with the limit named, before any device memory is touched.
-TEST_F(BadCli, ImageLargerThanTheDeviceHolds) {
-  expectFailure("render " + scene("one_pixel.json") + " --width 4096 --height 4097 -o " + out_ + "/x.png", 4,
-                "the per-pixel depth keys need 134250496 bytes, more than maxStorageBufferRange (134217728)");
-}
-
-// 7 icospheres of 655362 vertices each: 147 MB of vertices, over lavapipe's 128 MiB buffer limit.
-TEST_F(BadCli, MoreVerticesThanTheDeviceHolds) {
-  std::string objects;
-  // 13 icospheres of 655,362 vertices: their shaded positions (16 bytes each) pass lavapipe's
-  // 128 MiB maxStorageBufferRange. The vertices themselves are read as texels, whose limit is 2 GiB.
-  for (int i = 0; i < 13; ++i) {
-    objects += std::string(i ? ", " : "") + R"({"shape": "icosphere", "center": [)" + std::to_string(i) +
-               R"(, 0, 0], "subdivide": 8})";
-  }
-  const std::string dir = test::makeTempDir();
-  test::writeFile(dir + "/big.json", sceneWith(R"("objects": [)" + objects + "]"));
-  expectFailure("render " + dir + "/big.json --width 8 --height 8 -o " + out_ + "/x.png", 4,
-                "the shaded vertex positions need 136315296 bytes, more than maxStorageBufferRange (134217728)");
-}
-
 }  // namespace
 }  // namespace phongvk

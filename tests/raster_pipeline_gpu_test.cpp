@@ -122,9 +122,12 @@ TEST_P(RasterSceneDiff, CloseToReferenceAndRepeatable) {
   RecordProperty("within_one_level_percent", std::to_string(100.0 * within));
   RecordProperty("psnr_db", std::to_string(stats.psnr));
   // Measured on lavapipe (Mesa 22.3): >= 99.9999% within one level, >= 99.969% identical,
-  // PSNR >= 77 dB; the few larger differences are single silhouette pixels.
+  // PSNR >= 77 dB; the few larger differences are single silhouette pixels. A GPU interpolates
+  // the colours with its own hardware arithmetic: on an NVIDIA H100 (driver 580) every pixel was
+  // within one level, 94.3-98.6% identical, PSNR >= 65 dB.
+  const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   EXPECT_GE(within, 0.9999) << formatDiff(stats);
-  EXPECT_GE(stats.identicalFraction(), 0.999) << formatDiff(stats);
+  EXPECT_GE(stats.identicalFraction(), cpu ? 0.999 : 0.9) << formatDiff(stats);
   EXPECT_GE(stats.psnr, 60.0) << formatDiff(stats);
   EXPECT_EQ(first.rgb, second.rgb) << "the raster image changed between runs";
 }

@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <set>
@@ -389,6 +390,56 @@ TEST_F(StressTest, ImageLargerThanTheDeviceHoldsIsAClearError) {
   EXPECT_EQ(out.keys, renderReference(data, small).keys) << "the renderer is still usable after the error";
 }
 
+// The CLI meets the device's real limits: exit code 4, the limit named, and no file written. Where
+// the device holds more than the case can ask for (the CLI's 16384-pixel sides; a scene of more than
+// 16 big icospheres would take minutes to build), the case is skipped: the in-process tests above
+// and below reach every limit on any device.
+class CliLimit : public StressTest {
+ protected:
+  void expectRefused(const std::string& args, const std::string& message) {
+    const std::string out = test::makeTempDir();
+    const test::CommandResult r = test::runCli(args + " -o " + out + "/x.png");
+    EXPECT_EQ(r.exitCode, 4) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+    EXPECT_TRUE(std::filesystem::is_empty(out)) << args << ": a file was left behind";
+  }
+  std::string limitMessage(const std::string& what, uint64_t need) const {
+    return what + " need " + std::to_string(need) + " bytes, more than maxStorageBufferRange (" +
+           std::to_string(context_.properties.limits.maxStorageBufferRange) + ")";
+  }
+};
+
+// 4096 pixels wide, one row more than the key buffer holds (4097 rows on lavapipe's 128 MiB).
+TEST_F(CliLimit, ImageLargerThanTheDeviceHolds) {
+  const uint64_t range = context_.properties.limits.maxStorageBufferRange;
+  const uint64_t rows = range / (4096 * sizeof(uint64_t)) + 1;
+  if (rows > MAX_IMAGE_SIDE) GTEST_SKIP() << "this device's maxStorageBufferRange (" << range << ") holds keys past "
+                                          << "4096x" << MAX_IMAGE_SIDE << ", the largest image the CLI takes";
+  expectRefused("render " + test::sourcePath("scenes/stress/one_pixel.json") + " --width 4096 --height " +
+                    std::to_string(rows),
+                limitMessage("the per-pixel depth keys", 4096 * rows * sizeof(uint64_t)));
+}
+
+// Icospheres of 655,362 vertices, one more than their shaded positions (16 bytes each) fit in
+// maxStorageBufferRange (13 on lavapipe). The vertices themselves are read as texels (2 GiB there).
+TEST_F(CliLimit, MoreVerticesThanTheDeviceHolds) {
+  const uint64_t range = context_.properties.limits.maxStorageBufferRange;
+  const uint64_t sphereBytes = 16 * 655362;
+  const uint64_t spheres = range / sphereBytes + 1;
+  if (spheres > 16) GTEST_SKIP() << "this device's maxStorageBufferRange (" << range << ") holds " << spheres - 1
+                                 << " icospheres of subdivide 8; the case builds at most 16";
+  std::string objects;
+  for (uint64_t i = 0; i < spheres; ++i) {
+    objects += std::string(i ? ", " : "") + R"({"shape": "icosphere", "center": [)" + std::to_string(i) +
+               R"(, 0, 0], "subdivide": 8})";
+  }
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/big.json", R"({"camera": {"position": [0, -30, 0], "look_at": [0, 0, 0]}, "objects": [)" +
+                                         objects + "]}");
+  expectRefused("render " + dir + "/big.json --width 8 --height 8",
+                limitMessage("the shaded vertex positions", spheres * sphereBytes));
+}
+
 // ---- scene sizes ----
 
 // The message GpuRenderer's constructor throws for `data`.
@@ -403,7 +454,7 @@ std::string uploadError(const VulkanContext& context, const SceneData& data) {
 
 // Scene arrays past a device limit: a clear error naming the array, the amount and the limit,
 // thrown before anything is allocated. The limits are lowered on a copy of the context, so a small
-// scene reaches each of them (BadCli.MoreVerticesThanTheDeviceHolds meets the real one).
+// scene reaches each of them (CliLimit.MoreVerticesThanTheDeviceHolds meets the real one).
 TEST_F(StressTest, MoreGeometryThanTheDeviceHoldsIsAClearError) {
   SceneData data = buildSceneData(loadScene(test::sourcePath("scenes/stress/one_pixel.json")));
   const uint64_t vertices = data.vertices.size();
