@@ -2,6 +2,7 @@
 
 #include "host/vk_check.h"
 
+#include "shaders/bin_large.spv.h"
 #include "shaders/clip_triangles.spv.h"
 #include "shaders/raster_triangles.spv.h"
 #include "shaders/resolve_large.spv.h"
@@ -78,13 +79,14 @@ void checkSceneFits(const VulkanContext& context, const SceneData& data) {
 
 }  // namespace
 
-GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout,
+GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, WorkLayout layout,
                          ColorOutput output, uint32_t firstGroupCap)
     : context_(context) {
   groupCap_ = firstGroupCap != 0 ? std::min(firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const bool one = layout == ResolveLayout::OneTilePerGroup || (layout == ResolveLayout::Auto && cpu);
-  resolveTiles_ = one ? 1u : 8u;
+  const bool cpuLayout = layout == WorkLayout::Cpu || (layout == WorkLayout::Auto && cpu);
+  resolveTiles_ = cpuLayout ? 1u : 8u;
+  binPass_ = !cpuLayout;
   if (output == ColorOutput::InKeySlots && !hasSharedMemory(context_)) {
     throw std::invalid_argument("colours in the key slots need memory that is device local and host cached");
   }
@@ -134,6 +136,7 @@ constexpr ShaderCode SHADERS[] = {
     {spirv_clip_triangles, sizeof(spirv_clip_triangles)},
     {spirv_resolve_small, sizeof(spirv_resolve_small)},
     {spirv_resolve_large, sizeof(spirv_resolve_large)},
+    {spirv_bin_large, sizeof(spirv_bin_large)},
 };
 
 // The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
@@ -196,11 +199,12 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
   std::vector<PipelineRequest> requests = {
       {SHADE, shadeSpecs(materials, lightCount)},
       {RASTER, {}},
-      {CLIP, {}},
+      {CLIP, {{SPEC_BIN_PASS, binPass_}}},
       {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_OUTPUT, output}}},
       {RESOLVE_LARGE,
        {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
   };
+  if (binPass_) requests.push_back({BIN_LARGE, {}});
   // Every pass divides: all correct the device's division and sqrt where the probe asks for it.
   for (PipelineRequest& r : requests) r.specs.push_back({SPEC_EXACT_FLOAT, context_.floats.useExact()});
   return requests;
@@ -399,7 +403,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   vkCmdUpdateBuffer(cmd, bins_.buffer, 0, sizeof noBins, &noBins);
   const LargeList emptyList = {0, 0, 0, 0};
   vkCmdUpdateBuffer(cmd, large_.buffer.buffer, 0, sizeof emptyList, &emptyList);
-  const IdList noClipping = {0, 0, 1, 1};
+  const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, clipList_.buffer, 0, sizeof noClipping, &noClipping);
   transferToComputeBarrier(cmd);
 
@@ -421,6 +425,11 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   bind(CLIP);
   vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, groupsX));
   computeBarrier(cmd);
+  if (binPass_) {
+    bind(BIN_LARGE);
+    vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, binGroupsX));
+    computeBarrier(cmd);
+  }
   writeTimestamp(cmd, timestamps_, 2);
   // Small reads the keys large left. The barrier after the last one also keeps lavapipe from
   // writing the next timestamp before the dispatch ends.

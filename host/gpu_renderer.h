@@ -23,10 +23,14 @@ struct PassTimes {
   double total = 0;
 };
 
-// How many 8x8 tiles a resolve workgroup takes at once (resolve.comp; 8 lanes per tile): one, so
-// a CPU device's 8-wide SIMD batch is a whole workgroup and per-tile work runs once per tile; or
-// eight, so a GPU's warps are full. Auto picks by device type; tests force either on any device.
-enum class ResolveLayout { Auto, OneTilePerGroup, EightTilesPerGroup };
+// How the passes lay their work out for the device. Cpu: a resolve workgroup takes one 8x8 tile
+// (8 lanes per tile), so a CPU device's 8-wide SIMD batch is a whole workgroup and per-tile work
+// runs once per tile; the clip pass links each large triangle into its bins' lists itself (a loop
+// per invocation runs at CPU speed). Gpu: eight tiles per resolve workgroup, so a GPU's warps are
+// full, and the bin pass (bin_large.comp) links each (large triangle, bin) pair on an invocation
+// of its own: one GPU thread walking a screen-filling triangle's bins took 11 ms on an H100. Auto
+// picks by device type; tests force either on any device. Both give the same image and keys.
+enum class WorkLayout { Auto, Cpu, Gpu };
 
 // Where resolve leaves the colours. InKeySlots: each in its pixel's 64-bit key slot, which the host
 // reads in place and resets (8 bytes per pixel in all; needs MemoryKind::Shared memory, as a CPU
@@ -41,7 +45,7 @@ class GpuRenderer {
   // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
   // `firstGroupCap` (0: the device's) is the most workgroups a pass launches until a frame runs out
   // of loop iterations; tests start low to exercise the retry with more (render).
-  GpuRenderer(const VulkanContext& context, const SceneData& data, ResolveLayout layout = ResolveLayout::Auto,
+  GpuRenderer(const VulkanContext& context, const SceneData& data, WorkLayout layout = WorkLayout::Auto,
               ColorOutput output = ColorOutput::Auto, uint32_t firstGroupCap = 0);
   ~GpuRenderer();
   GpuRenderer(const GpuRenderer&) = delete;
@@ -66,7 +70,7 @@ class GpuRenderer {
   uint64_t framesTransformed() const { return framesTransformed_; }
 
  private:
-  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, PASS_COUNT };
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 
@@ -98,6 +102,7 @@ class GpuRenderer {
 
   const VulkanContext& context_;
   uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
+  bool binPass_ = false;       // SPEC_BIN_PASS: WorkLayout::Gpu runs the bin pass
   bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
   bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
   uint32_t groupCap_ = 0;      // most workgroups per pass (shared.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)

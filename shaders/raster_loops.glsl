@@ -61,17 +61,28 @@ uint reserve(uint count, uint capacity, bool entries) {
   return first < capacity && count <= capacity - first ? first : LIST_END;
 }
 
+// Whether the bin pass (bin_large.comp) links the large triangles into their bins' lists
+// (WorkLayout::Gpu) instead of the invocation that set each up.
+layout(constant_id = SPEC_BIN_PASS) const bool BIN_PASS = false;
+
 // Stores sub-triangle s's set-up and links it into the list of every bin whose pixels it may
 // cover, with the bin's tiles it may cover (binTileMask); resolve rasterizes it there, in those
-// tiles. False, linking nothing, when the set-up records or the bin entries are full.
+// tiles. With BIN_PASS it only writes its entries' owner, for the bin pass to link. False, linking
+// nothing, when the set-up records or the bin entries are full.
 bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
   ivec4 bins = binsOf(s.bbox);
   uint slot = reserve(1u, frame.largeSetupCapacity, false);
   if (slot == LIST_END) return false;
-  uint first = reserve(uint((bins.z - bins.x + 1) * (bins.w - bins.y + 1)), frame.largeCapacity, true);
+  uint count = uint((bins.z - bins.x + 1) * (bins.w - bins.y + 1));
+  uint first = reserve(count, frame.largeCapacity, true);
   if (first == LIST_END) return false;
   LargeTriangle record = largeTriangle(t, s);
   largeSetups[slot] = LargeSetup(record, packShading(loadGouraud(t.triangle)));
+  if (BIN_PASS) {
+    for (uint e = first; e < first + count; ++e) largeEntries[e] = LargeEntry(slot, LIST_END, 0u, first);
+    atomicMax(clipList.binGroupsX, min((first + count + BIN_GROUP_SIZE - 1u) / BIN_GROUP_SIZE, frame.groupCap));
+    return true;
+  }
   uint e = first;
   for (int by = bins.y; by <= bins.w; ++by) {
     for (int bx = bins.x; bx <= bins.z; ++bx) {

@@ -27,6 +27,7 @@ using uvec4 = glm::uvec4;
 PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
 PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
 PHONGVK_CONST uint CLIP_GROUP_SIZE = 64;
+PHONGVK_CONST uint BIN_GROUP_SIZE = 64;
 // The image is cut into 32x32 pixel bins. Resolve takes one touched bin per workgroup and walks
 // it as 4x4 tiles of 8x8 pixels (resolve_large.comp, resolve_small.comp): the bin's large
 // triangles are loaded once per tile for all its pixels, and a bin nothing touched is skipped whole.
@@ -86,6 +87,8 @@ PHONGVK_CONST uint SPEC_RESOLVE_OUTPUT = 2;
 // Every pass: whether divide and squareRoot correct the device's own operations (exact_float.h).
 // An id no other constant of any shader uses.
 PHONGVK_CONST uint SPEC_EXACT_FLOAT = 8;
+// clip pass: whether the bin pass links the large triangles (raster_loops.glsl BIN_PASS).
+PHONGVK_CONST uint SPEC_BIN_PASS = 9;
 // probe_float.comp: results per probe (native a / b, sqrt, fma; the quotient and root corrected) and group size.
 PHONGVK_CONST uint FLOAT_PROBE_RESULTS = 5;
 PHONGVK_CONST uint FLOAT_PROBE_GROUP_SIZE = 64;
@@ -239,6 +242,10 @@ struct IdList {
   uint groupsX;      // indirect dispatch (min(count / CLIP_GROUP_SIZE rounded up, groupCap), 1, 1)
   uint groupsY;      // 1, as BinList's
   uint groupsZ;
+  uint binGroupsX;   // the bin pass's indirect dispatch (WorkLayout::Gpu): the large list's
+  uint binGroupsY;   // entries over BIN_GROUP_SIZE, capped at groupCap; (0, 1, 1) without any
+  uint binGroupsZ;
+  uint pad;
 };
 
 // Header of the large triangles' bin entries (LargeEntry), which follow it in the buffer, each
@@ -273,7 +280,7 @@ static_assert(offsetof(FrameData, lightCount) == 92 && offsetof(FrameData, trian
 static_assert(offsetof(FrameData, vertexCount) == 112 && offsetof(FrameData, eye) == 128);
 static_assert(offsetof(FrameData, shadeColors) == 140 && sizeof(FrameData) == 176);
 static_assert(sizeof(FrameStatus) == 16);
-static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 16);
+static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 32);
 }  // namespace phongvk::gpu
 #endif
 

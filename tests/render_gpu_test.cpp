@@ -58,11 +58,11 @@ TEST_P(SceneDiff, GpuMatchesReference) {
   // Without keys resolve takes other paths (resolve_large shades what large triangles win; with
   // keys resolve_small shades every pixel): the image a user gets must be the same.
   const RenderOutput plain = gpu->render(in);
-  // The resolve layout and colour output this device does not use by default must give the same
-  // bytes (a device without shared memory has only the colour buffer).
+  // The work layout (resolve tiles, bin pass) and colour output this device does not use by
+  // default must give the same bytes (a device without shared memory has only the colour buffer).
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const ColorOutput otherOutput = hasSharedMemory(context_) ? ColorOutput::ColorBuffer : ColorOutput::Auto;
-  gpu.emplace(context_, data, cpu ? ResolveLayout::EightTilesPerGroup : ResolveLayout::OneTilePerGroup, otherOutput);
+  gpu.emplace(context_, data, cpu ? WorkLayout::Gpu : WorkLayout::Cpu, otherOutput);
   const RenderOutput otherLayout = gpu->render(in, true);
   const RenderOutput otherLayoutPlain = gpu->render(in);
   gpu.reset();
@@ -75,10 +75,10 @@ TEST_P(SceneDiff, GpuMatchesReference) {
   EXPECT_EQ(first.image.rgb, second.image.rgb) << "GPU image changed between runs";
   EXPECT_EQ(first.keys, second.keys) << "GPU visibility keys changed between runs";
   EXPECT_EQ(first.image.rgb, plain.image.rgb) << "rendering without keys changed the image";
-  EXPECT_EQ(first.image.rgb, otherLayout.image.rgb) << "the other resolve layout changed the image";
-  EXPECT_EQ(first.keys, otherLayout.keys) << "the other resolve layout changed the keys";
+  EXPECT_EQ(first.image.rgb, otherLayout.image.rgb) << "the other work layout changed the image";
+  EXPECT_EQ(first.keys, otherLayout.keys) << "the other work layout changed the keys";
   EXPECT_EQ(first.image.rgb, otherLayoutPlain.image.rgb)
-      << "the other resolve layout and colour output, without keys, changed the image";
+      << "the other work layout and colour output, without keys, changed the image";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, SceneDiff, ::testing::ValuesIn(allScenes()),
@@ -228,7 +228,7 @@ TEST(GpuRender, FramesLeaveNoColourBehindInEitherOutput) {
   for (ColorOutput output : {ColorOutput::InKeySlots, ColorOutput::ColorBuffer}) {
     if (output == ColorOutput::InKeySlots && !hasSharedMemory(context)) continue;  // a discrete GPU has the other only
     SceneData data = buildSceneData(scene);
-    GpuRenderer gpu(context, data, ResolveLayout::Auto, output);
+    GpuRenderer gpu(context, data, WorkLayout::Auto, output);
     for (int i = 0; i < 5; ++i) {
       scene.camera.position = {-1.2 + 0.6 * i, -3, 0};  // the view slides, so every object moves on screen
       scene.camera.direction = {0, 1, 0};
@@ -252,7 +252,7 @@ TEST(GpuRender, FrameOutOfLoopIterationsIsRenderedAgainWithMoreWorkgroups) {
   const FrameInputs in = makeFrame(data, makeView(scene.camera));
   VulkanContext context = createContext({-1, true});
   {
-    GpuRenderer gpu(context, data, ResolveLayout::Auto, ColorOutput::Auto, 1);
+    GpuRenderer gpu(context, data, WorkLayout::Auto, ColorOutput::Auto, 1);
     const RenderOutput out = gpu.render(in);
     EXPECT_EQ(out.image.rgb, renderReference(data, in).image.rgb);
     if (context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {

@@ -1,0 +1,39 @@
+// Bin pass (GPU layout): links every large triangle into the lists of the bins it may cover, one
+// invocation per (triangle, bin) pair. The clip pass reserved each triangle's entries (one per bin
+// of its box, row-major) and wrote each as (set-up slot, LIST_END, 0, first entry of the
+// triangle); this pass finds the entry's bin from its offset, computes the bin's tile mask and
+// links it, or leaves it unlinked where the triangle misses the bin. On a GPU one invocation walking
+// a screen-filling triangle's ~1,250 bins took most of a frame (11 ms on an H100); on a CPU device
+// the clip pass links them itself (WorkLayout::Cpu), and this pass is not run.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+
+#include "shared.h"
+#include "raster.h"
+#include "bindings.glsl"
+#include "raster_loops.glsl"
+
+layout(local_size_x = BIN_GROUP_SIZE) in;
+
+void main() {
+  loadFrame();
+  // An overflowing frame is rendered again; its lists may hold entries nobody wrote.
+  if ((status.flags & STATUS_LARGE_OVERFLOW) != 0u) return;
+  uint n = min(large.count, frame.largeCapacity);
+  for (uint e = gl_GlobalInvocationID.x; e < n; e += gl_NumWorkGroups.x * BIN_GROUP_SIZE) {
+    LargeEntry entry = largeEntries[e];
+    LargeTriangle record = largeSetup(entry.slot);
+    ivec4 bins = binsOf(record.bbox);
+    int i = int(e - entry.pad);  // the entry's place among its triangle's, row-major over the box's bins
+    int columns = bins.z - bins.x + 1;
+    ivec2 b = ivec2(bins.x + i % columns, bins.y + i / columns);
+    uint tiles = binTileMask(record, b * int(BIN_SIZE));
+    if (tiles == 0u) continue;
+    uint bin = uint(b.y) * frame.binsX + uint(b.x);
+    largeEntries[e] = LargeEntry(entry.slot, atomicExchange(binData[frame.binCount + bin], e), tiles, 0u);
+    touchBin(uvec2(b), 0u);
+  }
+  checkLoopBudget();
+}
