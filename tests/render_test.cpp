@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 namespace phongvk {
 namespace {
@@ -85,6 +86,23 @@ TEST(Render, SameSceneSameBytes) {
 }
 
 // ---- CLI ----
+
+// The GPU's packed RGBA8 words to RGB bytes: four pixels at a time, then the rest one by one; the
+// alpha byte dropped. Every count from 0 to 9 pixels, so each remainder is covered.
+TEST(Render, ImageFromPackedKeepsRgbOfEveryPixelAndDropsAlpha) {
+  for (int n = 0; n <= 9; ++n) {
+    std::vector<uint32_t> packed;
+    for (int i = 0; i < n; ++i) packed.push_back(0xA0000000u | uint32_t(i * 0x030201 + 0x102030));
+    const Image image = imageFromPacked(packed, n, 1);
+    ASSERT_EQ(image.rgb.size(), size_t(3 * n));
+    for (int i = 0; i < n; ++i) {
+      const uint8_t* p = image.pixel(i, 0);
+      EXPECT_EQ(p[0], uint8_t(packed[i])) << n << " pixels, pixel " << i;
+      EXPECT_EQ(p[1], uint8_t(packed[i] >> 8)) << n << " pixels, pixel " << i;
+      EXPECT_EQ(p[2], uint8_t(packed[i] >> 16)) << n << " pixels, pixel " << i;
+    }
+  }
+}
 
 TEST(Cli, RenderWritesThePngAndSaysWhatItDid) {
   const std::string dir = makeTempDir();
