@@ -40,7 +40,8 @@ void ValidationLog::clear() {
 namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-constexpr const char* kRequirements = "Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics and a compute queue";
+constexpr const char* kRequirements =
+    "Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, storageBuffer8BitAccess and a compute queue";
 
 void initializeLoader() {
   // volkInitialize dlopens libvulkan.so.1; once per process is enough.
@@ -271,6 +272,7 @@ DeviceReport inspectDevice(VkPhysicalDevice device, uint32_t index) {
   if (!vulkan12) report.missing.push_back("Vulkan 1.2");
   if (!features.features.shaderInt64) report.missing.push_back("shaderInt64");
   if (vulkan12 && !features12.shaderBufferInt64Atomics) report.missing.push_back("shaderBufferInt64Atomics");
+  if (vulkan12 && !features12.storageBuffer8BitAccess) report.missing.push_back("storageBuffer8BitAccess");
   if (!findComputeFamily(device)) report.missing.push_back("a compute queue");
   report.suitable = report.missing.empty();
   return report;
@@ -306,6 +308,7 @@ void createDevice(VulkanContext& context) {
 
   VkPhysicalDeviceVulkan12Features features12 = { VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES };
   features12.shaderBufferInt64Atomics = VK_TRUE;  // atomicMin of the 64-bit depth|triangle key
+  features12.storageBuffer8BitAccess = VK_TRUE;   // resolve writes the colour buffer's RGB bytes
   VkPhysicalDeviceFeatures2 features = { VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2 };
   features.pNext = &features12;
   features.features.shaderInt64 = VK_TRUE;        // uint64_t keys and int64 edge functions

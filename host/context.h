@@ -1,7 +1,8 @@
 // context.h — the Vulkan instance, the chosen device and its compute queue (volk-loaded, headless).
 //
 // phongvk needs Vulkan 1.2, shaderInt64 and shaderBufferInt64Atomics (the renderer resolves
-// visibility with 64-bit atomicMin on a storage buffer) and one queue family with compute.
+// visibility with 64-bit atomicMin on a storage buffer), storageBuffer8BitAccess (resolve writes
+// the colour buffer as RGB bytes, the image's own layout) and one queue family with compute.
 // Every device is checked against that list and the reasons it fails are kept, so "no device"
 // errors and `phongvk devices` can say exactly why a device was rejected.
 //
@@ -38,7 +39,7 @@ struct DeviceReport {
   std::string type;                  // "discrete GPU", "integrated GPU", "virtual GPU", "CPU", "other"
   std::string apiVersion;            // "1.3.230"
   bool suitable = false;
-  std::vector<std::string> missing;  // "Vulkan 1.2", "shaderInt64", "shaderBufferInt64Atomics", "a compute queue"
+  std::vector<std::string> missing;  // "Vulkan 1.2", "shaderInt64", "shaderBufferInt64Atomics", ..., "a compute queue"
 };
 
 struct ContextOptions {

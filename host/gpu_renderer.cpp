@@ -4,6 +4,7 @@
 
 #include "shaders/bin_large.spv.h"
 #include "shaders/clip_triangles.spv.h"
+#include "shaders/fill_background.spv.h"
 #include "shaders/raster_triangles.spv.h"
 #include "shaders/resolve_large.spv.h"
 #include "shaders/resolve_small.spv.h"
@@ -137,6 +138,7 @@ constexpr ShaderCode SHADERS[] = {
     {spirv_resolve_small, sizeof(spirv_resolve_small)},
     {spirv_resolve_large, sizeof(spirv_resolve_large)},
     {spirv_bin_large, sizeof(spirv_bin_large)},
+    {spirv_fill_background, sizeof(spirv_fill_background)},
 };
 
 // The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
@@ -205,6 +207,7 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
        {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
   };
   if (binPass_) requests.push_back({BIN_LARGE, {}});
+  if (output != RESOLVE_OUTPUT_KEY_SLOTS) requests.push_back({FILL, {}});  // the colour buffer's background
   // Every pass divides: all correct the device's division and sqrt where the probe asks for it.
   for (PipelineRequest& r : requests) r.specs.push_back({SPEC_EXACT_FLOAT, context_.floats.useExact()});
   return requests;
@@ -277,7 +280,8 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
 // or a frame with keys), else 4 bytes that only keep its descriptor valid. Resolve writes the
 // colours straight into host-visible memory, where the host reads them in place: no device copy.
 void GpuRenderer::ensureColorBuffer(bool wholeImage) {
-  const VkDeviceSize bytes = wholeImage ? VkDeviceSize(width_) * height_ * sizeof(uint32_t) : sizeof(uint32_t);
+  // RGB bytes, rounded up to whole words for the background pass.
+  const VkDeviceSize bytes = wholeImage ? (3 * VkDeviceSize(width_) * height_ + 3) / 4 * 4 : sizeof(uint32_t);
   if (colors_.buffer != VK_NULL_HANDLE && colors_.size >= bytes) return;
   destroyBuffer(colors_, context_);
   createBuffer(colors_, context_, bytes, STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::HostVisible);
@@ -393,8 +397,6 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
 
 void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool withKeys) {
   resetTimestamps(cmd, timestamps_);
-  // Untouched bins are not resolved: their pixels keep this fill.
-  if (frame.colorsInKeys == 0u) vkCmdFillBuffer(cmd, colors_.buffer, 0, VK_WHOLE_SIZE, packColor(frame.background));
   if (keysDirty_) vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
   const VkDeviceSize binBytes = VkDeviceSize(frame.binCount) * sizeof(uint32_t);
   vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList), binBytes, 0u);                   // no flags
@@ -413,6 +415,11 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   };
   writeTimestamp(cmd, timestamps_, 0);
   const uint32_t cap = frame.groupCap;
+  if (frame.colorsInKeys == 0u) {  // untouched bins are not resolved: their pixels keep this fill
+    bind(FILL);
+    const uint32_t words = uint32_t((3ull * frame.width * frame.height + 3) / 4);
+    vkCmdDispatch(cmd, std::min(groupCount(words, FILL_GROUP_SIZE), cap), 1, 1);
+  }
   if (frame.shadeColors != 0u || frame.shadePositions != 0u) {  // else last frame's still hold
     bind(SHADE);
     vkCmdDispatch(cmd, std::min(groupCount(vertexCount_, SHADE_GROUP_SIZE), cap), 1, 1);
@@ -544,7 +551,9 @@ Image imageFromKeySlots(std::span<uint64_t> slots, uint32_t background, int widt
 Image GpuRenderer::readImage(const FrameData& frame) {
   const size_t pixels = size_t(width_) * height_;
   if (frame.colorsInKeys == 0u) {
-    return imageFromPacked({static_cast<const uint32_t*>(colors_.mapped), pixels}, int(width_), int(height_));
+    Image image{int(width_), int(height_)};  // resolve wrote the image's own layout: one copy
+    std::memcpy(image.rgb.data(), colors_.mapped, image.rgb.size());
+    return image;
   }
   Image image = imageFromKeySlots({static_cast<uint64_t*>(keys_.mapped), pixels}, packColor(frame.background),
                                   int(width_), int(height_));

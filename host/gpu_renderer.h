@@ -17,7 +17,7 @@ namespace phongvk {
 
 // Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
 struct PassTimes {
-  double shade = 0;
+  double shade = 0;    // vertex shading, and the colour buffer's background fill when it is used
   double raster = 0;   // triangle and clip passes: setup, culling, clipping, small triangles
   double resolve = 0;  // large triangles (binned), then colours
   double total = 0;
@@ -70,7 +70,7 @@ class GpuRenderer {
   uint64_t framesTransformed() const { return framesTransformed_; }
 
  private:
-  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, PASS_COUNT };
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 

@@ -46,7 +46,7 @@ layout(binding = BINDING_LARGE_SETUP_TEXELS) uniform usamplerBuffer largeSetupTe
 layout(std430, binding = BINDING_SHADED) writeonly buffer ShadedPositions { vec4 shadedPositions[]; };
 layout(std430, binding = BINDING_SHADED_COLORS) writeonly buffer ShadedColors { vec4 shadedColors[]; };
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
-layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint colors[]; };
+layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint8_t colorBytes[]; };
 layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; LargeEntry largeEntries[]; };
 // Bins (shared.h BinList): binData[b] is bin b's flags, binData[binCount + b] the head of its
 // large-triangle list, binData[2 binCount + k] the k-th touched bin as x | y << 16. Resolve visits

@@ -38,6 +38,8 @@ void storeColor(uint i, uint color, uint64_t key, bool keyChanged) {
   }
   if (OUTPUT == RESOLVE_OUTPUT_KEEP_KEYS) keys[i] = key;
   else if (keyChanged) keys[i] = KEY_CLEAR;
-  colors[i] = color;
+  colorBytes[3u * i] = uint8_t(color & 0xFFu);
+  colorBytes[3u * i + 1u] = uint8_t((color >> 8) & 0xFFu);
+  colorBytes[3u * i + 2u] = uint8_t((color >> 16) & 0xFFu);
 }
 

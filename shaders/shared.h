@@ -20,6 +20,7 @@ using uvec4 = glm::uvec4;
 #define PHONGVK_CONST inline constexpr
 #else
 #define PHONGVK_CONST const
+#extension GL_EXT_shader_8bit_storage : require
 #endif
 
 // ---- Workgroup sizes (threads per group; converted to group counts once, on the host) ----
@@ -28,6 +29,7 @@ PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
 PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
 PHONGVK_CONST uint CLIP_GROUP_SIZE = 64;
 PHONGVK_CONST uint BIN_GROUP_SIZE = 64;
+PHONGVK_CONST uint FILL_GROUP_SIZE = 64;
 // The image is cut into 32x32 pixel bins. Resolve takes one touched bin per workgroup and walks
 // it as 4x4 tiles of 8x8 pixels (resolve_large.comp, resolve_small.comp): the bin's large
 // triangles are loaded once per tile for all its pixels, and a bin nothing touched is skipped whole.
@@ -112,7 +114,7 @@ PHONGVK_CONST uint BINDING_MATERIALS = 4;    // MaterialData[]
 PHONGVK_CONST uint BINDING_LIGHTS = 5;       // LightData[]
 PHONGVK_CONST uint BINDING_SHADED = 6;       // ShadedVertex.hpos per vertex (vec4[])
 PHONGVK_CONST uint BINDING_KEYS = 7;         // uint64 depth|triangle keys, one per pixel
-PHONGVK_CONST uint BINDING_COLOR = 8;        // packed RGBA8, one uint per pixel
+PHONGVK_CONST uint BINDING_COLOR = 8;        // RGB bytes, the image's layout (3 per pixel, row-major)
 PHONGVK_CONST uint BINDING_LARGE = 9;        // LargeList header + LargeEntry bin entries
 PHONGVK_CONST uint BINDING_BINS = 10;        // BinList header, flags and list heads per bin, touched bins
 PHONGVK_CONST uint BINDING_LARGE_SETUPS = 11; // LargeSetup (raster.h) of each large triangle

@@ -132,8 +132,8 @@ TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
   std::vector<DeviceReport> devices = {fakeDevice(0, "CPU", {"shaderBufferInt64Atomics"}),
                                        fakeDevice(1, "discrete GPU", {"Vulkan 1.2", "a compute queue"})};
   EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, -1); }),
-            "no usable Vulkan device (phongvk needs Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics and a compute "
-            "queue): [0] Device0 (missing shaderBufferInt64Atomics); "
+            "no usable Vulkan device (phongvk needs Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, "
+            "storageBuffer8BitAccess and a compute queue): [0] Device0 (missing shaderBufferInt64Atomics); "
             "[1] Device1 (missing Vulkan 1.2, a compute queue)");
 }
 
