@@ -28,18 +28,15 @@ VkCommandBuffer beginOneTimeCommands(const VulkanContext& context) {
 
 namespace {
 
-// Submits and waits; the fence is destroyed on every path. Returns the wait's result.
+// Submits and waits on the context's fence (left pending on a timeout: the device is unusable
+// then, and destroyContext waits for it). Returns the wait's result.
 VkResult submitWithFence(const VulkanContext& context, VkCommandBuffer cmd, std::chrono::nanoseconds timeout) {
-  VkFenceCreateInfo fenceInfo = { VK_STRUCTURE_TYPE_FENCE_CREATE_INFO };
-  VkFence fence = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateFence(context.device, &fenceInfo, nullptr, &fence));
-
+  VK_CHECK(vkResetFences(context.device, 1, &context.fence));
   VkSubmitInfo submit = { VK_STRUCTURE_TYPE_SUBMIT_INFO };
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
-  VkResult result = vkQueueSubmit(context.queue, 1, &submit, fence);
-  if (result == VK_SUCCESS) result = vkWaitForFences(context.device, 1, &fence, VK_TRUE, timeout.count());
-  if (result != VK_TIMEOUT) vkDestroyFence(context.device, fence, nullptr);  // a pending fence must not be destroyed
+  VkResult result = vkQueueSubmit(context.queue, 1, &submit, context.fence);
+  if (result == VK_SUCCESS) result = vkWaitForFences(context.device, 1, &context.fence, VK_TRUE, timeout.count());
   return result;
 }
 

@@ -91,6 +91,7 @@ struct VulkanContext {
   VkQueue queue = VK_NULL_HANDLE;
   uint32_t queueFamily = 0;
   VkCommandPool commandPool = VK_NULL_HANDLE;  // for one-time command buffers; not thread-safe
+  VkFence fence = VK_NULL_HANDLE;              // submitAndWait's, reset before each use; likewise
   VkPhysicalDeviceProperties properties = {};
   VkPhysicalDeviceMemoryProperties memoryProperties = {};
   bool timestamps = false;          // the queue can write timestamps (see TimestampPool)
