@@ -532,15 +532,15 @@ namespace {
 // background where resolve left KEY_CLEAR; every slot is reset to KEY_CLEAR for the next frame.
 Image imageFromKeySlots(std::span<uint64_t> slots, uint32_t background, int width, int height) {
   Image image(width, height);
-  for (size_t i = 0; i < slots.size(); ++i) {
+  auto take = [&](size_t i) {
     const uint64_t slot = slots[i];
-    uint32_t color = background;
-    if (slot != KEY_CLEAR) {
-      color = uint32_t(slot);
-      slots[i] = KEY_CLEAR;
-    }
-    image.setPacked(i, color);
-  }
+    if (slot == KEY_CLEAR) return background;
+    slots[i] = KEY_CLEAR;
+    return uint32_t(slot);
+  };
+  size_t i = 0;
+  for (; i + 4 <= slots.size(); i += 4) image.setPackedFour(i, take(i), take(i + 1), take(i + 2), take(i + 3));
+  for (; i < slots.size(); ++i) image.setPacked(i, take(i));
   return image;
 }
 
@@ -551,8 +551,13 @@ Image imageFromKeySlots(std::span<uint64_t> slots, uint32_t background, int widt
 Image GpuRenderer::readImage(const FrameData& frame) {
   const size_t pixels = size_t(width_) * height_;
   if (frame.colorsInKeys == 0u) {
-    Image image{int(width_), int(height_)};  // resolve wrote the image's own layout: one copy
-    std::memcpy(image.rgb.data(), colors_.mapped, image.rgb.size());
+    // Resolve wrote the image's own layout: one copy, into storage not zero-filled first (that pass
+    // cost a third of the copy: 1385x923 0.099 -> 0.067 ms, 4K 1.69 -> 1.10 ms, median of 21).
+    Image image;
+    image.width = int(width_);
+    image.height = int(height_);
+    const auto* bytes = static_cast<const uint8_t*>(colors_.mapped);
+    image.rgb.assign(bytes, bytes + 3 * pixels);
     return image;
   }
   Image image = imageFromKeySlots({static_cast<uint64_t*>(keys_.mapped), pixels}, packColor(frame.background),
