@@ -78,7 +78,7 @@ struct FloatReport {
   uint32_t exactSqrtOff = 0;    // exact_float.h correctedRoot of the device root
   bool nativeExact() const { return divideOff == 0 && sqrtOff == 0; }
   bool correctionExact() const { return fmaOff == 0 && exactDivideOff == 0 && exactSqrtOff == 0; }
-  // Whether the renderer's shaders correct the device's operations (shared.h SPEC_EXACT_FLOAT):
+  // Whether the renderer takes its passes' `_exact` builds, which correct the device's operations:
   // only where they are off and the corrected ones are exact.
   bool useExact() const { return !nativeExact() && correctionExact(); }
 };

@@ -3,12 +3,19 @@
 #include "host/vk_check.h"
 
 #include "shaders/bin_large.spv.h"
+#include "shaders/bin_large_exact.spv.h"
 #include "shaders/clip_triangles.spv.h"
+#include "shaders/clip_triangles_exact.spv.h"
 #include "shaders/fill_background.spv.h"
+#include "shaders/fill_background_exact.spv.h"
 #include "shaders/raster_triangles.spv.h"
+#include "shaders/raster_triangles_exact.spv.h"
 #include "shaders/resolve_large.spv.h"
+#include "shaders/resolve_large_exact.spv.h"
 #include "shaders/resolve_small.spv.h"
+#include "shaders/resolve_small_exact.spv.h"
 #include "shaders/shade_vertices.spv.h"
+#include "shaders/shade_vertices_exact.spv.h"
 #include "shaders/raster.h"
 #include "shaders/shared.h"
 
@@ -131,15 +138,21 @@ struct ShaderCode {
   size_t bytes;
 };
 
-constexpr ShaderCode SHADERS[] = {
-    {spirv_shade_vertices, sizeof(spirv_shade_vertices)},
-    {spirv_raster_triangles, sizeof(spirv_raster_triangles)},
-    {spirv_clip_triangles, sizeof(spirv_clip_triangles)},
-    {spirv_resolve_small, sizeof(spirv_resolve_small)},
-    {spirv_resolve_large, sizeof(spirv_resolve_large)},
-    {spirv_bin_large, sizeof(spirv_bin_large)},
-    {spirv_fill_background, sizeof(spirv_fill_background)},
+#define SHADER(name) {spirv_##name, sizeof(spirv_##name)}
+
+// Per pass (GpuRenderer::Pass order): the build with the device's own division and sqrt, and the
+// `_exact` build that corrects them (shaders/exact_float.h), for devices whose own are off.
+constexpr ShaderCode SHADERS[][2] = {
+    {SHADER(shade_vertices), SHADER(shade_vertices_exact)},
+    {SHADER(raster_triangles), SHADER(raster_triangles_exact)},
+    {SHADER(clip_triangles), SHADER(clip_triangles_exact)},
+    {SHADER(resolve_small), SHADER(resolve_small_exact)},
+    {SHADER(resolve_large), SHADER(resolve_large_exact)},
+    {SHADER(bin_large), SHADER(bin_large_exact)},
+    {SHADER(fill_background), SHADER(fill_background_exact)},
 };
+
+#undef SHADER
 
 // The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
 std::vector<SpecConstant> shadeSpecs(const std::vector<MaterialData>& materials, size_t lightCount) {
@@ -172,7 +185,7 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   for (const PipelineRequest& r : requests) {
     std::vector<uint32_t> key = pipelineKey(r.pass, r.specs);
     if (pipelines_.count(key) != 0) continue;
-    const ShaderCode code = SHADERS[r.pass];
+    const ShaderCode code = SHADERS[r.pass][context_.floats.useExact() ? 1 : 0];
     pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
                            return createComputePipeline(context_, code.spirv, code.bytes, BINDINGS, 0, specs);
                          }));
@@ -208,8 +221,6 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
   };
   if (binPass_) requests.push_back({BIN_LARGE, {}});
   if (output != RESOLVE_OUTPUT_KEY_SLOTS) requests.push_back({FILL, {}});  // the colour buffer's background
-  // Every pass divides: all correct the device's division and sqrt where the probe asks for it.
-  for (PipelineRequest& r : requests) r.specs.push_back({SPEC_EXACT_FLOAT, context_.floats.useExact()});
   return requests;
 }
 

@@ -7,11 +7,11 @@
 // one ulp off can move coverage. So the shared maths divides with `divide` and takes roots with
 // `squareRoot`:
 //   - C++: the plain IEEE operations;
-//   - GLSL: the device's own operations when EXACT_FLOAT is false (a device whose results matched
-//     the host's on every probe, host/float_probe.h: lavapipe), else the device's result corrected
-//     to the correctly rounded one with fused multiply-adds (correctedQuotient, correctedRoot).
-//     The host sets EXACT_FLOAT only where the probe found the device's operations off and the
-//     corrected ones exact (which needs a fused fma: lavapipe's is not).
+//   - GLSL: the device's own operations, or, in the passes' `_exact` builds (EXACT_FLOAT_OPS, see
+//     CMakeLists.txt), the device's result corrected to the correctly rounded one with fused
+//     multiply-adds (correctedQuotient, correctedRoot). The host takes the `_exact` builds only
+//     where the probe (host/float_probe.h) found the device's operations off and the corrected
+//     ones exact (which needs a fused fma: lavapipe's is not; its operations are exact).
 // The corrections are written once, in the common subset, so the C++ tests check them too.
 #ifndef PHONGVK_EXACT_FLOAT_H
 #define PHONGVK_EXACT_FLOAT_H
@@ -95,15 +95,20 @@ SHARED_END
 
 #else
 
-layout(constant_id = SPEC_EXACT_FLOAT) const bool EXACT_FLOAT = false;
-
-float divide(float a, float b) { return EXACT_FLOAT ? correctedQuotient(a, b, a / b) : a / b; }
+#ifndef EXACT_FLOAT_OPS
+#define EXACT_FLOAT_OPS 0
+#endif
+#if EXACT_FLOAT_OPS
+float divide(float a, float b) { return correctedQuotient(a, b, a / b); }
 vec3 divide(vec3 v, float d) {
-  return EXACT_FLOAT ? vec3(correctedQuotient(v.x, d, v.x / d), correctedQuotient(v.y, d, v.y / d),
-                            correctedQuotient(v.z, d, v.z / d))
-                     : v / d;
+  return vec3(correctedQuotient(v.x, d, v.x / d), correctedQuotient(v.y, d, v.y / d), correctedQuotient(v.z, d, v.z / d));
 }
-float squareRoot(float x) { return EXACT_FLOAT ? correctedRoot(x, sqrt(x)) : sqrt(x); }
+float squareRoot(float x) { return correctedRoot(x, sqrt(x)); }
+#else
+float divide(float a, float b) { return a / b; }
+vec3 divide(vec3 v, float d) { return v / d; }
+float squareRoot(float x) { return sqrt(x); }
+#endif
 
 #endif
 

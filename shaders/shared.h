@@ -86,9 +86,6 @@ PHONGVK_CONST uint SPEC_RESOLVE_TILES = 1;
 // constant, not a frame field: lavapipe runs every side of a branch, and the three stores of a
 // frame-chosen output each cost a loop over the lanes per pixel.
 PHONGVK_CONST uint SPEC_RESOLVE_OUTPUT = 2;
-// Every pass: whether divide and squareRoot correct the device's own operations (exact_float.h).
-// An id no other constant of any shader uses.
-PHONGVK_CONST uint SPEC_EXACT_FLOAT = 8;
 // clip pass: whether the bin pass links the large triangles (raster_loops.glsl BIN_PASS).
 PHONGVK_CONST uint SPEC_BIN_PASS = 9;
 // probe_float.comp: results per probe (native a / b, sqrt, fma; the quotient and root corrected) and group size.
