@@ -34,8 +34,8 @@ enum class WorkLayout { Auto, Cpu, Gpu };
 
 // Where resolve leaves the colours. InKeySlots: each in its pixel's 64-bit key slot, which the host
 // reads in place and resets (8 bytes per pixel in all; needs MemoryKind::Shared memory, as a CPU
-// or integrated device has). ColorBuffer: in a host-visible colour buffer, resolve resetting the
-// keys (12 bytes per pixel). Auto picks InKeySlots where the device has shared memory. Frames
+// or integrated device has). ColorBuffer: as RGB bytes in a host-visible colour buffer, the
+// image's own layout, resolve resetting the keys (11 bytes per pixel). Auto picks InKeySlots where the device has shared memory. Frames
 // rendered with keys (for diffs) always use the colour buffer. Tests force either.
 enum class ColorOutput { Auto, InKeySlots, ColorBuffer };
 

@@ -29,7 +29,7 @@ bool inImage(int x, int y) { return x < int(frame.width) && y < int(frame.height
 uint pixelIndex(int x, int y) { return uint(y) * frame.width + uint(x); }
 
 // Pixel i's final colour, won by `key`, where OUTPUT says: into its key slot, or into the colour
-// buffer with the key reset for the next frame (or kept final, for diffs; `keyChanged` false when
+// buffer as three bytes (shared.h BINDING_COLOR) with the key reset for the next frame (or kept final, for diffs; `keyChanged` false when
 // the slot already holds KEY_CLEAR).
 void storeColor(uint i, uint color, uint64_t key, bool keyChanged) {
   if (OUTPUT == RESOLVE_OUTPUT_KEY_SLOTS) {
