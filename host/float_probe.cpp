@@ -15,8 +15,6 @@ namespace phongvk {
 
 namespace {
 
-constexpr uint32_t kRandomProbes = 4096;
-
 // sign * 1.mantissa * 2^exponent (exponent in the normal range).
 float makeFloat(uint32_t mantissa, int exponent, bool negative = false) {
   const uint32_t bits = (negative ? 0x80000000u : 0u) | (uint32_t(exponent + 127) << 23) | (mantissa & 0x7FFFFFu);
@@ -68,13 +66,13 @@ std::pair<float, float> randomQuotient(std::mt19937& random, uint32_t i) {
 
 }  // namespace
 
-std::vector<FloatProbeInput> floatProbeInputs() {
-  std::mt19937 random(20261122u);  // fixed: every run probes the same inputs
+std::vector<FloatProbeInput> floatProbeInputs(uint32_t randomProbes, uint32_t seed) {
+  std::mt19937 random(seed);
   std::vector<FloatProbeInput> inputs;
   const auto& quotients = awkwardQuotients();
   const auto& roots = awkwardRoots();
   const size_t awkward = std::max(quotients.size(), roots.size());
-  for (uint32_t i = 0; i < awkward + kRandomProbes; ++i) {
+  for (uint32_t i = 0; i < awkward + randomProbes; ++i) {
     const auto [a, b] = i < quotients.size() ? quotients[i] : randomQuotient(random, i);
     const float x = i < roots.size() ? roots[i] : randomFloat(random, -120, 120, false);
     inputs.push_back({a, b, fmaAddend(a, b), x});

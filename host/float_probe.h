@@ -22,8 +22,9 @@ struct FloatProbeInput {
 };
 
 // The fixed probes: ordinary and awkward quotients and roots (mantissas of all ones, exact
-// results, ties, tiny and huge operands), then hashed random ones. Every result is a normal float.
-std::vector<FloatProbeInput> floatProbeInputs();
+// results, ties, tiny and huge operands), then `randomProbes` random ones drawn from `seed`. Every
+// result is a normal float. The defaults are what the device is probed with.
+std::vector<FloatProbeInput> floatProbeInputs(uint32_t randomProbes = 4096, uint32_t seed = 20261122u);
 
 // Compares the device's results (FLOAT_PROBE_RESULTS bit patterns per probe, in probe_float.comp's
 // order) with the host's IEEE results.

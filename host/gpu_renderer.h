@@ -18,7 +18,7 @@ namespace phongvk {
 // Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
 struct PassTimes {
   double shade = 0;    // vertex shading, and the colour buffer's background fill when it is used
-  double raster = 0;   // triangle and clip passes: setup, culling, clipping, small triangles
+  double raster = 0;   // triangle, clip and bin passes: setup, culling, clipping, small triangles
   double resolve = 0;  // large triangles (binned), then colours
   double total = 0;
 };
@@ -35,8 +35,9 @@ enum class WorkLayout { Auto, Cpu, Gpu };
 // Where resolve leaves the colours. InKeySlots: each in its pixel's 64-bit key slot, which the host
 // reads in place and resets (8 bytes per pixel in all; needs MemoryKind::Shared memory, as a CPU
 // or integrated device has). ColorBuffer: as RGB bytes in a host-visible colour buffer, the
-// image's own layout, resolve resetting the keys (11 bytes per pixel). Auto picks InKeySlots where the device has shared memory. Frames
-// rendered with keys (for diffs) always use the colour buffer. Tests force either.
+// image's own layout, resolve resetting the keys (11 bytes per pixel). Auto picks InKeySlots where
+// the device has shared memory. Frames rendered with keys (for diffs) always use the colour buffer.
+// Tests force either.
 enum class ColorOutput { Auto, InKeySlots, ColorBuffer };
 
 class GpuRenderer {

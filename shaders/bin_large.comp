@@ -28,12 +28,7 @@ void main() {
     ivec4 bins = binsOf(record.bbox);
     int i = int(e - entry.pad);  // the entry's place among its triangle's, row-major over the box's bins
     int columns = bins.z - bins.x + 1;
-    ivec2 b = ivec2(bins.x + i % columns, bins.y + i / columns);
-    uint tiles = binTileMask(record, b * int(BIN_SIZE));
-    if (tiles == 0u) continue;
-    uint bin = uint(b.y) * frame.binsX + uint(b.x);
-    largeEntries[e] = LargeEntry(entry.slot, atomicExchange(binData[frame.binCount + bin], e), tiles, 0u);
-    touchBin(uvec2(b), 0u);
+    linkEntry(e, entry.slot, record, ivec2(bins.x + i % columns, bins.y + i / columns));
   }
   checkLoopBudget();
 }

@@ -61,6 +61,18 @@ uint reserve(uint count, uint capacity, bool entries) {
   return first < capacity && count <= capacity - first ? first : LIST_END;
 }
 
+// Links entry e (large set-up `slot`, raster half `record`) into bin b's list with the bin's tiles
+// the triangle may cover (binTileMask), and marks the bin touched. False, linking nothing, where
+// the triangle misses the bin.
+bool linkEntry(uint e, uint slot, LargeTriangle record, ivec2 b) {
+  uint tiles = binTileMask(record, b * int(BIN_SIZE));
+  if (tiles == 0u) return false;
+  uint bin = uint(b.y) * frame.binsX + uint(b.x);
+  largeEntries[e] = LargeEntry(slot, atomicExchange(binData[frame.binCount + bin], e), tiles, 0u);
+  touchBin(uvec2(b), 0u);
+  return true;
+}
+
 // Whether the bin pass (bin_large.comp) links the large triangles into their bins' lists
 // (WorkLayout::Gpu) instead of the invocation that set each up.
 layout(constant_id = SPEC_BIN_PASS) const bool BIN_PASS = false;
@@ -83,17 +95,11 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
     atomicMax(clipList.binGroupsX, min((first + count + BIN_GROUP_SIZE - 1u) / BIN_GROUP_SIZE, frame.groupCap));
     return true;
   }
+  // A bin of the box that the triangle misses gets no entry (its reserved one stays unused).
   uint e = first;
   for (int by = bins.y; by <= bins.w; ++by) {
     for (int bx = bins.x; bx <= bins.z; ++bx) {
-      ivec2 origin = ivec2(bx, by) * int(BIN_SIZE);
-      // A bin of the box that the triangle misses gets no entry (its reserved one stays unused).
-      uint tiles = binTileMask(record, origin);
-      if (tiles == 0u) continue;
-      uint bin = uint(by) * frame.binsX + uint(bx);
-      largeEntries[e] = LargeEntry(slot, atomicExchange(binData[frame.binCount + bin], e), tiles, 0u);
-      ++e;
-      touchBin(uvec2(bx, by), 0u);
+      if (linkEntry(e, slot, record, ivec2(bx, by))) ++e;
     }
   }
   return true;
