@@ -26,7 +26,7 @@ void main() {
     LargeEntry entry = largeEntries[e];
     LargeTriangle record = largeSetup(entry.slot);
     ivec4 bins = binsOf(record.bbox);
-    int i = int(e - entry.pad);  // the entry's place among its triangle's, row-major over the box's bins
+    int i = int(e - entry.owned);  // the entry's place among its triangle's, row-major over the box's bins
     int columns = bins.z - bins.x + 1;
     linkEntry(e, entry.slot, record, ivec2(bins.x + i % columns, bins.y + i / columns));
   }

@@ -540,13 +540,16 @@ FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
   return min(c0, min(c1, c2));
 }
 
-// The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre: bit
-// j * BIN_TILES + i for tile (i, j) unless classifyBlock calls it outside. 0: none. Unrolled:
-// lavapipe counts every loop iteration against one invocation's budget (bindings.glsl
-// checkLoopBudget), and 16 of them per bin of a triangle across a 4K image's 8160 bins pass it.
-FN uint binTileMask(LargeTriangle t, ivec2 origin) {
+// The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre (x): bit
+// j * BIN_TILES + i for tile (i, j) unless classifyBlock calls it outside, 0 for none; and those
+// it owns (y): every pixel centre of the tile covered (BLOCK_INSIDE) and no depth of the triangle
+// past the far plane, so wherever nothing else reaches such a tile the triangle wins each of its
+// pixels without a depth test (resolve_large.comp). Unrolled: lavapipe counts every loop
+// iteration against one invocation's budget (bindings.glsl checkLoopBudget), and 16 of them per
+// bin of a triangle across a 4K image's 8160 bins pass it.
+FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) {
   BlockEdges e = blockEdges(t, origin);
-  uint mask = 0u;
+  uvec2 masks = uvec2(0u);
   UNROLL for (int j = 0; j < int(BIN_TILES); ++j) {
     UNROLL for (int i = 0; i < int(BIN_TILES); ++i) {
       ivec2 step = ivec2(i, j) * int(TILE_SIZE);
@@ -554,12 +557,14 @@ FN uint binTileMask(LargeTriangle t, ivec2 origin) {
       tile.e0 = edgeStep(t.v1, t.v2, e.e0, step.x, step.y);
       tile.e1 = edgeStep(t.v2, t.v0, e.e1, step.x, step.y);
       tile.e2 = edgeStep(t.v0, t.v1, e.e2, step.x, step.y);
-      if (classifyBlock(t, tile, origin + step, int(TILE_SIZE)) != BLOCK_OUTSIDE) {
-        mask |= 1u << uint(j * int(BIN_TILES) + i);
-      }
+      int block = classifyBlock(t, tile, origin + step, int(TILE_SIZE));
+      uint bit = 1u << uint(j * int(BIN_TILES) + i);
+      if (block != BLOCK_OUTSIDE) masks.x |= bit;
+      if (block == BLOCK_INSIDE) masks.y |= bit;
     }
   }
-  return mask;
+  if (!(t.zMax <= farPlane)) masks.y = 0u;
+  return masks;
 }
 
 // The edge values walking down column i of a block: at the current row (starting at row 0), and

@@ -62,13 +62,13 @@ uint reserve(uint count, uint capacity, bool entries) {
 }
 
 // Links entry e (large set-up `slot`, raster half `record`) into bin b's list with the bin's tiles
-// the triangle may cover (binTileMask), and marks the bin touched. False, linking nothing, where
-// the triangle misses the bin.
+// the triangle may cover and those it owns (binTileMasks), and marks the bin touched. False,
+// linking nothing, where the triangle misses the bin.
 bool linkEntry(uint e, uint slot, LargeTriangle record, ivec2 b) {
-  uint tiles = binTileMask(record, b * int(BIN_SIZE));
-  if (tiles == 0u) return false;
+  uvec2 tiles = binTileMasks(record, b * int(BIN_SIZE), frame.farPlane);
+  if (tiles.x == 0u) return false;
   uint bin = uint(b.y) * frame.binsX + uint(b.x);
-  largeEntries[e] = LargeEntry(slot, atomicExchange(binData[frame.binCount + bin], e), tiles, 0u);
+  largeEntries[e] = LargeEntry(slot, atomicExchange(binData[frame.binCount + bin], e), tiles.x, tiles.y);
   touchBin(uvec2(b), 0u);
   return true;
 }
@@ -78,7 +78,7 @@ bool linkEntry(uint e, uint slot, LargeTriangle record, ivec2 b) {
 layout(constant_id = SPEC_BIN_PASS) const bool BIN_PASS = false;
 
 // Stores sub-triangle s's set-up and links it into the list of every bin whose pixels it may
-// cover, with the bin's tiles it may cover (binTileMask); resolve rasterizes it there, in those
+// cover, with the bin's tiles it may cover (binTileMasks); resolve rasterizes it there, in those
 // tiles. With BIN_PASS it only writes its entries' owner, for the bin pass to link. False, linking
 // nothing, when the set-up records or the bin entries are full.
 bool deferToLargePass(TriangleSetup t, EdgeSetup s) {

@@ -256,14 +256,16 @@ struct LargeList {
   uint pad1;
 };
 
-// One large triangle in one bin's list: its set-up slot, the next entry of the bin (LIST_END: none)
-// and the bin's tiles it may cover (bit j * BIN_TILES + i for tile (i, j), raster.h binTileMask):
-// resolve skips the others without reading the set-up.
+// One large triangle in one bin's list: its set-up slot, the next entry of the bin (LIST_END: none),
+// the bin's tiles it may cover (bit j * BIN_TILES + i for tile (i, j), raster.h binTileMasks; resolve
+// skips the others without reading the set-up) and those of them it owns (covers every pixel centre
+// of, never past the far plane). Before the bin pass links an entry, `owned` holds the triangle's
+// first entry (bin_large.comp).
 struct LargeEntry {
   uint slot;
   uint next;
   uint tiles;
-  uint pad;
+  uint owned;
 };
 
 #ifdef __cplusplus

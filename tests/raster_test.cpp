@@ -373,24 +373,33 @@ TEST(Raster, BlockClassificationAndSteppedEdgesAgreeWithCovers) {
   EXPECT_GT(counts[BLOCK_INSIDE], 1000);
 }
 
-// Checks binTileMask for the bin at pixel `bin`: each tile in the mask exactly when classifyBlock
-// does not call it outside, and no tile left out with a covered pixel centre in the 1024x1024
-// image. Counts the tiles kept and left out, and those whose pixels include one on an edge.
-void expectBinTileMask(const EdgeSetup& s, ivec2 bin, int counts[3]) {
+// Checks binTileMasks for the bin at pixel `bin`: each tile in the first mask exactly when
+// classifyBlock does not call it outside, and no tile left out with a covered pixel centre in the
+// 1024x1024 image; each in the second (owned) exactly when classifyBlock calls it inside, every
+// pixel centre of it covered (none where the triangle reaches past the far plane). Counts the
+// tiles kept, left out and owned, and those whose pixels include one on an edge.
+void expectBinTileMask(const EdgeSetup& s, ivec2 bin, int counts[4]) {
   TriangleSetup t{};
+  t.zMin = 1.0f;
+  t.zMax = 2.0f;
   const LargeTriangle large = largeTriangle(t, s);
-  const uint mask = binTileMask(large, bin);
+  const uvec2 masks = binTileMasks(large, bin, 2.0f);
+  ASSERT_EQ(binTileMasks(large, bin, 1.99f), uvec2(masks.x, 0u)) << "owned past the far plane";
   for (uint tile = 0; tile < BIN_TILES * BIN_TILES; ++tile) {
     const ivec2 origin = bin + ivec2(tile % BIN_TILES, tile / BIN_TILES) * int(TILE_SIZE);
-    const bool inMask = (mask >> tile & 1u) != 0u;
-    ASSERT_EQ(inMask, classifyBlock(large, blockEdges(large, origin), origin, int(TILE_SIZE)) != BLOCK_OUTSIDE)
-        << "bin " << bin.x << "," << bin.y << " tile " << tile;
+    const bool inMask = (masks.x >> tile & 1u) != 0u;
+    const bool owned = (masks.y >> tile & 1u) != 0u;
+    const int block = classifyBlock(large, blockEdges(large, origin), origin, int(TILE_SIZE));
+    ASSERT_EQ(inMask, block != BLOCK_OUTSIDE) << "bin " << bin.x << "," << bin.y << " tile " << tile;
+    ASSERT_EQ(owned, block == BLOCK_INSIDE) << "bin " << bin.x << "," << bin.y << " tile " << tile;
     ++counts[inMask ? 0 : 1];
+    counts[3] += owned;
     for (int j = 0; j < int(TILE_SIZE); ++j) {
       for (int i = 0; i < int(TILE_SIZE); ++i) {
         const i64vec2 p = pixelCentre(origin.x + i, origin.y + j);
         const bool inImage = origin.x + i < 1024 && origin.y + j < 1024;
         ASSERT_FALSE(!inMask && inImage && covers(s, p)) << "bin " << bin.x << "," << bin.y << " tile " << tile;
+        ASSERT_FALSE(owned && !covers(s, p)) << "bin " << bin.x << "," << bin.y << " tile " << tile;
         counts[2] += edgeFunction(s.v1, s.v2, p) + s.bias0 == 0 || edgeFunction(s.v2, s.v0, p) + s.bias1 == 0 ||
                      edgeFunction(s.v0, s.v1, p) + s.bias2 == 0;
       }
@@ -407,7 +416,7 @@ TEST(Raster, BinTileMaskKeepsEveryTileWithACoveredPixel) {
   std::mt19937 rng(29);
   std::uniform_int_distribution<int> binAt(0, 1024 / int(BIN_SIZE) - 1);
   std::uniform_int_distribution<int> centre(0, 1023), offset(-60, 60), subpixel(0, 255);
-  int counts[3] = {0, 0, 0};  // tiles kept, tiles left out, pixel centres on an edge
+  int counts[4] = {0, 0, 0, 0};  // tiles kept, tiles left out, pixel centres on an edge, tiles owned
   for (int trial = 0; trial < 3000; ++trial) {
     EdgeSetup s;
     if (trial % 2 == 0) {
@@ -437,6 +446,7 @@ TEST(Raster, BinTileMaskKeepsEveryTileWithACoveredPixel) {
   EXPECT_GT(counts[0], 10000);
   EXPECT_GT(counts[1], 10000);
   EXPECT_GT(counts[2], 1000);
+  EXPECT_GT(counts[3], 1000);
 }
 
 TEST(Raster, LargeShadingKeepsTheColourOfEveryPixelBitForBit) {
