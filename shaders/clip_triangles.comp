@@ -25,7 +25,8 @@ void main() {
     TriangleSetup t;
     if (!setupPlane(h0, h1, h2, cullBack, id, frame, t)) continue;
     // Inside the clip volume (most here: not small): set up as itself, as the reference does. The
-    // clipper runs in a 0/1-trip loop, which lavapipe skips whole when no lane needs it.
+    // clipper runs in a 0/1-trip loop (on lavapipe no cheaper than an if: a loop body runs once,
+    // masked, even when no lane enters it).
     bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane);
     bool drawn = inside && setupUnclipped(h0, h1, h2, frame, t);
     for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);

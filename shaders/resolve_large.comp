@@ -4,12 +4,12 @@
 // workgroup takes several tiles at once, SPEC_RESOLVE_TILES). Per pixel: its key from the key
 // buffer (where small triangles went by atomicMin, only in tiles they touched), then the bin's
 // large triangles that may cover the tile (LargeEntry.tiles, set by the clip pass; the others are
-// skipped in a loop, nextEntryIn, which lavapipe really leaves out, unlike a branch, whose both
-// sides it runs), each tested at the lane's 8 pixels (edge values stepped down the column). Where
-// one offers a smaller key, the key and its Gouraud colour (from the constants the clip pass
-// stored with the set-up, LargeShading) are kept in registers. Then where a large triangle won:
-// the colour stored by resolve.glsl storeColor; where a small one wins, the key stays for
-// resolve_small. A tile that one large triangle owns (covers every pixel centre of, short of the
+// walked past in a loop, nextEntryIn, so only those that reach the tile take a trip of the
+// rasterizing loop; lavapipe would run both sides of a branch), each tested at the lane's 8
+// pixels (edge values stepped down the column). Where one offers a smaller key, the key and its
+// Gouraud colour (from the constants the clip pass stored with the set-up, LargeShading) are kept
+// in registers. Then where a large triangle won: the colour stored by resolve.glsl storeColor;
+// where a small one wins, the key stays for resolve_small. A tile that one large triangle owns (covers every pixel centre of, short of the
 // far plane; LargeEntry.owned) with nothing else reaching it is only shaded (shadeOwnedTile): on
 // floor_and_walls 85% of the tiles, whose depth tests and edge steps it saves (-17% wall clock
 // there, -19% at 4K, fig1_cube -2%; PERFORMANCE.md).

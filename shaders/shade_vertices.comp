@@ -18,8 +18,8 @@ void shadeVertex(uint i) {
   VertexIn v = vertexIn(i);
   ObjectData object = objectData(v.object);
   MaterialData m = materialData(object.material);
-  // Only when the view or an object moved: a loop of 0 or 1 trips, the same for every lane, which
-  // lavapipe really skips (an if would still run the store's loop over the lanes).
+  // Only when the view or an object moved: a loop of 0 or 1 trips, the same for every lane (on
+  // lavapipe no cheaper than an if: a loop body runs once, masked, even when no lane enters it).
   [[dont_unroll]] for (uint k = frame.shadePositions; k != 0u; --k) {
     shadedPositions[i] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
   }
