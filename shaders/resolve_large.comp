@@ -30,6 +30,7 @@
 #include "bindings.glsl"
 #include "resolve.glsl"
 
+
 layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 
 #define FOR_ROWS(DO) DO(0) DO(1) DO(2) DO(3) DO(4) DO(5) DO(6) DO(7)
@@ -149,35 +150,36 @@ uvec2 tileWork(Bin b) {
   return uvec2(seen & ~alone, alone);
 }
 
-// `tiles` without its `count` lowest set bits.
-uint dropLowest(uint tiles, uint count) {
-  for (uint i = 0u; i < count; ++i) tiles &= tiles - 1u;
-  return tiles;
-}
+// The GPU layout's workgroups take several tiles at once (SPEC_RESOLVE_TILES), the CPU layout's one.
+const bool CPU_LAYOUT = gl_WorkGroupSize.y == 1u;
 
-// This workgroup row's first tile of `tiles` (bit gl_LocalInvocationID.y of its set bits), and
-// from one to the next (gl_WorkGroupSize.y set bits on): its rows take the tiles in turn. One row
-// on a CPU device (SPEC_RESOLVE_TILES), where both are the plain lowest-bit steps.
-uint firstTiles(uint tiles) { return gl_WorkGroupSize.y == 1u ? tiles : dropLowest(tiles, gl_LocalInvocationID.y); }
-uint nextTiles(uint tiles) { return gl_WorkGroupSize.y == 1u ? tiles & (tiles - 1u) : dropLowest(tiles, gl_WorkGroupSize.y); }
-
-// The two kinds of tile are separate loops over their own tiles, not one loop with a branch:
-// lavapipe would run both sides of the branch for every tile.
+// On a CPU device the two kinds of tile are separate loops over their own tiles, not one loop
+// with a branch: lavapipe would run both sides of the branch for every tile. A GPU rasterizes
+// every tile: on the H100, walking each bin's list up front (tileWork) and shading owned tiles,
+// with a branch per tile or these two loops, took resolve from 0.94 to 3.0-3.9 ms on
+// floor_and_walls at 4K (the walks are chains of dependent loads; PERFORMANCE.md, session 8).
 void main() {
   loadFrame();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
     Bin b = touchedBin(k);
     if (b.head == LIST_END) continue;  // resolve_small's
-    uvec2 work = tileWork(b);
-    [[dont_unroll]] for (uint tiles = firstTiles(work.x); tiles != 0u; tiles = nextTiles(tiles)) {
-      uint t = uint(findLSB(tiles));
-      uvec2 origin = tileOrigin(b, t);
-      if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
-    }
-    [[dont_unroll]] for (uint tiles = firstTiles(work.y); tiles != 0u; tiles = nextTiles(tiles)) {
-      uint t = uint(findLSB(tiles));
-      uvec2 origin = tileOrigin(b, t);
-      if (origin.x < frame.width && origin.y < frame.height) shadeOwnedTile(ivec2(origin), nextEntryIn(b.head, 1u << t).x);
+    if (CPU_LAYOUT) {
+      uvec2 work = tileWork(b);
+      [[dont_unroll]] for (uint tiles = work.x; tiles != 0u; tiles &= tiles - 1u) {
+        uint t = uint(findLSB(tiles));
+        uvec2 origin = tileOrigin(b, t);
+        if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
+      }
+      [[dont_unroll]] for (uint tiles = work.y; tiles != 0u; tiles &= tiles - 1u) {
+        uint t = uint(findLSB(tiles));
+        uvec2 origin = tileOrigin(b, t);
+        if (origin.x < frame.width && origin.y < frame.height) shadeOwnedTile(ivec2(origin), nextEntryIn(b.head, 1u << t).x);
+      }
+    } else {
+      [[dont_unroll]] for (uint t = gl_LocalInvocationID.y; t < BIN_TILES * BIN_TILES; t += gl_WorkGroupSize.y) {
+        uvec2 origin = tileOrigin(b, t);
+        if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
+      }
     }
   }
   checkLoopBudget();
