@@ -11,16 +11,32 @@ namespace {
 
 constexpr double MIB = 1024.0 * 1024.0;
 
+// Why a CPU device spends a compute frame where it does, by the kind of scene (its per-pass
+// timestamps are not reliable enough to say; docs/PERFORMANCE.md has the split measured by taking
+// passes out, and the measurements behind each cause).
+std::string cpuDeviceCause(const SceneResult& s) {
+  if (s.smallTriangles) {
+    return "; on this CPU device a frame of small triangles goes to the triangle pass (one invocation per "
+           "triangle, its vertex fetches a loop over the SIMD lanes each, a 64-bit atomicMin per covered pixel a "
+           "locked compare-and-swap per lane) and to resolving each pixel's winner from its vertices";
+  }
+  return "; on this CPU device a frame of large triangles goes mostly to resolving them: per pixel and triangle "
+         "the reference's exact depth and colour (correctly rounded divisions, 64-bit edge values and keys), "
+         "where lavapipe's own rasterizer steps interpolants from pixel to pixel, and every pixel's store is a "
+         "loop over the SIMD lanes";
+}
+
 // Where the compute frame's time went: the wall clock around render() (which also uploads the
 // frame's data and reads the image back) and the device time, with the passes' shares on a GPU.
 // lavapipe writes a timestamp after a dispatch and a barrier early at times, so its per-pass
-// shares would mislead; docs/PERFORMANCE.md gives the split measured by taking passes out.
+// shares would mislead (a 4K floor's came out 82% triangle pass, where taking passes out shows
+// resolve); the cause by kind of scene follows instead.
 std::string computeBreakdown(const SceneResult& s) {
   std::string text = formatText("compute frame %.2f ms wall", s.compute.wallMs);
   const PassTimes& p = s.passes;
   if (std::isnan(p.total) || p.total <= 0) return text;
   text += formatText(", %.2f ms on the device", p.total);
-  if (s.cpuDeviceLanes != 0) return text + " (where it goes on lavapipe: docs/PERFORMANCE.md)";
+  if (s.cpuDeviceLanes != 0) return text + cpuDeviceCause(s);
   return text + formatText(": shade %.0f%%, triangles %.0f%%, large triangles and resolve %.0f%%",
                            100 * p.shade / p.total, 100 * p.raster / p.total, 100 * p.resolve / p.total);
 }
