@@ -8,6 +8,8 @@
 #include "shaders/clip_triangles_exact.spv.h"
 #include "shaders/fill_background.spv.h"
 #include "shaders/fill_background_exact.spv.h"
+#include "shaders/pack_colors.spv.h"
+#include "shaders/pack_colors_exact.spv.h"
 #include "shaders/raster_triangles.spv.h"
 #include "shaders/raster_triangles_exact.spv.h"
 #include "shaders/resolve_large.spv.h"
@@ -57,6 +59,9 @@ uint32_t groupCapFor(const VulkanContext& context) {
 }
 
 uint32_t binsAcross(uint32_t pixels) { return groupCount(pixels, BIN_SIZE); }
+
+// The pack pass's work items: the colour buffer's words (pack_colors.comp).
+uint32_t colorWords(const FrameData& frame) { return groupCount(3 * frame.width * frame.height, 4); }
 
 // Throws when one array would exceed the device's largest storage buffer binding.
 void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
@@ -150,6 +155,7 @@ constexpr ShaderCode SHADERS[][2] = {
     {SHADER(resolve_large), SHADER(resolve_large_exact)},
     {SHADER(bin_large), SHADER(bin_large_exact)},
     {SHADER(fill_background), SHADER(fill_background_exact)},
+    {SHADER(pack_colors), SHADER(pack_colors_exact)},
 };
 
 #undef SHADER
@@ -220,15 +226,17 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
        {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
   };
   if (binPass_) requests.push_back({BIN_LARGE, {}});
-  if (output != RESOLVE_OUTPUT_KEY_SLOTS) requests.push_back({FILL, {}});  // the colour buffer's background
+  if (output == RESOLVE_OUTPUT_KEEP_KEYS) requests.push_back({FILL, {}});  // the colour buffer's background
+  if (output == RESOLVE_OUTPUT_KEY_SLOTS && !colorsInKeys_) requests.push_back({PACK, {}});
   return requests;
 }
 
-// Where resolve puts a frame's colours (FrameData.keepKeys and .colorsInKeys, as uploadFrame sets
-// them): frames with keys compile their own resolve pipelines when first asked for.
+// Where resolve puts a frame's colours (FrameData.keepKeys, as uploadFrame sets it): frames with
+// keys compile their own resolve pipelines when first asked for. Without keys the colours go to
+// the key slots, where the host reads them (colorsInKeys_) or the pack pass packs them into the
+// colour buffer.
 uint32_t GpuRenderer::resolveOutput(bool withKeys) const {
-  if (withKeys) return RESOLVE_OUTPUT_KEEP_KEYS;
-  return colorsInKeys_ ? RESOLVE_OUTPUT_KEY_SLOTS : RESOLVE_OUTPUT_COLORS;
+  return withKeys ? RESOLVE_OUTPUT_KEEP_KEYS : RESOLVE_OUTPUT_KEY_SLOTS;
 }
 
 void GpuRenderer::selectPipelines(const FrameInputs& in, bool withKeys) {
@@ -262,9 +270,10 @@ void GpuRenderer::uploadScene(const SceneData& data) {
 
 }
 
-// New keys are cleared by the first frame (keysDirty_); from then on resolve resets the keys a frame
-// wrote (or the host does, reading the colours from the key slots), so no frame pays for clearing
-// or scanning the whole key buffer, except after a frame with keys or one rendered again.
+// New keys are cleared by the first frame (keysDirty_). Where the host reads the colours from the
+// key slots it resets them as it goes, so the next frame need not clear the key buffer; elsewhere
+// (the pack pass, frames with keys, frames rendered again) the next frame clears it with one fill,
+// which on a GPU is cheaper than resetting the slots from the passes.
 void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   if (width == width_ && height == height_) return;
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
@@ -291,7 +300,7 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
 // or a frame with keys), else 4 bytes that only keep its descriptor valid. Resolve writes the
 // colours straight into host-visible memory, where the host reads them in place: no device copy.
 void GpuRenderer::ensureColorBuffer(bool wholeImage) {
-  // RGB bytes, rounded up to whole words for the background pass.
+  // RGB bytes, rounded up to whole words for the background and pack passes.
   const VkDeviceSize bytes = wholeImage ? (3 * VkDeviceSize(width_) * height_ + 3) / 4 * 4 : sizeof(uint32_t);
   if (colors_.buffer != VK_NULL_HANDLE && colors_.size >= bytes) return;
   destroyBuffer(colors_, context_);
@@ -396,7 +405,7 @@ void GpuRenderer::uploadFrame(const FrameInputs& in, bool withKeys) {
   frame.loopProbe = LOOP_PROBE_ITERATIONS;
   frame.binCount = binsAcross(frame.width) * binsAcross(frame.height);
   frame.keepKeys = withKeys ? 1u : 0u;
-  frame.colorsInKeys = resolveOutput(withKeys) == RESOLVE_OUTPUT_KEY_SLOTS ? 1u : 0u;
+  frame.colorsInKeys = colorsInKeys_ && !withKeys ? 1u : 0u;
   frame.shadeColors = colorsStale ? 1u : 0u;
   frame.shadePositions = positionsStale ? 1u : 0u;
   uploadToBuffer(context_, frame_, &frame, sizeof(FrameData));
@@ -426,7 +435,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   };
   writeTimestamp(cmd, timestamps_, 0);
   const uint32_t cap = frame.groupCap;
-  if (frame.colorsInKeys == 0u) {  // untouched bins are not resolved: their pixels keep this fill
+  if (withKeys) {  // untouched bins are not resolved: their pixels keep this fill
     bind(FILL);
     const uint32_t words = uint32_t((3ull * frame.width * frame.height + 3) / 4);
     vkCmdDispatch(cmd, std::min(groupCount(words, FILL_GROUP_SIZE), cap), 1, 1);
@@ -454,6 +463,11 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   for (Pass pass : {RESOLVE_LARGE, RESOLVE_SMALL}) {
     bind(pass);
     vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+    computeBarrier(cmd);
+  }
+  if (frame.colorsInKeys == 0u && !withKeys) {  // the colours from the key slots into the colour buffer
+    bind(PACK);
+    vkCmdDispatch(cmd, std::min(groupCount(colorWords(frame), PACK_GROUP_SIZE), cap), 1, 1);
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 3);
@@ -505,8 +519,8 @@ bool GpuRenderer::renderAttempt(bool withKeys) {
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   recordFrame(cmd, lastFrame_, withKeys);  // as uploaded (bin counts included); clears keysDirty_ keys first
   // What this frame leaves in the key slots for the next to clear: its final keys (withKeys), or
-  // its colours, unless the host resets those as it reads them (readImage).
-  keysDirty_ = withKeys || lastFrame_.colorsInKeys != 0u;
+  // its colours, unless the host resets those as it reads them (readImage; the pack pass does not).
+  keysDirty_ = true;
   submitAndWait(context_, cmd);
   readTimes();
   if (status->flags == 0u) return true;

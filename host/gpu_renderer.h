@@ -71,7 +71,7 @@ class GpuRenderer {
   uint64_t framesTransformed() const { return framesTransformed_; }
 
  private:
-  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PASS_COUNT };
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 

@@ -28,16 +28,14 @@ bool inImage(int x, int y) { return x < int(frame.width) && y < int(frame.height
 
 uint pixelIndex(int x, int y) { return uint(y) * frame.width + uint(x); }
 
-// Pixel i's final colour, won by `key`, where OUTPUT says: into its key slot, or into the colour
-// buffer as three bytes (shared.h BINDING_COLOR) with the key reset for the next frame (or kept final, for diffs; `keyChanged` false when
-// the slot already holds KEY_CLEAR).
-void storeColor(uint i, uint color, uint64_t key, bool keyChanged) {
+// Pixel i's final colour, won by `key`, where OUTPUT says: into its key slot, or, for diffs, into
+// the colour buffer as three bytes (shared.h BINDING_COLOR) with the final key kept.
+void storeColor(uint i, uint color, uint64_t key) {
   if (OUTPUT == RESOLVE_OUTPUT_KEY_SLOTS) {
     keys[i] = colorSlot(color);
     return;
   }
-  if (OUTPUT == RESOLVE_OUTPUT_KEEP_KEYS) keys[i] = key;
-  else if (keyChanged) keys[i] = KEY_CLEAR;
+  keys[i] = key;
   colorBytes[3u * i] = uint8_t(color & 0xFFu);
   colorBytes[3u * i + 1u] = uint8_t((color >> 8) & 0xFFu);
   colorBytes[3u * i + 2u] = uint8_t((color >> 16) & 0xFFu);

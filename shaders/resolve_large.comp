@@ -62,7 +62,7 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 // triangle keeps its key for resolve_small; an uncovered one is left alone (the host gives it the
 // background).
 #define FINISH_ROW(r) \
-  if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, best##r, keysWritten);
+  if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, best##r);
 
 // Row r's colour, packed (RGBA8), ORed into `packedBits`. That second use is what it is for: with
 // one use, LLVM (in llvmpipe) moves the conversion and packing of each lane's colour into the
@@ -113,9 +113,9 @@ void rasterizeTile(ivec2 origin, uint head, uint tile, bool keysWritten) {
   uint packed##r = packColor(interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION)); \
   packedBits |= packed##r;
 
-// Row r of an owned tile, stored where it is in the image (no key changed: none was written).
+// Row r of an owned tile, stored where it is in the image (no key: keys are never kept with owned tiles).
 #define STORE_OWNED_ROW(r) \
-  if (inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, KEY_CLEAR, false);
+  if (inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, KEY_CLEAR);
 
 // This lane's column of the tile at `origin`, which the large triangle in set-up `slot` owns and
 // nothing else reaches (no other large triangle, no small triangle's key): the triangle wins every

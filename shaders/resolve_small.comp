@@ -1,8 +1,8 @@
 // Second resolve pass (resolve.glsl): the tiles small triangles touched, in every bin, a lane per
 // pixel. Per pixel whose key is still set (resolve_large took the pixels large triangles won):
 // the winning key's triangle -> Gouraud colour -> packed RGBA8, stored by resolve.glsl
-// storeColor. Pixels nothing covered are left alone (the background: fill_background.comp's in
-// the colour buffer, the host's in the key slots).
+// storeColor. Pixels nothing covered are left alone (the background: the host's or
+// pack_colors.comp's in the key slots, fill_background.comp's in the colour buffer).
 // Kept apart from resolve_large.comp because on lavapipe the mere presence of that pass's code
 // makes this simple path several times slower. It visits only the flagged tiles (a bit loop, not
 // a test of all 16): on lavapipe each empty iteration of a 64-lane group costs ~0.1 us, and a
@@ -25,7 +25,7 @@ void resolvePixelOf(uvec2 origin) {
   uint i = pixelIndex(x, y);
   uint64_t key = keys[i];
   if (key >= KEY_COLOR_TAG) return;  // uncovered, or resolved by resolve_large
-  storeColor(i, shadePixel(loadGouraud(uint(key & 0xFFFFFFFFul)), x, y, frame, INTERPOLATION), key, true);
+  storeColor(i, shadePixel(loadGouraud(uint(key & 0xFFFFFFFFul)), x, y, frame, INTERPOLATION), key);
 }
 
 void main() {

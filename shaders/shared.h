@@ -30,6 +30,7 @@ PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
 PHONGVK_CONST uint CLIP_GROUP_SIZE = 64;
 PHONGVK_CONST uint BIN_GROUP_SIZE = 64;
 PHONGVK_CONST uint FILL_GROUP_SIZE = 64;
+PHONGVK_CONST uint PACK_GROUP_SIZE = 64;  // pack_colors.comp: four pixels an invocation
 // The image is cut into 32x32 pixel bins. Resolve takes one touched bin per workgroup and walks
 // it as 4x4 tiles of 8x8 pixels (resolve_large.comp, resolve_small.comp): the bin's large
 // triangles are loaded once per tile for all its pixels, and a bin nothing touched is skipped whole.
@@ -82,17 +83,18 @@ PHONGVK_CONST uint SPEC_CONSTANT_ATTENUATION = 2;
 PHONGVK_CONST uint SPEC_INTERPOLATION = 0;
 // resolve: tiles a workgroup takes at once (local_size_y; 8 lanes each): 1 on CPU devices, 8 on GPUs.
 PHONGVK_CONST uint SPEC_RESOLVE_TILES = 1;
-// resolve: where the colours go (RESOLVE_OUTPUT_*, from FrameData.keepKeys and .colorsInKeys). A
-// constant, not a frame field: lavapipe runs every side of a branch, and the three stores of a
-// frame-chosen output each cost a loop over the lanes per pixel.
+// resolve: where the colours go (RESOLVE_OUTPUT_*, from FrameData.keepKeys). A constant, not a
+// frame field: lavapipe runs every side of a branch, and the stores of a frame-chosen output each
+// cost a loop over the lanes per pixel.
 PHONGVK_CONST uint SPEC_RESOLVE_OUTPUT = 2;
 // clip pass: whether the bin pass links the large triangles (raster_loops.glsl BIN_PASS).
 PHONGVK_CONST uint SPEC_BIN_PASS = 9;
 // probe_float.comp: results per probe (native a / b, sqrt, fma; the quotient and root corrected) and group size.
 PHONGVK_CONST uint FLOAT_PROBE_RESULTS = 5;
 PHONGVK_CONST uint FLOAT_PROBE_GROUP_SIZE = 64;
-PHONGVK_CONST uint RESOLVE_OUTPUT_KEY_SLOTS = 0;   // colorsInKeys: the colour into the pixel's key slot
-PHONGVK_CONST uint RESOLVE_OUTPUT_COLORS = 1;      // into the colour buffer, the key reset to KEY_CLEAR
+// The colour into the pixel's key slot, read from there by the host (colorsInKeys) or packed into
+// the colour buffer by pack_colors.comp.
+PHONGVK_CONST uint RESOLVE_OUTPUT_KEY_SLOTS = 0;
 PHONGVK_CONST uint RESOLVE_OUTPUT_KEEP_KEYS = 2;   // keepKeys: into the colour buffer, the final key kept
 
 // Interpolation modes (FrameData.interpolation).

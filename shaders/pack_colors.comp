@@ -1,0 +1,45 @@
+// Colour pass (the colour buffer in host memory, a discrete GPU's): resolve has left every pixel's
+// final colour in its key slot (raster.h colorSlot; KEY_CLEAR where nothing covered it, which gets
+// the background); this pass packs them into the colour buffer's RGB bytes, one whole word per
+// invocation, so a subgroup's stores are consecutive words (the next frame clears the slots).
+// Resolve's own stores were three single bytes per pixel from scattered lanes into host memory
+// over PCIe: on the H100 a screen-filling floor's resolve took 1.06 ms for 1.28M pixels, and
+// storing one byte per pixel instead of three made other scenes 3-5x slower (partial lines there
+// are costly); three words per invocation, each subgroup store every third word, were as slow.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+#include "shared.h"
+#include "raster.h"
+#include "bindings.glsl"
+
+layout(local_size_x = PACK_GROUP_SIZE) in;
+
+layout(std430, binding = BINDING_COLOR) writeonly buffer ColorWords { uint colorWords[]; };
+
+// Pixel i's RGB (low three bytes); the background where nothing covered it or past the last pixel.
+uint colorOf(uint i, uint pixels, uint background) {
+  if (i >= pixels) return background;
+  uint64_t slot = keys[i];
+  return slot == KEY_CLEAR ? background : uint(slot) & 0xFFFFFFu;
+}
+
+void main() {
+  loadFrame();
+  uint background = packColor(frame.background) & 0xFFFFFFu;
+  uint pixels = frame.width * frame.height;
+  uint words = (3u * pixels + 3u) / 4u;
+  for (uint w = gl_GlobalInvocationID.x; w < words; w += gl_NumWorkGroups.x * PACK_GROUP_SIZE) {
+    // Bytes 4w..4w+3: channel k % 3 of pixel k / 3, from at most two pixels.
+    uint first = 4u * w / 3u;
+    uint colors[2] = uint[2](colorOf(first, pixels, background), colorOf(first + 1u, pixels, background));
+    uint word = 0u;
+    for (uint j = 0u; j < 4u; ++j) {
+      uint k = 4u * w + j;
+      word |= ((colors[k / 3u - first] >> (8u * (k % 3u))) & 0xFFu) << (8u * j);
+    }
+    colorWords[w] = word;
+  }
+  checkLoopBudget();
+}
