@@ -9,10 +9,11 @@
 // pixels (edge values stepped down the column). Where one offers a smaller key, the key and its
 // Gouraud colour (from the constants the clip pass stored with the set-up, LargeShading) are kept
 // in registers. Then where a large triangle won: the colour stored by resolve.glsl storeColor;
-// where a small one wins, the key stays for resolve_small. A tile that one large triangle owns (covers every pixel centre of, short of the
-// far plane; LargeEntry.owned) with nothing else reaching it is only shaded (shadeOwnedTile): on
-// floor_and_walls 85% of the tiles, whose depth tests and edge steps it saves (-17% wall clock
-// there, -19% at 4K, fig1_cube -2%; PERFORMANCE.md).
+// where a small one wins, the key stays for resolve_small. On a CPU device, a tile that one large
+// triangle owns (covers every pixel centre of, short of the far plane; LargeEntry.owned) with
+// nothing else reaching it is only shaded (shadeOwnedTile): on floor_and_walls 85% of the tiles,
+// whose depth tests and edge steps it saves (-17% wall clock there, -19% at 4K, fig1_cube -2%;
+// PERFORMANCE.md).
 //
 // Session 6: skipping the entries that miss the tile, and with them shading per entry instead of
 // reading the winner's constants per row (5 gathers a row), fig3 -11%, floor_and_walls -10%,
@@ -153,6 +154,17 @@ uvec2 tileWork(Bin b) {
 // The GPU layout's workgroups take several tiles at once (SPEC_RESOLVE_TILES), the CPU layout's one.
 const bool CPU_LAYOUT = gl_WorkGroupSize.y == 1u;
 
+// Tile t of bin b, rasterized or (owned) only shaded, where it lies in the image.
+void rasterizeBinTile(Bin b, uint t) {
+  uvec2 origin = tileOrigin(b, t);
+  if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
+}
+
+void shadeOwnedBinTile(Bin b, uint t) {
+  uvec2 origin = tileOrigin(b, t);
+  if (origin.x < frame.width && origin.y < frame.height) shadeOwnedTile(ivec2(origin), nextEntryIn(b.head, 1u << t).x);
+}
+
 // On a CPU device the two kinds of tile are separate loops over their own tiles, not one loop
 // with a branch: lavapipe would run both sides of the branch for every tile. A GPU rasterizes
 // every tile: on the H100, walking each bin's list up front (tileWork) and shading owned tiles,
@@ -165,20 +177,11 @@ void main() {
     if (b.head == LIST_END) continue;  // resolve_small's
     if (CPU_LAYOUT) {
       uvec2 work = tileWork(b);
-      [[dont_unroll]] for (uint tiles = work.x; tiles != 0u; tiles &= tiles - 1u) {
-        uint t = uint(findLSB(tiles));
-        uvec2 origin = tileOrigin(b, t);
-        if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
-      }
-      [[dont_unroll]] for (uint tiles = work.y; tiles != 0u; tiles &= tiles - 1u) {
-        uint t = uint(findLSB(tiles));
-        uvec2 origin = tileOrigin(b, t);
-        if (origin.x < frame.width && origin.y < frame.height) shadeOwnedTile(ivec2(origin), nextEntryIn(b.head, 1u << t).x);
-      }
+      [[dont_unroll]] for (uint tiles = work.x; tiles != 0u; tiles &= tiles - 1u) rasterizeBinTile(b, uint(findLSB(tiles)));
+      [[dont_unroll]] for (uint tiles = work.y; tiles != 0u; tiles &= tiles - 1u) shadeOwnedBinTile(b, uint(findLSB(tiles)));
     } else {
       [[dont_unroll]] for (uint t = gl_LocalInvocationID.y; t < BIN_TILES * BIN_TILES; t += gl_WorkGroupSize.y) {
-        uvec2 origin = tileOrigin(b, t);
-        if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
+        rasterizeBinTile(b, t);
       }
     }
   }
