@@ -60,7 +60,7 @@ uint32_t groupCapFor(const VulkanContext& context) {
 
 uint32_t binsAcross(uint32_t pixels) { return groupCount(pixels, BIN_SIZE); }
 
-// The pack pass's work items: the colour buffer's words (pack_colors.comp).
+// The colour buffer's words: the background and pack passes' work items (an invocation each).
 uint32_t colorWords(const FrameData& frame) { return groupCount(3 * frame.width * frame.height, 4); }
 
 // Throws when one array would exceed the device's largest storage buffer binding.
@@ -227,7 +227,7 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
   };
   if (binPass_) requests.push_back({BIN_LARGE, {}});
   if (output == RESOLVE_OUTPUT_KEEP_KEYS) requests.push_back({FILL, {}});  // the colour buffer's background
-  if (output == RESOLVE_OUTPUT_KEY_SLOTS && !colorsInKeys_) requests.push_back({PACK, {}});
+  if (packsColors(output == RESOLVE_OUTPUT_KEEP_KEYS)) requests.push_back({PACK, {}});
   return requests;
 }
 
@@ -238,6 +238,8 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
 uint32_t GpuRenderer::resolveOutput(bool withKeys) const {
   return withKeys ? RESOLVE_OUTPUT_KEEP_KEYS : RESOLVE_OUTPUT_KEY_SLOTS;
 }
+
+bool GpuRenderer::packsColors(bool withKeys) const { return !withKeys && !colorsInKeys_; }
 
 void GpuRenderer::selectPipelines(const FrameInputs& in, bool withKeys) {
   const std::vector<PipelineRequest> requests =
@@ -297,8 +299,9 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
 }
 
 // The colour buffer: the whole image when resolve writes colours there (ColorOutput::ColorBuffer,
-// or a frame with keys), else 4 bytes that only keep its descriptor valid. Resolve writes the
-// colours straight into host-visible memory, where the host reads them in place: no device copy.
+// or a frame with keys), else 4 bytes that only keep its descriptor valid. The pack pass (or, in
+// frames with keys, resolve) writes the colours straight into host-visible memory, where the host
+// reads them in place: no device copy.
 void GpuRenderer::ensureColorBuffer(bool wholeImage) {
   // RGB bytes, rounded up to whole words for the background and pack passes.
   const VkDeviceSize bytes = wholeImage ? (3 * VkDeviceSize(width_) * height_ + 3) / 4 * 4 : sizeof(uint32_t);
@@ -437,8 +440,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
   const uint32_t cap = frame.groupCap;
   if (withKeys) {  // untouched bins are not resolved: their pixels keep this fill
     bind(FILL);
-    const uint32_t words = uint32_t((3ull * frame.width * frame.height + 3) / 4);
-    vkCmdDispatch(cmd, std::min(groupCount(words, FILL_GROUP_SIZE), cap), 1, 1);
+    vkCmdDispatch(cmd, std::min(groupCount(colorWords(frame), FILL_GROUP_SIZE), cap), 1, 1);
   }
   if (frame.shadeColors != 0u || frame.shadePositions != 0u) {  // else last frame's still hold
     bind(SHADE);
@@ -465,7 +467,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd, const FrameData& frame, bool 
     vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
     computeBarrier(cmd);
   }
-  if (frame.colorsInKeys == 0u && !withKeys) {  // the colours from the key slots into the colour buffer
+  if (packsColors(withKeys)) {  // the colours from the key slots into the colour buffer
     bind(PACK);
     vkCmdDispatch(cmd, std::min(groupCount(colorWords(frame), PACK_GROUP_SIZE), cap), 1, 1);
     computeBarrier(cmd);

@@ -17,9 +17,9 @@ namespace phongvk {
 
 // Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
 struct PassTimes {
-  double shade = 0;    // vertex shading, and the colour buffer's background fill when it is used
+  double shade = 0;    // vertex shading, and in frames with keys the colour buffer's background fill
   double raster = 0;   // triangle, clip and bin passes: setup, culling, clipping, small triangles
-  double resolve = 0;  // large triangles (binned), then colours
+  double resolve = 0;  // large triangles (binned), then colours (and a GPU's pack pass)
   double total = 0;
 };
 
@@ -34,8 +34,8 @@ enum class WorkLayout { Auto, Cpu, Gpu };
 
 // Where resolve leaves the colours. InKeySlots: each in its pixel's 64-bit key slot, which the host
 // reads in place and resets (8 bytes per pixel in all; needs MemoryKind::Shared memory, as a CPU
-// or integrated device has). ColorBuffer: as RGB bytes in a host-visible colour buffer, the
-// image's own layout, resolve resetting the keys (11 bytes per pixel). Auto picks InKeySlots where
+// or integrated device has). ColorBuffer: in the key slots too, then packed by the pack pass into a
+// host-visible colour buffer of RGB bytes, the image's own layout (11 bytes per pixel). Auto picks InKeySlots where
 // the device has shared memory. Frames rendered with keys (for diffs) always use the colour buffer.
 // Tests force either.
 enum class ColorOutput { Auto, InKeySlots, ColorBuffer };
@@ -85,6 +85,8 @@ class GpuRenderer {
   std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
                                           uint32_t interpolation, uint32_t output) const;
   uint32_t resolveOutput(bool withKeys) const;
+  // Whether the pack pass moves the frame's colours from the key slots into the colour buffer.
+  bool packsColors(bool withKeys) const;
   void compilePipelines(const std::vector<PipelineRequest>& requests);
   const ComputePipeline& pipeline(const PipelineRequest& request) const;
   void selectPipelines(const FrameInputs& in, bool withKeys);

@@ -1,7 +1,8 @@
 // Background pass: fills the colour buffer (RGB bytes, shared.h BINDING_COLOR) with the frame's
 // background before resolve writes the covered pixels; untouched bins are never resolved and keep
 // it. Three bytes a pixel repeat every 12 bytes, which vkCmdFillBuffer's 4-byte pattern cannot
-// express, so each invocation writes whole words of the 3-word pattern.
+// express, so each invocation writes one whole word of the pattern (raster.h rgbWord, as the pack
+// pass builds its words).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -17,11 +18,9 @@ layout(std430, binding = BINDING_COLOR) writeonly buffer ColorWords { uint color
 void main() {
   loadFrame();
   uint rgb = packColor(frame.background);
-  uint c[3] = uint[3](rgb & 0xFFu, (rgb >> 8) & 0xFFu, (rgb >> 16) & 0xFFu);
   uint words = (3u * frame.width * frame.height + 3u) / 4u;
   for (uint w = gl_GlobalInvocationID.x; w < words; w += gl_NumWorkGroups.x * FILL_GROUP_SIZE) {
-    uint phase = w % 3u;  // word w starts at byte 4w, channel 4w mod 3 = w mod 3
-    colorWords[w] = c[phase] | (c[(phase + 1u) % 3u] << 8) | (c[(phase + 2u) % 3u] << 16) | (c[phase] << 24);
+    colorWords[w] = rgbWord(w, rgb, rgb);
   }
   checkLoopBudget();
 }

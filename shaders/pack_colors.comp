@@ -31,15 +31,8 @@ void main() {
   uint pixels = frame.width * frame.height;
   uint words = (3u * pixels + 3u) / 4u;
   for (uint w = gl_GlobalInvocationID.x; w < words; w += gl_NumWorkGroups.x * PACK_GROUP_SIZE) {
-    // Bytes 4w..4w+3: channel k % 3 of pixel k / 3, from at most two pixels.
     uint first = 4u * w / 3u;
-    uint colors[2] = uint[2](colorOf(first, pixels, background), colorOf(first + 1u, pixels, background));
-    uint word = 0u;
-    for (uint j = 0u; j < 4u; ++j) {
-      uint k = 4u * w + j;
-      word |= ((colors[k / 3u - first] >> (8u * (k % 3u))) & 0xFFu) << (8u * j);
-    }
-    colorWords[w] = word;
+    colorWords[w] = rgbWord(w, colorOf(first, pixels, background), colorOf(first + 1u, pixels, background));
   }
   checkLoopBudget();
 }

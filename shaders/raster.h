@@ -711,6 +711,19 @@ FN uint packColor(vec3 c) {
   return uint(q.x) | (uint(q.y) << 8) | (uint(q.z) << 16) | (255u << 24);
 }
 
+// Word w (bytes 4w..4w+3) of an image's RGB bytes, pixel k at bytes 3k..3k+2, from the packed
+// colours (r in the low byte) of pixel 4w / 3, the first it reaches into, and the pixel after it:
+// byte 4w + j is channel (4w + j) % 3 of pixel (4w + j) / 3.
+FN uint rgbWord(uint w, uint first, uint next) {
+  uint word = 0u;
+  for (uint j = 0u; j < 4u; ++j) {
+    uint k = 4u * w + j;
+    uint color = k / 3u == 4u * w / 3u ? first : next;
+    word |= ((color >> (8u * (k % 3u))) & 0xFFu) << (8u * j);
+  }
+  return word;
+}
+
 // The final RGBA8 of pixel (x, y) won by triangle g; `mode` is frame.interpolation (a
 // specialization constant in the shader).
 FN uint shadePixel(GouraudTriangle g, int x, int y, FrameData frame, uint mode) {

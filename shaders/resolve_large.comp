@@ -65,13 +65,20 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 #define FINISH_ROW(r) \
   if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, best##r);
 
-// Row r's colour, packed (RGBA8), ORed into `packedBits`. That second use is what it is for: with
-// one use, LLVM (in llvmpipe) moves the conversion and packing of each lane's colour into the
-// per-lane loop that llvmpipe makes of the store, scalar code once per pixel instead of vector
-// code once per row (fig1_cube resolve -6%).
+// Row r's colour, packed (RGBA8), ORed into `packedBits` for keepVectors. That second use is what
+// it is for: with one use, LLVM (in llvmpipe) moves the conversion and packing of each lane's
+// colour into the per-lane loop that llvmpipe makes of the store, scalar code once per pixel
+// instead of vector code once per row (fig1_cube resolve -6%).
 #define PACK_ROW(r)                     \
   uint packed##r = packColor(color##r); \
   packedBits |= packed##r;
+
+// The second use of the packed colours (PACK_ROW): never true (every packed colour has alpha 255,
+// frame.loopProbe is small), and a no-op if it were; the compiler cannot know either, so the
+// packed values stay vectors.
+void keepVectors(uint packedBits) {
+  if (packedBits == frame.loopProbe) atomicOr(status.flags, 0u);
+}
 
 // From entry e of a bin's list on, the first whose tiles include `tile` (a bit of LargeEntry.tiles),
 // as (set-up slot, next entry); (LIST_END, LIST_END) past the last. A loop, so lavapipe really
@@ -102,17 +109,14 @@ void rasterizeTile(ivec2 origin, uint head, uint tile, bool keysWritten) {
   }
   uint packedBits = 0u;
   FOR_ROWS(PACK_ROW)
-  // Never true (every packed colour has alpha 255, frame.loopProbe is small), and a no-op if it
-  // were; the compiler cannot know either, so the packed values stay vectors.
-  if (packedBits == frame.loopProbe) atomicOr(status.flags, 0u);
+  keepVectors(packedBits);
   FOR_ROWS(FINISH_ROW)
 }
 
-// Row r of a tile that the large triangle g owns: its colour, packed (and ORed into `packedBits`,
-// as PACK_ROW).
-#define SHADE_OWNED_ROW(r)                                                                           \
-  uint packed##r = packColor(interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION)); \
-  packedBits |= packed##r;
+// Row r of a tile that the large triangle g owns: its colour, then packed (PACK_ROW).
+#define SHADE_OWNED_ROW(r)                                                                      \
+  vec3 color##r = interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION); \
+  PACK_ROW(r)
 
 // Row r of an owned tile, stored where it is in the image (no key: keys are never kept with owned tiles).
 #define STORE_OWNED_ROW(r) \
@@ -127,7 +131,7 @@ void shadeOwnedTile(ivec2 origin, uint slot) {
   GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), largeSetup(slot).plane);
   uint packedBits = 0u;
   FOR_ROWS(SHADE_OWNED_ROW)
-  if (packedBits == frame.loopProbe) atomicOr(status.flags, 0u);  // as in rasterizeTile
+  keepVectors(packedBits);
   FOR_ROWS(STORE_OWNED_ROW)
 }
 

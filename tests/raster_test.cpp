@@ -7,6 +7,7 @@
 
 #include <bit>
 #include <random>
+#include <vector>
 
 namespace phongvk {
 namespace {
@@ -404,6 +405,22 @@ void expectBinTileMask(const EdgeSetup& s, ivec2 bin, int counts[4]) {
                      edgeFunction(s.v0, s.v1, p) + s.bias2 == 0;
       }
     }
+  }
+}
+
+// rgbWord, which the pack and background passes write the colour buffer with: word w holds bytes
+// 4w..4w+3 of the image's RGB bytes (pixel k at 3k, r first), whatever w's phase in the 12-byte
+// cycle; the alpha byte is dropped.
+TEST(Raster, RgbWordHoldsTheImagesBytes) {
+  std::vector<uint32_t> packed;
+  for (uint32_t k = 0; k < 13; ++k) packed.push_back(0xA0000000u | (k * 0x030201u + 0x102030u));
+  std::vector<uint8_t> bytes;
+  for (uint32_t p : packed) bytes.insert(bytes.end(), {uint8_t(p), uint8_t(p >> 8), uint8_t(p >> 16)});
+  for (uint32_t w = 0; w < 9; ++w) {
+    const uint32_t first = 4 * w / 3;
+    uint32_t expected = 0;
+    for (uint32_t j = 0; j < 4; ++j) expected |= uint32_t(bytes[4 * w + j]) << (8 * j);
+    EXPECT_EQ(rgbWord(w, packed[first], packed[first + 1]), expected) << "word " << w;
   }
 }
 
