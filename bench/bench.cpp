@@ -1,6 +1,6 @@
 #include "bench.h"
 
-#include "host/cli_support.h"
+#include "host/context.h"
 #include "plot.h"
 #include "report.h"
 
@@ -47,13 +47,12 @@ std::vector<SetupResult> runSetup(const BenchOptions& options) {
 
 }  // namespace
 
-int runBench(const BenchOptions& options) {
-  return guarded([&] {
-    checkWritable(options.out);
-    checkWritable(options.plot);
-    ViewOptions view;
-    view.device = options.device;
-    GpuSession gpu(view);  // the context; each backend makes its own renderer per scene
+void runBench(const BenchOptions& options) {
+  checkWritable(options.out);
+  checkWritable(options.plot);
+  // The context; each backend makes its own renderer per scene.
+  ScopedContext gpu({options.device, false});
+  {
     Report report;
     report.command = options.quick ? "phongvk_bench --quick" : "bash scripts/bench.sh";
     report.quick = options.quick;
@@ -65,14 +64,13 @@ int runBench(const BenchOptions& options) {
     report.scenes = runSuite(gpu.context, options);
     report.setups = runSetup(options);
     report.sweep = runErrorSweep(gpu.context, options.quick, options.repeat);
-    report.plotNote = plotErrorSweep(report.sweep, options.plot, gpu.context.report.name);
+    report.plotNote = plotErrorSweep(report.sweep, options.plot, gpu.context.info.name);
     if (report.plotNote.empty()) {
       report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
     }
     writeText(options.out, formatReport(report));
     std::printf("wrote %s%s\n", options.out.c_str(), report.plotNote.empty() ? (" and " + options.plot).c_str() : "");
-    return int(EXIT_OK);
-  });
+  }
 }
 
 }  // namespace phongvk::bench

@@ -16,7 +16,8 @@ struct BenchOptions {
   int device = -1;                           // Vulkan device index, -1 = best
 };
 
-// Runs everything and writes the report and the plot. Returns the CLI's exit code (host/app.h).
-int runBench(const BenchOptions& options);
+// Runs everything and writes the report and the plot. Throws on failure (a bad output path, no
+// usable device).
+void runBench(const BenchOptions& options);
 
 }  // namespace phongvk::bench

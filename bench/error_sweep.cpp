@@ -2,8 +2,8 @@
 
 #include "text.h"
 
-#include "reference/camera.h"
-#include "reference/compare.h"
+#include "scene/camera.h"
+#include "phongvk/compare.h"
 #include "reference/raycast.h"
 
 #include <cmath>
@@ -30,8 +30,8 @@ std::vector<Tessellation> sweepSettings(bool quick) {
 // A unit sphere seen from slightly above, lit from the upper left so the image holds a highlight,
 // a terminator and the silhouette: the three places coarse tessellation shows. No attenuation and
 // a specular exponent of 30 make the highlight small, where per-vertex lighting struggles most.
-Scene sweepScene(const Tessellation& t, int width, int height) {
-  Scene scene;
+SceneSpec sweepScene(const Tessellation& t, int width, int height) {
+  SceneSpec scene;
   scene.path = "error sweep sphere";
   scene.camera.position = {0, -4, 1.2};
   scene.camera.direction = {0, 4, -1.2};
@@ -57,7 +57,7 @@ void describe(SweepPoint& p, const Tessellation& t) {
   p.label = formatText(uv ? "s%d" : "k%d", t.level);
 }
 
-SweepPoint measurePoint(const VulkanContext& context, const Scene& scene, const View& view, const Image& truth,
+SweepPoint measurePoint(const VulkanContext& context, const SceneSpec& scene, const View& view, const Image& truth,
                         int repeat) {
   SweepPoint p;
   const SceneData data = buildSceneData(scene);
@@ -108,7 +108,7 @@ SweepResult runErrorSweep(const VulkanContext& context, bool quick, int repeat) 
   result.height = quick ? 120 : 480;
   const std::vector<Tessellation> settings = sweepSettings(quick);
   // Every setting shares the camera, light and sphere, hence one ground truth.
-  const Scene first = sweepScene(settings.front(), result.width, result.height);
+  const SceneSpec first = sweepScene(settings.front(), result.width, result.height);
   const View view = makeView(first.camera);
   const Image truth = raycastSphere(first, view);
   for (const Tessellation& t : settings) {

@@ -53,7 +53,7 @@ Machine describeMachine(const VulkanContext& context) {
   m.cpu = procField("/proc/cpuinfo", "model name");
   m.cores = std::thread::hardware_concurrency();
   m.memory = memoryTotal();
-  const DeviceReport& d = context.report;
+  const DeviceInfo& d = context.info;
   m.device = d.name + " (" + d.type + ", Vulkan " + d.apiVersion + ")";
   m.driver = driver(context);
   m.date = utcNow();

@@ -1,9 +1,11 @@
-// phongvk_bench — the benchmark of issue 6. main parses arguments and calls bench/bench.h.
+// phongvk_bench — the benchmark (docs/BENCHMARKS.md). main parses arguments and calls bench/bench.h.
 // The documented way to run it is scripts/bench.sh, which builds in Release first.
 #include "bench.h"
-#include "host/app.h"
 
 #include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
 
 int main(int argc, char** argv) {
   CLI::App app{"phongvk_bench: reference vs Vulkan compute vs graphics pipeline, and run time against error"};
@@ -22,8 +24,14 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
-    return code == 0 ? 0 : phongvk::EXIT_BAD_INPUT;
+    return code == 0 ? 0 : 2;
   }
   if (options.quick && repeat->count() == 0) options.repeat = 1;
-  return phongvk::bench::runBench(options);
+  try {
+    phongvk::bench::runBench(options);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
 }

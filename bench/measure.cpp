@@ -1,7 +1,7 @@
 #include "measure.h"
 
-#include "host/raster_renderer.h"
-#include "host/timing.h"
+#include "host/graphics_renderer.h"
+#include "api/timing.h"
 #include "reference/render_reference.h"
 
 #include <sys/resource.h>
@@ -96,7 +96,7 @@ ComputeRun runCompute(const VulkanContext& context, const SceneData& data, const
 
 BackendRun runRaster(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat) {
   return orFailure<BackendRun>([&] {
-    RasterRenderer renderer(context, data);
+    GraphicsRenderer renderer(context, data);
     return timeRenders(frames, repeat, [&](const FrameInputs& in) { return renderer.render(in); },
                        [&] { return renderer.lastDeviceMs(); });
   });

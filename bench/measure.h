@@ -1,12 +1,12 @@
 // measure.h — timing one frame of a scene on each backend: the CPU reference, the Vulkan compute
-// port (GpuRenderer) and the graphics-pipeline baseline (RasterRenderer); plus device memory and
+// port (GpuRenderer) and the graphics-pipeline baseline (GraphicsRenderer); plus device memory and
 // host memory. Every time is the median of `repeat` frames after one warm-up (host/timing.h).
 #pragma once
 
 #include "host/context.h"
 #include "host/gpu_renderer.h"
-#include "reference/image.h"
-#include "reference/scene_data.h"
+#include "phongvk/image.h"
+#include "scene/scene_data.h"
 
 #include <cstdint>
 #include <limits>

@@ -154,7 +154,7 @@ std::string suite(const Report& r) {
   std::string s = "## Suite\n\n";
   s += "The paper's scenes (`scenes/paper/*.json`, frame 0), icosphere grids (n x n spheres, ~1 to 2 pixels per "
        "triangle), large-triangle scenes and 4K (3840x2160) renders. The reference is single-threaded C++; compute "
-       "is the Vulkan compute port (`GpuRenderer`); the graphics pipeline is the baseline (`RasterRenderer`, "
+       "is the Vulkan compute port (`GpuRenderer`); the graphics pipeline is the baseline (`GraphicsRenderer`, "
        "`--backend raster`). A scene past a device limit shows \"does not fit\" (the reason is listed below).\n\n";
   return s + speedTable(r) + memoryTable(r) + misses(r);
 }

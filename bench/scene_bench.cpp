@@ -3,9 +3,9 @@
 #include "machine.h"
 #include "text.h"
 
-#include "host/timing.h"
-#include "reference/camera.h"
-#include "reference/compare.h"
+#include "api/timing.h"
+#include "scene/camera.h"
+#include "phongvk/compare.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,7 +81,7 @@ SceneResult measureScene(const VulkanContext& context, const SuiteScene& scene, 
   r.smallTriangles = scene.smallTriangles;
   r.cpuDeviceLanes = cpuDeviceLanes(context);
   try {
-    const Scene loaded = scene.load();
+    const SceneSpec loaded = scene.load();
     const View view = makeView(loaded.camera);
     const SceneData data = buildSceneData(loaded);
     r.width = view.width;
@@ -100,7 +100,7 @@ SceneResult measureScene(const VulkanContext& context, const SuiteScene& scene, 
 SetupResult measureSetup(const SuiteScene& scene, int repeat) {
   SetupResult r;
   r.name = scene.name;
-  const Scene loaded = scene.load();
+  const SceneSpec loaded = scene.load();
   const FrameTimes times = timeFrames(repeat, [&] {
     const SceneData data = buildSceneData(loaded);
     r.triangles = data.triangles.size();

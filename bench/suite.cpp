@@ -1,6 +1,6 @@
 #include "suite.h"
 
-#include "reference/camera.h"
+#include "scene/camera.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -29,26 +29,26 @@ std::string gridName(const GridSize& g) {
          std::to_string(g.subdivide) + ")";
 }
 
-std::function<Scene()> fromFile(const std::string& path) {
-  return [path] { return loadScene(path); };
+std::function<SceneSpec()> fromFile(const std::string& path) {
+  return [path] { return loadSceneSpec(path); };
 }
 
-std::function<Scene()> atSize(std::function<Scene()> load, int width, int height) {
+std::function<SceneSpec()> atSize(std::function<SceneSpec()> load, int width, int height) {
   return [load, width, height] {
-    Scene scene = load();
+    SceneSpec scene = load();
     scene.camera = withImageSize(scene.camera, width, height);
     return scene;
   };
 }
 
-std::function<Scene()> grid(const GridSize& g) {
+std::function<SceneSpec()> grid(const GridSize& g) {
   return [g] { return icosphereGrid(g.n, g.subdivide); };
 }
 
 // A box far wider than the view, seen from 1 m above looking steeply down: two triangles cover
 // every pixel, the opposite extreme of the grids.
-Scene screenFillingFloor() {
-  Scene scene;
+SceneSpec screenFillingFloor() {
+  SceneSpec scene;
   scene.path = "screen-filling floor";
   scene.camera.position = {0, 0, 1};
   scene.camera.direction = {0, 0.3, -1};  // the top edge of the 60 degree view still looks down
@@ -108,8 +108,8 @@ std::vector<SuiteScene> quickSuite(const std::string& sourceDir) {
 
 }  // namespace
 
-Scene icosphereGrid(int n, int subdivide) {
-  Scene scene;
+SceneSpec icosphereGrid(int n, int subdivide) {
+  SceneSpec scene;
   scene.path = "icosphere grid";
   const double middle = (n - 1) / 2.0;
   // The grid spans about n m; at 0.9 n + 1 m the 60 degree view holds it with a margin.

@@ -2,7 +2,7 @@
 // the largest single storage buffer binding, large-triangle scenes, and 4K renders.
 #pragma once
 
-#include "reference/scene.h"
+#include "scene/scene.h"
 
 #include <cstdint>
 #include <functional>
@@ -14,7 +14,7 @@ namespace phongvk::bench {
 struct SuiteScene {
   std::string name;                 // as the tables show it, e.g. "grid 1M (7x7, subdivide 5)"
   std::string group;                // "paper", "grid", "large triangles", "4K"
-  std::function<Scene()> load;      // lazily: a scene file may be broken (its row says so)
+  std::function<SceneSpec()> load;      // lazily: a scene file may be broken (its row says so)
   bool smallTriangles = false;      // an icosphere grid: counts for the 1M+ small-triangle target
 };
 
@@ -28,6 +28,6 @@ std::vector<SuiteScene> makeSetupScenes(bool quick);
 
 // n x n icospheres subdivided `subdivide` times (20 * 4^subdivide triangles each), on a 1 m grid
 // facing the camera so every sphere is in view and its triangles are a pixel or two.
-Scene icosphereGrid(int n, int subdivide);
+SceneSpec icosphereGrid(int n, int subdivide);
 
 }  // namespace phongvk::bench

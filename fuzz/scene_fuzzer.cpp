@@ -4,9 +4,9 @@
 // exception. What loads must keep the loader's promises: the camera makes a view, and the meshes
 // of a scene small enough to build quickly have finite positions, unit normals and indices in range.
 // Mesh files resolve against scenes/, so the seed scenes' meshes/*.obj are found.
-#include "reference/camera.h"
-#include "reference/scene.h"
-#include "reference/scene_data.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
+#include "scene/scene_data.h"
 
 #include <cmath>
 #include <cstdint>
@@ -20,7 +20,7 @@ using namespace phongvk;
 
 // Objects whose meshes build in well under a millisecond: a fuzzer spending seconds subdividing
 // finds nothing else.
-bool cheapToBuild(const Scene& scene) {
+bool cheapToBuild(const SceneSpec& scene) {
   for (const Object& o : scene.objects) {
     if (o.segments > 64 || o.rings > 16 || o.subdivide > 2 || o.points.size() > 64) return false;
   }
@@ -51,9 +51,9 @@ void checkMeshes(const SceneData& data) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* bytes, size_t size) {
   const std::string text(reinterpret_cast<const char*>(bytes), size);
-  Scene scene;
+  SceneSpec scene;
   try {
-    scene = parseScene(text, "fuzz.json", PHONGVK_SCENES_DIR);
+    scene = parseSceneSpec(text, "fuzz.json", PHONGVK_SCENES_DIR);
   } catch (const SceneError&) {
     return 0;  // rejected with a message: the expected outcome for most inputs
   }

@@ -1,8 +1,6 @@
 // context.cpp — instance, device choice (with the reasons each device is rejected), device, queue.
 #include "host/context.h"
 
-#include "host/float_probe.h"
-
 #include "host/vk_check.h"
 
 #include <cstdio>
@@ -252,11 +250,11 @@ std::optional<uint32_t> findComputeFamily(VkPhysicalDevice device) {
   return found;
 }
 
-DeviceReport inspectDevice(VkPhysicalDevice device, uint32_t index) {
+DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index) {
   VkPhysicalDeviceProperties properties;
   vkGetPhysicalDeviceProperties(device, &properties);
 
-  DeviceReport report;
+  DeviceInfo report;
   report.index = index;
   report.name = properties.deviceName;
   report.type = deviceTypeName(properties.deviceType);
@@ -278,8 +276,8 @@ DeviceReport inspectDevice(VkPhysicalDevice device, uint32_t index) {
   return report;
 }
 
-std::vector<DeviceReport> inspectDevices(const std::vector<VkPhysicalDevice>& devices) {
-  std::vector<DeviceReport> reports;
+std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices) {
+  std::vector<DeviceInfo> reports;
   for (uint32_t i = 0; i < devices.size(); ++i) reports.push_back(inspectDevice(devices[i], i));
   return reports;
 }
@@ -291,9 +289,9 @@ std::string joined(const std::vector<std::string>& items) {
 }
 
 // "[0] llvmpipe (missing shaderBufferInt64Atomics); [1] ..."
-std::string rejections(const std::vector<DeviceReport>& reports) {
+std::string rejections(const std::vector<DeviceInfo>& reports) {
   std::string text;
-  for (const DeviceReport& report : reports)
+  for (const DeviceInfo& report : reports)
     text += (text.empty() ? "[" : "; [") + std::to_string(report.index) + "] " + report.name + " (missing " +
             joined(report.missing) + ")";
   return text;
@@ -346,8 +344,8 @@ void createMessenger(VulkanContext& context) {
 }
 
 // Everything about the chosen device that the rest of the port reads from the context.
-void describeDevice(VulkanContext& context, const DeviceReport& report) {
-  context.report = report;
+void describeDevice(VulkanContext& context, const DeviceInfo& report) {
+  context.info = report;
   vkGetPhysicalDeviceProperties(context.physicalDevice, &context.properties);
   vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &context.memoryProperties);
   context.queueFamily = *findComputeFamily(context.physicalDevice);
@@ -372,10 +370,10 @@ void keepVulkanModulesLoaded() {
 
 }  // namespace
 
-std::vector<DeviceReport> listDevices() {
+std::vector<DeviceInfo> listDevices() {
   initializeLoader();
   VkInstance instance = createInstance(nullptr);
-  std::vector<DeviceReport> reports;
+  std::vector<DeviceInfo> reports;
   std::exception_ptr failure;
   try {
     reports = inspectDevices(physicalDevices(instance));
@@ -388,14 +386,14 @@ std::vector<DeviceReport> listDevices() {
   return reports;
 }
 
-uint32_t chooseDevice(const std::vector<DeviceReport>& reports, int requested) {
+uint32_t chooseDevice(const std::vector<DeviceInfo>& reports, int requested) {
   if (reports.empty())
     throw NoDeviceError("no Vulkan device found: the Vulkan driver lists none; install mesa-vulkan-drivers");
   if (requested >= 0) {
     if (static_cast<size_t>(requested) >= reports.size())
       throw NoDeviceError("Vulkan device index " + std::to_string(requested) + " is out of range; the devices are:\n" +
                           formatDeviceList(reports));
-    const DeviceReport& report = reports[requested];
+    const DeviceInfo& report = reports[requested];
     if (!report.suitable)
       throw NoDeviceError("Vulkan device " + std::to_string(requested) + " (" + report.name +
                           ") is not usable: missing " + joined(report.missing));
@@ -403,7 +401,7 @@ uint32_t chooseDevice(const std::vector<DeviceReport>& reports, int requested) {
   }
   std::optional<uint32_t> best;
   int bestRank = -1;
-  for (const DeviceReport& report : reports) {
+  for (const DeviceInfo& report : reports) {
     int rank = deviceTypeRank(report.type);
     if (report.suitable && rank > bestRank) {
       best = report.index;
@@ -423,13 +421,12 @@ VulkanContext createContext(const ContextOptions& options) {
     context.instance = createInstance(context.validation.get());
     if (context.validation) createMessenger(context);
     std::vector<VkPhysicalDevice> devices = physicalDevices(context.instance);
-    std::vector<DeviceReport> reports = inspectDevices(devices);
+    std::vector<DeviceInfo> reports = inspectDevices(devices);
     uint32_t chosen = chooseDevice(reports, options.deviceIndex);
     context.physicalDevice = devices[chosen];
     describeDevice(context, reports[chosen]);
     createDevice(context);
     createCommandPool(context);
-    context.floats = probeFloatOps(context);
   } catch (...) {
     destroyContext(context);  // also reloads the tables of a context that was live before
     throw;
@@ -462,9 +459,9 @@ void destroyContext(VulkanContext& context) {
   context.validation = std::move(validation);
 }
 
-std::string formatDeviceList(const std::vector<DeviceReport>& devices) {
+std::string formatDeviceList(const std::vector<DeviceInfo>& devices) {
   std::string text;
-  for (const DeviceReport& device : devices) {
+  for (const DeviceInfo& device : devices) {
     // Appended piece by piece: GCC 12 warns (-Wrestrict, a known false positive) on the chain
     // "[" + std::to_string(...) + ...
     text.append("[").append(std::to_string(device.index)).append("] ").append(device.name);
@@ -477,7 +474,7 @@ std::string formatDeviceList(const std::vector<DeviceReport>& devices) {
 void checkDeviceLimit(const VulkanContext& context, const std::string& what, uint64_t need, const std::string& unit,
                       const char* limitName, uint64_t limit) {
   if (need <= limit) return;
-  throw std::runtime_error("scene too large for " + context.report.name + ": " + what + " need " +
+  throw std::runtime_error("scene too large for " + context.info.name + ": " + what + " need " +
                            std::to_string(need) + (unit.empty() ? "" : " " + unit) + ", more than " + limitName +
                            " (" + std::to_string(limit) + ")");
 }

@@ -13,6 +13,8 @@
 #pragma once
 
 #include "host/vk_check.h"  // every user of a context checks Vulkan calls
+#include "phongvk/devices.h"
+#include "phongvk/errors.h"
 
 #include <volk.h>
 
@@ -24,23 +26,6 @@
 #include <vector>
 
 namespace phongvk {
-
-// No usable Vulkan driver or device; what() lists every device and why it was rejected.
-// A distinct type so the CLI can exit with its own code (3).
-class NoDeviceError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// One physical device as phongvk sees it.
-struct DeviceReport {
-  uint32_t index = 0;                // position in vkEnumeratePhysicalDevices order
-  std::string name;                  // "llvmpipe (LLVM 15.0.6, 256 bits)"
-  std::string type;                  // "discrete GPU", "integrated GPU", "virtual GPU", "CPU", "other"
-  std::string apiVersion;            // "1.3.230"
-  bool suitable = false;
-  std::vector<std::string> missing;  // "Vulkan 1.2", "shaderInt64", "shaderBufferInt64Atomics", ..., "a compute queue"
-};
 
 struct ContextOptions {
   int deviceIndex = -1;   // -1: the best suitable device (discrete > integrated > virtual > CPU)
@@ -67,22 +52,6 @@ struct MemoryUsage {
   std::atomic<VkDeviceSize> peak{0};
 };
 
-// What the device's float division and square root do (host/float_probe.h probes them when the
-// context is created): off = how many probes differed from the host's IEEE result.
-struct FloatReport {
-  uint32_t probes = 0;
-  uint32_t divideOff = 0;       // the device's a / b
-  uint32_t sqrtOff = 0;         // the device's sqrt(x)
-  uint32_t fmaOff = 0;          // fma(a, b, c): off when it is not fused
-  uint32_t exactDivideOff = 0;  // exact_float.h correctedQuotient of the device quotient
-  uint32_t exactSqrtOff = 0;    // exact_float.h correctedRoot of the device root
-  bool nativeExact() const { return divideOff == 0 && sqrtOff == 0; }
-  bool correctionExact() const { return fmaOff == 0 && exactDivideOff == 0 && exactSqrtOff == 0; }
-  // Whether the renderer takes its passes' `_exact` builds, which correct the device's operations:
-  // only where they are off and the corrected ones are exact.
-  bool useExact() const { return !nativeExact() && correctionExact(); }
-};
-
 struct VulkanContext {
   VkInstance instance = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;  // only when validating
@@ -98,17 +67,11 @@ struct VulkanContext {
   uint32_t timestampValidBits = 0;  // of the queue family; timestamps wrap modulo 2^bits
   std::shared_ptr<ValidationLog> validation;  // null unless validating
   std::shared_ptr<MemoryUsage> memory = std::make_shared<MemoryUsage>();
-  DeviceReport report;              // the chosen device
-  FloatReport floats;               // its float division and square root
+  DeviceInfo info;                  // the chosen device
 };
 
-// Every physical device with the reasons it is or is not usable (through a temporary instance).
-// Throws NoDeviceError when there is no Vulkan loader or driver at all.
-std::vector<DeviceReport> listDevices();
-
 // Creates the instance, picks a device (options.deviceIndex or the best suitable one), creates the
-// device with the features phongvk needs, a compute queue and a command pool, and probes its float
-// division and square root (`floats`).
+// device with the features phongvk needs, a compute queue, a command pool and a fence.
 // Throws NoDeviceError when no (or not the requested) device is usable, std::runtime_error when
 // validation was asked for but the layer is not installed, VulkanError on any other failure.
 VulkanContext createContext(const ContextOptions& options);
@@ -116,21 +79,27 @@ VulkanContext createContext(const ContextOptions& options);
 // The device createContext takes: `requested` if it is in range and suitable, else (requested = -1)
 // the best-ranked suitable one, the first on ties. Throws NoDeviceError saying why each device was
 // rejected. Public so its messages can be tested without the hardware that would produce them.
-uint32_t chooseDevice(const std::vector<DeviceReport>& reports, int requested);
+uint32_t chooseDevice(const std::vector<DeviceInfo>& reports, int requested);
 
 // Destroys everything createContext made; safe on a default or already destroyed context.
 // `validation` survives, so a caller holding it sees messages raised while tearing down
 // (e.g. objects the caller forgot to destroy).
 void destroyContext(VulkanContext& context);
 
+// A context destroyed when it goes out of scope.
+class ScopedContext {
+ public:
+  explicit ScopedContext(const ContextOptions& options) : context(createContext(options)) {}
+  ~ScopedContext() { destroyContext(context); }
+  ScopedContext(const ScopedContext&) = delete;
+  ScopedContext& operator=(const ScopedContext&) = delete;
+  VulkanContext context;
+};
+
 // Throws std::runtime_error("scene too large for DEVICE: WHAT need NEED UNIT, more than
 // LIMIT_NAME (LIMIT)") when need > limit, the renderers' one message for an exceeded device limit
 // (`unit` may be empty).
 void checkDeviceLimit(const VulkanContext& context, const std::string& what, uint64_t need, const std::string& unit,
                       const char* limitName, uint64_t limit);
-
-// What `phongvk devices` prints, one line per device:
-// "[0] llvmpipe (LLVM 15.0.6, 256 bits) — CPU, Vulkan 1.3.230 — usable"
-std::string formatDeviceList(const std::vector<DeviceReport>& devices);
 
 }  // namespace phongvk

@@ -1,11 +1,11 @@
 // float_probe.cpp — probe_float.comp's inputs, its run and the comparison with the host.
 #include "host/float_probe.h"
 
-#include "host/commands.h"
+#include "host/submit.h"
 #include "host/pipelines.h"
 #include "host/resources.h"
 #include "shaders/probe_float.spv.h"
-#include "shaders/shared.h"
+#include "shaders/gpu_layout.h"
 
 #include <bit>
 #include <cmath>

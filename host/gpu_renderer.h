@@ -3,14 +3,16 @@
 // only the camera-dependent data (FrameInputs).
 #pragma once
 
-#include "host/commands.h"
+#include "host/submit.h"
 #include "host/context.h"
 #include "host/pipelines.h"
 #include "host/resources.h"
-#include "reference/render_reference.h"
-#include "reference/scene_data.h"
+#include "phongvk/image.h"
+#include "scene/scene_data.h"
+#include "shaders/gpu_layout.h"
 
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace phongvk {
@@ -40,14 +42,23 @@ enum class WorkLayout { Auto, Cpu, Gpu };
 // Tests force either.
 enum class ColorOutput { Auto, InKeySlots, ColorBuffer };
 
+struct GpuRendererOptions {
+  WorkLayout layout = WorkLayout::Auto;
+  ColorOutput output = ColorOutput::Auto;
+  // The most workgroups a pass launches until a frame runs out of loop iterations (0: the
+  // device's); tests start low to exercise the retry with more (render).
+  uint32_t firstGroupCap = 0;
+  // The passes' `_exact` builds, which correct the device's division and square root: what
+  // probeFloatOps(context).useExact() says for the device (host/float_probe.h). Unset, the
+  // renderer runs the probe itself; a caller that builds several renderers probes once and says.
+  std::optional<bool> exactFloats;
+};
+
 class GpuRenderer {
  public:
   // Uploads the scene's vertices, triangles and materials. Throws std::runtime_error when the
   // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
-  // `firstGroupCap` (0: the device's) is the most workgroups a pass launches until a frame runs out
-  // of loop iterations; tests start low to exercise the retry with more (render).
-  GpuRenderer(const VulkanContext& context, const SceneData& data, WorkLayout layout = WorkLayout::Auto,
-              ColorOutput output = ColorOutput::Auto, uint32_t firstGroupCap = 0);
+  GpuRenderer(const VulkanContext& context, const SceneData& data, const GpuRendererOptions& options = {});
   ~GpuRenderer();
   GpuRenderer(const GpuRenderer&) = delete;
   GpuRenderer& operator=(const GpuRenderer&) = delete;
@@ -81,34 +92,41 @@ class GpuRenderer {
     std::vector<SpecConstant> specs;
   };
 
+  // The frame loop (gpu_renderer.cpp).
   void release();  // destroys whatever exists; safe to call twice
+  bool renderAttempt();
+  void prepareRetry(uint32_t statusFlags);
+  void readTimes();
+
+  // Pipelines (gpu_pipelines.cpp).
   std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
-                                          uint32_t interpolation, uint32_t output) const;
-  uint32_t resolveOutput(bool withKeys) const;
+                                          uint32_t interpolation, bool withKeys) const;
   // Whether the pack pass moves the frame's colours from the key slots into the colour buffer.
   bool packsColors(bool withKeys) const;
   void compilePipelines(const std::vector<PipelineRequest>& requests);
   const ComputePipeline& pipeline(const PipelineRequest& request) const;
-  void selectPipelines(const FrameInputs& in, bool withKeys);
+  void selectPipelines(const FrameInputs& in);
+
+  // Buffers, uploads and what changed since the last frame (gpu_buffers.cpp).
   void uploadScene(const SceneData& data);
   void ensureImageBuffers(uint32_t width, uint32_t height);
   void ensureColorBuffer(bool wholeImage);
-  Image readImage(const gpu::FrameData& frame);
   void createLargeBuffers(uint32_t entries, uint32_t setups);
-  bool renderAttempt(bool withKeys);
-  void prepareRetry(uint32_t statusFlags);
   void updateDescriptors();
-  void setRendererLimits(gpu::FrameData& frame) const;
-  void uploadFrame(const FrameInputs& in, bool withKeys);
-  void recordFrame(VkCommandBuffer cmd, const gpu::FrameData& frame, bool withKeys);
-  void readTimes();
+  void uploadFrame(const FrameInputs& in);
+  void writeControl();
+
+  // Recording a frame's passes (gpu_recording.cpp) and reading its image (gpu_readback.cpp).
+  void recordFrame(VkCommandBuffer cmd);
+  Image readImage();
 
   const VulkanContext& context_;
+  bool exactFloats_ = false;   // the passes' _exact builds
   uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
   bool binPass_ = false;       // SPEC_BIN_PASS: WorkLayout::Gpu runs the bin pass
   bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
   bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
-  uint32_t groupCap_ = 0;      // most workgroups per pass (shared.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
+  uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
   uint64_t framesRepeated_ = 0;
   std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
   ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
@@ -117,7 +135,7 @@ class GpuRenderer {
   TimestampPool timestamps_;
   PassTimes times_;
 
-  Buffer frame_, clipList_, keys_, bins_, colors_, keyReadback_, status_;
+  Buffer frameBuffer_, controlBuffer_, clipList_, keys_, bins_, colors_, keyReadback_, status_;
   TexelBuffer vertices_, triangles_, objects_, materials_, lights_;  // read as texels (bindings.glsl)
   TexelBuffer shadedPositions_, shadedColors_;  // written by the shade pass, read as texels
   TexelBuffer large_, largeSetups_;  // written as storage, read by resolve as texels
@@ -128,11 +146,17 @@ class GpuRenderer {
   uint32_t width_ = 0;
   uint32_t height_ = 0;
 
+  // The frame being rendered, as uploaded: the scene's frame and the pass control this renderer
+  // wrote for it (writeControl), whether it keeps its keys, and where its colours end up.
+  gpu::FrameData frame_{};
+  gpu::PassControl control_{};
+  bool withKeys_ = false;
+  bool frameColorsInKeys_ = false;
+
   // What the device holds from earlier frames, so a frame sends only what changed.
   std::vector<gpu::ObjectData> lastObjects_;
   std::vector<gpu::MaterialData> lastMaterials_;
   std::vector<gpu::LightData> lastLights_;
-  gpu::FrameData lastFrame_{};
   uint64_t framesSent_ = 0;
   uint64_t framesShaded_ = 0;
   uint64_t framesTransformed_ = 0;

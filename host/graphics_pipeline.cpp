@@ -30,7 +30,7 @@ void checkFormat(const VulkanContext& context, VkFormat format, VkImageUsageFlag
   if (usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) need |= VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
   if (usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) need |= VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
   if ((have & need) != need)
-    throw std::runtime_error(context.report.name + " cannot render to VkFormat " + std::to_string(format) +
+    throw std::runtime_error(context.info.name + " cannot render to VkFormat " + std::to_string(format) +
                              " (format features " + std::to_string(have) + ", need " + std::to_string(need) + ")");
 }
 
@@ -47,11 +47,7 @@ void allocateImageMemory(RenderTarget& target, const VulkanContext& context) {
 // A shader module that lives only while a pipeline is created from it.
 struct ShaderModule {
   ShaderModule(const VulkanContext& context, std::span<const uint32_t> spirv) : device(context.device) {
-    assert(!spirv.empty());
-    VkShaderModuleCreateInfo info = { VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO };
-    info.codeSize = spirv.size_bytes();
-    info.pCode = spirv.data();
-    VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
+    module = createShaderModule(context, spirv);
   }
   ~ShaderModule() { vkDestroyShaderModule(device, module, nullptr); }
   ShaderModule(const ShaderModule&) = delete;
@@ -62,12 +58,12 @@ struct ShaderModule {
 };
 
 VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits stage, VkShaderModule module,
-                                            const VkSpecializationInfo& spec) {
+                                            const Specialization& spec) {
   VkPipelineShaderStageCreateInfo info = { VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO };
   info.stage = stage;
   info.module = module;
   info.pName = "main";
-  info.pSpecializationInfo = &spec;
+  info.pSpecializationInfo = spec.info();
   return info;
 }
 
@@ -220,8 +216,7 @@ void destroyGraphicsLayout(GraphicsLayout& layout, const VulkanContext& context)
 VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPipelineInfo& info) {
   const ShaderModule vertex(context, info.vertexSpirv);
   const ShaderModule fragment(context, info.fragmentSpirv);
-  const VkSpecializationMapEntry specEntries[] = {{0, 0, sizeof(uint32_t)}, {1, sizeof(uint32_t), sizeof(uint32_t)}};
-  const VkSpecializationInfo spec = {2, specEntries, sizeof(info.spec), info.spec.data()};
+  const Specialization spec(info.specs);
   const VkPipelineShaderStageCreateInfo stages[] = {
       shaderStage(VK_SHADER_STAGE_VERTEX_BIT, vertex.module, spec),
       shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, fragment.module, spec),

@@ -10,7 +10,7 @@
 #include "host/context.h"
 #include "host/pipelines.h"
 
-#include <array>
+#include <vector>
 #include <span>
 
 namespace phongvk {
@@ -49,7 +49,7 @@ void destroyGraphicsLayout(GraphicsLayout& layout, const VulkanContext& context)
 struct GraphicsPipelineInfo {
   std::span<const uint32_t> vertexSpirv;
   std::span<const uint32_t> fragmentSpirv;
-  std::array<uint32_t, 2> spec = {};  // `layout(constant_id = 0 and 1) const uint` (a stage may omit 1)
+  std::vector<SpecConstant> specs;  // both stages get them all (a stage ignores those it lacks)
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   VkCullModeFlags cullMode = VK_CULL_MODE_NONE;

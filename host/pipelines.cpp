@@ -9,16 +9,6 @@
 namespace phongvk {
 namespace {
 
-VkShaderModule createShaderModule(const VulkanContext& context, const uint32_t* spirv, size_t spirvBytes) {
-  assert(spirv && spirvBytes > 0 && spirvBytes % 4 == 0);
-  VkShaderModuleCreateInfo info = { VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO };
-  info.codeSize = spirvBytes;
-  info.pCode = spirv;
-  VkShaderModule module = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateShaderModule(context.device, &info, nullptr, &module));
-  return module;
-}
-
 VkPipelineLayout createPipelineLayout(const VulkanContext& context, VkDescriptorSetLayout setLayout,
                                       uint32_t pushConstantBytes) {
   VkPushConstantRange pushConstants = {VK_SHADER_STAGE_COMPUTE_BIT, 0, pushConstantBytes};
@@ -34,24 +24,13 @@ VkPipelineLayout createPipelineLayout(const VulkanContext& context, VkDescriptor
 
 VkPipeline createPipeline(const VulkanContext& context, VkShaderModule module, VkPipelineLayout layout,
                           std::span<const SpecConstant> specs) {
-  std::vector<VkSpecializationMapEntry> entries;
-  std::vector<uint32_t> values;
-  for (const SpecConstant& spec : specs) {
-    entries.push_back({spec.id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)), sizeof(uint32_t)});
-    values.push_back(spec.value);
-  }
-  VkSpecializationInfo specialization = {};
-  specialization.mapEntryCount = static_cast<uint32_t>(entries.size());
-  specialization.pMapEntries = entries.data();
-  specialization.dataSize = values.size() * sizeof(uint32_t);
-  specialization.pData = values.data();
-
+  const Specialization specialization(specs);
   VkComputePipelineCreateInfo info = { VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO };
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module;
   info.stage.pName = "main";
-  info.stage.pSpecializationInfo = specs.empty() ? nullptr : &specialization;
+  info.stage.pSpecializationInfo = specialization.info();
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
   VK_CHECK(vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
@@ -59,6 +38,27 @@ VkPipeline createPipeline(const VulkanContext& context, VkShaderModule module, V
 }
 
 }  // namespace
+
+Specialization::Specialization(std::span<const SpecConstant> specs) {
+  for (const SpecConstant& spec : specs) {
+    entries_.push_back({spec.id, static_cast<uint32_t>(values_.size() * sizeof(uint32_t)), sizeof(uint32_t)});
+    values_.push_back(spec.value);
+  }
+  info_.mapEntryCount = static_cast<uint32_t>(entries_.size());
+  info_.pMapEntries = entries_.data();
+  info_.dataSize = values_.size() * sizeof(uint32_t);
+  info_.pData = values_.data();
+}
+
+VkShaderModule createShaderModule(const VulkanContext& context, std::span<const uint32_t> spirv) {
+  assert(!spirv.empty());
+  VkShaderModuleCreateInfo info = { VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO };
+  info.codeSize = spirv.size_bytes();
+  info.pCode = spirv.data();
+  VkShaderModule module = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateShaderModule(context.device, &info, nullptr, &module));
+  return module;
+}
 
 VkDescriptorSetLayout createSetLayout(const VulkanContext& context, std::span<const Binding> bindings,
                                       VkShaderStageFlags stages) {
@@ -88,7 +88,7 @@ ComputePipeline createComputePipeline(const VulkanContext& context, const uint32
   try {
     result.setLayout = createSetLayout(context, bindings, VK_SHADER_STAGE_COMPUTE_BIT);
     result.layout = createPipelineLayout(context, result.setLayout, pushConstantBytes);
-    module = createShaderModule(context, spirv, spirvBytes);
+    module = createShaderModule(context, {spirv, spirvBytes / sizeof(uint32_t)});
     result.pipeline = createPipeline(context, module, result.layout, specs);
   } catch (...) {
     if (module) vkDestroyShaderModule(context.device, module, nullptr);

@@ -8,8 +8,10 @@
 
 #include "host/context.h"
 #include "host/resources.h"
+#include "shaders/shared.h"
 
 #include <span>
+#include <vector>
 
 namespace phongvk {
 
@@ -19,11 +21,41 @@ struct Binding {
   VkDescriptorType type;
 };
 
-// A specialization constant: `layout(constant_id = id) const uint NAME = default;` in GLSL.
+// Every descriptor of the shared set (shaders/shared.h's table, with its types), in binding order.
+#define PHONGVK_AS_BINDING(name, binding, type) Binding{gpu::name, VK_DESCRIPTOR_TYPE_##type},
+inline constexpr Binding SHARED_BINDINGS[] = {PHONGVK_BINDINGS(PHONGVK_AS_BINDING)};
+#undef PHONGVK_AS_BINDING
+
+// The table's entry for binding `number` (a shaders/shared.h BINDING_*).
+constexpr Binding sharedBinding(uint32_t number) {
+  for (const Binding& b : SHARED_BINDINGS) {
+    if (b.binding == number) return b;
+  }
+  return {number, VK_DESCRIPTOR_TYPE_MAX_ENUM};
+}
+
+// A specialization constant: `layout(constant_id = SPEC_X) const uint NAME = default;` in GLSL,
+// the id from shaders/shared.h's table.
 struct SpecConstant {
   uint32_t id;
   uint32_t value;
 };
+
+// The VkSpecializationInfo of some constants, with the storage it points into.
+class Specialization {
+ public:
+  explicit Specialization(std::span<const SpecConstant> specs);
+  // Null when there are no constants.
+  const VkSpecializationInfo* info() const { return entries_.empty() ? nullptr : &info_; }
+
+ private:
+  std::vector<VkSpecializationMapEntry> entries_;
+  std::vector<uint32_t> values_;
+  VkSpecializationInfo info_ = {};
+};
+
+// A shader module from SPIR-V (a glslang --vn array). The caller destroys it.
+VkShaderModule createShaderModule(const VulkanContext& context, std::span<const uint32_t> spirv);
 
 struct ComputePipeline {
   VkPipeline pipeline = VK_NULL_HANDLE;
@@ -65,9 +97,15 @@ struct BufferDescriptor {
   VkBufferView view = VK_NULL_HANDLE;
 };
 
-// The uniform texel buffer descriptor of `texels` at `binding`.
+// The descriptor of `buffer` at shared binding `binding`, of the table's type.
+inline BufferDescriptor bufferDescriptor(uint32_t binding, const Buffer& buffer) {
+  return {binding, sharedBinding(binding).type, buffer.buffer};
+}
+
+// The descriptor of `texels` at shared binding `binding`: its texel view for a texel binding, the
+// buffer itself for a storage binding (a pass that writes what others read as texels).
 inline BufferDescriptor texelDescriptor(uint32_t binding, const TexelBuffer& texels) {
-  return {binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, texels.buffer.buffer, 0, VK_WHOLE_SIZE, texels.view};
+  return {binding, sharedBinding(binding).type, texels.buffer.buffer, 0, VK_WHOLE_SIZE, texels.view};
 }
 
 // Allocates a set of `setLayout` from the arena and writes `descriptors` into it.

@@ -1,7 +1,7 @@
 // resources.cpp — buffers, memory type choice, staging copies, memory accounting.
 #include "host/resources.h"
 
-#include "host/commands.h"
+#include "host/submit.h"
 #include "host/vk_check.h"
 
 #include <cstring>

@@ -1,4 +1,4 @@
-#include "raycast.h"
+#include "reference/raycast.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,12 @@
 namespace phongvk {
 
 // Everything here is double on purpose: this is the exact picture the float renderers are measured
-// against, so it shares none of their maths (shaders/phong.h, shaders/raster.h) and keeps its own
+// against, so it shares none of their maths (shaders/phong.h, triangle_setup.h, gouraud.h) and keeps its own
 // rounding error far below one 8-bit step.
 
 namespace {
 
-const Object& theSphere(const Scene& scene) {
+const Object& theSphere(const SceneSpec& scene) {
   if (scene.objects.size() != 1 ||
       (scene.objects[0].shape != Shape::Sphere && scene.objects[0].shape != Shape::Icosphere)) {
     throw std::invalid_argument(scene.path + ": the analytic ground truth needs a scene of exactly one sphere or icosphere");
@@ -46,7 +46,7 @@ double nearerHit(const glm::dvec3& eye, const glm::dvec3& d, const glm::dvec3& c
 
 // DESIGN.md "Phong": ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), the
 // specular term only where N.l > 0, a light exactly at P adding nothing.
-glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& eye, const Scene& scene,
+glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& eye, const SceneSpec& scene,
                  const Material& m) {
   const glm::dvec3 C(m.color);
   glm::dvec3 color = double(m.ka) * C * glm::dvec3(scene.ambient);
@@ -74,7 +74,7 @@ void writeColor(uint8_t* rgb, const glm::dvec3& c) {
 
 }  // namespace
 
-Image raycastSphere(const Scene& scene, const View& view) {
+Image raycastSphere(const SceneSpec& scene, const View& view) {
   const Object& sphere = theSphere(scene);
   const Material& material = scene.materials.empty() ? Material{} : scene.materials.at(sphere.material);
   Image image(view.width, view.height);

@@ -4,9 +4,9 @@
 // Gouraud-interpolated renders are from this picture (bench/error_sweep.h).
 #pragma once
 
-#include "camera.h"
-#include "image.h"
-#include "scene.h"
+#include "scene/camera.h"
+#include "phongvk/image.h"
+#include "scene/scene.h"
 
 namespace phongvk {
 
@@ -16,6 +16,6 @@ namespace phongvk {
 // planes (view-space depth, as the renderers clip); elsewhere the background. Colours follow
 // DESIGN.md's Phong formula with the scene's material, ambient and lights, clamped to [0, 1] and
 // written as round(c * 255). Throws std::invalid_argument for any other kind of scene.
-Image raycastSphere(const Scene& scene, const View& view);
+Image raycastSphere(const SceneSpec& scene, const View& view);
 
 }  // namespace phongvk

@@ -1,7 +1,9 @@
-#include "render_reference.h"
+#include "reference/render_reference.h"
 
+#include "image/packed_pixels.h"
+#include "shaders/gouraud.h"
 #include "shaders/phong.h"
-#include "shaders/raster.h"
+#include "shaders/triangle_setup.h"
 
 #include <algorithm>
 

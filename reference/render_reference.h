@@ -1,19 +1,15 @@
 // render_reference.h — the CPU reference renderer: plain, single-threaded loops over the shared
-// maths in shaders/phong.h and shaders/raster.h. It is the oracle every GPU image is diffed with.
+// maths (shaders/phong.h, triangle_setup.h, gouraud.h). It is the oracle every GPU image is
+// diffed with.
 #pragma once
 
-#include "image.h"
-#include "scene_data.h"
+#include "phongvk/image.h"
+#include "scene/scene_data.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace phongvk {
-
-struct RenderOutput {
-  Image image;
-  std::vector<uint64_t> keys;  // per pixel: (depth32 << 32) | triangle id, or KEY_CLEAR
-};
 
 // Per-vertex transform + Phong (the shade_vertices pass).
 std::vector<gpu::ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs& in);

@@ -10,18 +10,17 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
 
-#include "shared.h"
-#include "raster.h"
+#include "large_triangles.h"
 #include "bindings.glsl"
 #include "raster_loops.glsl"
 
 layout(local_size_x = BIN_GROUP_SIZE) in;
 
 void main() {
-  loadFrame();
+  loadUniforms();
   // An overflowing frame is rendered again; its lists may hold entries nobody wrote.
   if ((status.flags & STATUS_LARGE_OVERFLOW) != 0u) return;
-  uint n = min(large.count, frame.largeCapacity);
+  uint n = min(large.count, control.largeCapacity);
   for (uint e = gl_GlobalInvocationID.x; e < n; e += gl_NumWorkGroups.x * BIN_GROUP_SIZE) {
     LargeEntry entry = largeEntries[e];
     LargeTriangle record = largeSetup(entry.slot);

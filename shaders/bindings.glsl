@@ -1,39 +1,49 @@
-// bindings.glsl — the descriptor set every phongvk pass shares (numbers from shared.h).
-// Included by the .comp files after shared.h; a pass simply ignores the buffers it does not use.
+// bindings.glsl — the descriptor set every phongvk pass shares (numbers from shared.h's table).
+// Included by every pass (and the graphics baseline's vertex stage); a pass simply ignores the
+// buffers it does not use.
 //
 // Arrays the passes only read are uniform texel buffers of RGBA32UI texels, each shared.h struct
 // being whole texels, unpacked by the functions below (uintBitsToFloat keeps every bit, even of
 // subnormals and NaNs): lavapipe gathers a texelFetch in SIMD, while it loads from a storage
 // buffer lane by lane, with a branch and a bounds check each.
+#include "shared.h"
+#include "gpu_layout.h"
+#include "gouraud.h"
+#include "large_triangles.h"
+
 layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frameBlock; };
-// The frame as the passes read it: a private copy every main makes first (loadFrame). Where
-// FrameData went to a function by value straight from the block, lavapipe loaded the members it
-// used lane by lane, a gather with a bounds check each, in every pixel loop (resolve_large on
-// fig1_cube: 33 such gathers, a fifth of its instructions); the copy is loaded once.
+// The frame and the pass control as the passes read them: private copies every main makes first
+// (loadUniforms). Where FrameData went to a function by value straight from the block, lavapipe
+// loaded the members it used lane by lane, a gather with a bounds check each, in every pixel loop
+// (resolve_large on fig1_cube: 33 such gathers, a fifth of its instructions); the copy is loaded once.
 FrameData frame;
+
+#ifdef PHONGVK_GRAPHICS_STAGE
+void loadUniforms() { frame = frameBlock; }
+#else
+layout(std140, binding = BINDING_CONTROL) uniform Control { PassControl controlBlock; };
+PassControl control;
 
 // 1, read from a value no compiler knows: every dispatch of ours is one row of workgroups (the
 // host's vkCmdDispatch(x, 1, 1), and groupsY = 1 in the lists that indirect dispatches read).
-#ifdef PHONGVK_GRAPHICS_STAGE
-uint runtimeOne() { return 1u; }
-#else
 uint runtimeOne() { return gl_NumWorkGroups.y; }
-#endif
 
 // lavapipe (Mesa 22.3) replaces up to four uniform values that decide a branch or the end of a loop
 // by their current values and, if that halves the shader, compiles the result again every time the
 // pipeline is bound, keeping every copy: a relit frame's shade pass on fig1_cube cost ~1.2 ms, and
-// the process gained code mappings frame after frame (219 -> 632 in 4 s). So the frame fields that
+// the process gained code mappings frame after frame (219 -> 632 in 4 s). So the control fields that
 // decide branches and loop ends are multiplied by runtimeOne(), which the inliner cannot look into.
-void loadFrame() {
+void loadUniforms() {
   frame = frameBlock;
+  control = controlBlock;
   uint one = runtimeOne();
-  frame.vertexCount *= one;
-  frame.triangleCount *= one;
-  frame.shadeColors *= one;
-  frame.shadePositions *= one;
-  frame.loopProbe *= one;
+  control.vertexCount *= one;
+  control.triangleCount *= one;
+  control.shadeColors *= one;
+  control.shadePositions *= one;
+  control.loopProbe *= one;
 }
+#endif
 layout(binding = BINDING_VERTICES) uniform usamplerBuffer vertexTexels;
 layout(binding = BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
 layout(binding = BINDING_OBJECTS) uniform usamplerBuffer objectTexels;
@@ -56,16 +66,18 @@ layout(std430, binding = BINDING_LARGE_SETUPS) writeonly buffer LargeSetups { La
 layout(std430, binding = BINDING_CLIP_LIST) buffer ClipList { IdList clipList; uint clipIds[]; };
 layout(std430, binding = BINDING_STATUS) buffer Status { FrameStatus status; };
 
+#ifndef PHONGVK_GRAPHICS_STAGE
 // Every pass calls this last. lavapipe (llvmpipe) allows one invocation 65535 loop iterations in
 // all (each back edge of every loop counts: LP_MAX_TGSI_LOOP_ITERATIONS) and then silently leaves
 // every loop, so a pass given too much work would end early and the image be wrong. A loop of
-// frame.loopProbe iterations that runs fewer shows the budget ran out: the host is told
+// control.loopProbe iterations that runs fewer shows the budget ran out: the host is told
 // (STATUS_LOOP_LIMIT) and renders the frame again with more workgroups.
 void checkLoopBudget() {
   uint n = 0u;
-  for (uint i = 0u; i < frame.loopProbe; ++i) ++n;
-  if (n != frame.loopProbe) atomicOr(status.flags, STATUS_LOOP_LIMIT);
+  for (uint i = 0u; i < control.loopProbe; ++i) ++n;
+  if (n != control.loopProbe) atomicOr(status.flags, STATUS_LOOP_LIMIT);
 }
+#endif
 
 // A texel's four words as floats, bit for bit.
 vec4 floats(uvec4 t) { return uintBitsToFloat(t); }
@@ -101,7 +113,7 @@ LargeEntry largeEntry(uint e) {
   return LargeEntry(t.x, t.y, t.z, t.w);
 }
 
-// Large set-up `slot` (raster.h LargeSetup, ten texels): its raster half, the first five.
+// Large set-up `slot` (large_triangles.h LargeSetup, ten texels): its raster half, the first five.
 LargeTriangle largeSetup(uint slot) {
   int k = int(10u * slot);
   uvec4 a = texelFetch(largeSetupTexels, k);
@@ -113,7 +125,7 @@ LargeTriangle largeSetup(uint slot) {
                        ivec2(d.xy), int(d.z), int(d.w), int(f.x), uintBitsToFloat(f.y), uintBitsToFloat(f.z), f.w);
 }
 
-// Large set-up `slot`'s shading half (raster.h LargeShading), the last five texels; the fifth (W)
+// Large set-up `slot`'s shading half (large_triangles.h LargeShading), the last five texels; the fifth (W)
 // only for interpolation `mode` INTERP_SCREEN (a specialization constant: no read otherwise).
 LargeShading largeShading(uint slot, uint mode) {
   int k = int(10u * slot) + 5;
@@ -145,7 +157,7 @@ void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullB
   h2 = floats(texelFetch(shadedTexels, int(tri.z))).xyz;
 }
 
-// Triangle `id`'s Gouraud constants (raster.h).
+// Triangle `id`'s Gouraud constants (gouraud.h).
 GouraudTriangle loadGouraud(uint id) {
   ShadedVertex a, b, c;
   loadTriangle(id, a, b, c);

@@ -1,6 +1,6 @@
 // Clip pass: the triangles the triangle pass did not draw itself, those crossing the near plane or
 // the guard band and those too large for its 32-bit edge functions. One inside the clip volume is
-// set up as itself (raster.h setupUnclipped, as the triangle pass does); one crossing it is
+// set up as itself (triangle_setup.h setupUnclipped, as the triangle pass does); one crossing it is
 // clipped to a polygon (setupClipped) whose fan sub-triangles become triangle setups of their
 // own. Large ones go to resolve's bin lists, the others are rasterized here. Kept out of the
 // triangle pass because on lavapipe code a pass merely contains costs every triangle it runs.
@@ -8,15 +8,14 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
-#include "shared.h"
-#include "raster.h"
+#include "triangle_setup.h"
 #include "bindings.glsl"
 #include "raster_loops.glsl"
 
 layout(local_size_x = CLIP_GROUP_SIZE) in;
 
 void main() {
-  loadFrame();
+  loadUniforms();
   for (uint k = gl_GlobalInvocationID.x; k < clipList.count; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
     uint id = clipIds[k];
     vec3 h0, h1, h2;
@@ -32,9 +31,9 @@ void main() {
     for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
     if (!drawn) continue;
     for (int f = 0; f + 2 < t.count; ++f) {
-      TriangleSetup sub = fanTriangle(t, f, frame);
+      TriangleSetup sub = fanTriangle(t, f);
       EdgeSetup s;
-      if (setupSingle(sub, frame, s)) drawOrDefer(sub, s);
+      if (setupSingle(sub, s)) drawOrDefer(sub, s);
     }
   }
   checkLoopBudget();

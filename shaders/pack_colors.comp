@@ -1,5 +1,5 @@
 // Colour pass (the colour buffer in host memory, a discrete GPU's): resolve has left every pixel's
-// final colour in its key slot (raster.h colorSlot; KEY_CLEAR where nothing covered it, which gets
+// final colour in its key slot (color_slots.h colorSlot; KEY_CLEAR where nothing covered it, which gets
 // the background); this pass packs them into the colour buffer's RGB bytes, one whole word per
 // invocation, so a subgroup's stores are consecutive words (the next frame clears the slots).
 // Resolve's own stores were three single bytes per pixel from scattered lanes into host memory
@@ -10,8 +10,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
-#include "shared.h"
-#include "raster.h"
+#include "gouraud.h"
+#include "color_slots.h"
 #include "bindings.glsl"
 
 layout(local_size_x = PACK_GROUP_SIZE) in;
@@ -26,7 +26,7 @@ uint colorOf(uint i, uint pixels, uint background) {
 }
 
 void main() {
-  loadFrame();
+  loadUniforms();
   uint background = packColor(frame.background) & 0xFFFFFFu;
   uint pixels = frame.width * frame.height;
   uint words = (3u * pixels + 3u) / 4u;

@@ -6,18 +6,9 @@
 #include "glsl_cpp.h"
 #include "shared.h"
 #include "exact_float.h"
+#include "vector_math.h"
 
 SHARED_BEGIN
-
-FN float dot3(vec3 a, vec3 b) {
-  PRECISE float r = a.x * b.x + a.y * b.y + a.z * b.z;
-  return r;
-}
-
-FN vec3 cross3(vec3 a, vec3 b) {
-  PRECISE vec3 r = vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-  return r;
-}
 
 // Homogeneous pixel-space position of a vertex: (focal * x_view, -focal * y_view, z_view).
 // The view position is rotate(local) + viewOffset, where viewOffset = rotate(origin - eye) was

@@ -7,7 +7,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "shared.h"
+#include "gpu_layout.h"
 #include "exact_float.h"
 
 layout(local_size_x = FLOAT_PROBE_GROUP_SIZE) in;

@@ -1,17 +1,42 @@
 // raster_loops.glsl — what the raster passes share (after bindings.glsl; needs
 // GL_EXT_shader_atomic_int64): bin marking, span loops, handing large triangles to resolve.
+#include "large_triangles.h"
+#include "row_spans.h"
+#include "small_triangles.h"
+
+// The pixels of a box, (x1 - x0 + 1) (y1 - y0 + 1).
+int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
+
+// Fan sub-triangle k of a clipped polygon as a triangle setup of its own (same plane, depth range
+// and id; its own box), so later passes only ever see count == 3 and index constantly.
+TriangleSetup fanTriangle(TriangleSetup t, int k) {
+  TriangleSetup sub = t;
+  sub.count = 3;
+  sub.snapped[1] = t.snapped[k + 1];
+  sub.snapped[2] = t.snapped[k + 2];
+  ivec2 a = sub.snapped[0];
+  ivec2 b = sub.snapped[1];
+  ivec2 c = sub.snapped[2];
+  sub.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), frame.width, frame.height);
+  return sub;
+}
+
+// The only sub-triangle of an unclipped triangle (count == 3), with constant indices.
+bool setupSingle(TriangleSetup t, out EdgeSetup s) {
+  return setupEdges(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height, s);
+}
 
 // Records that bin b needs resolving, with `flags` (the tiles whose keys were written, if any):
 // the first toucher appends it to the touched list (the plain read skips the atomics for bins
 // already marked so).
 void touchBin(uvec2 b, uint flags) {
-  uint bin = b.y * frame.binsX + b.x;
+  uint bin = b.y * control.binsX + b.x;
   uint want = BIN_LISTED | flags;
   if ((binData[bin] & want) == want) return;
   if ((atomicOr(binData[bin], want) & BIN_LISTED) != 0u) return;
   uint k = atomicAdd(binList.count, 1u);
-  binData[2u * frame.binCount + k] = b.x | (b.y << 16);  // resolve needs no division
-  atomicMax(binList.groupsX, min(k + 1u, frame.groupCap));
+  binData[2u * control.binCount + k] = b.x | (b.y << 16);  // resolve needs no division
+  atomicMax(binList.groupsX, min(k + 1u, control.groupCap));
 }
 
 // The bins of pixel box (x0, y0, x1, y1), as (bx0, by0, bx1, by1).
@@ -42,12 +67,13 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s) {
   }
 }
 
-// A small sub-triangle's pixels (raster.h EdgeSetup32), one invocation: every pixel of its box
-// tested (covers32), as the reference does (a 1M-triangle grid 67.8 -> 58.5 ms against row spans).
-void rasterizeSmall(TriangleSetup t, EdgeSetup32 s) {
+// A small sub-triangle's pixels (small_triangles.h setupSmallEdges), one invocation: every pixel of
+// its box tested (coversSmall), as the reference does (a 1M-triangle grid 67.8 -> 58.5 ms against
+// row spans).
+void rasterizeSmall(TriangleSetup t, EdgeSetup s) {
   for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
-      if (covers32(s, x, y)) atomicMin(keys[uint(y) * frame.width + uint(x)], coveredKey(t, x, y, frame));
+      if (coversSmall(s, x, y)) atomicMin(keys[uint(y) * frame.width + uint(x)], coveredKey(t, x, y, frame));
     }
   }
 }
@@ -67,8 +93,8 @@ uint reserve(uint count, uint capacity, bool entries) {
 bool linkEntry(uint e, uint slot, LargeTriangle record, ivec2 b) {
   uvec2 tiles = binTileMasks(record, b * int(BIN_SIZE), frame.farPlane);
   if (tiles.x == 0u) return false;
-  uint bin = uint(b.y) * frame.binsX + uint(b.x);
-  largeEntries[e] = LargeEntry(slot, atomicExchange(binData[frame.binCount + bin], e), tiles.x, tiles.y);
+  uint bin = uint(b.y) * control.binsX + uint(b.x);
+  largeEntries[e] = LargeEntry(slot, atomicExchange(binData[control.binCount + bin], e), tiles.x, tiles.y);
   touchBin(uvec2(b), 0u);
   return true;
 }
@@ -83,16 +109,16 @@ layout(constant_id = SPEC_BIN_PASS) const bool BIN_PASS = false;
 // nothing, when the set-up records or the bin entries are full.
 bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
   ivec4 bins = binsOf(s.bbox);
-  uint slot = reserve(1u, frame.largeSetupCapacity, false);
+  uint slot = reserve(1u, control.largeSetupCapacity, false);
   if (slot == LIST_END) return false;
   uint count = uint((bins.z - bins.x + 1) * (bins.w - bins.y + 1));
-  uint first = reserve(count, frame.largeCapacity, true);
+  uint first = reserve(count, control.largeCapacity, true);
   if (first == LIST_END) return false;
   LargeTriangle record = largeTriangle(t, s);
   largeSetups[slot] = LargeSetup(record, packShading(loadGouraud(t.triangle)));
   if (BIN_PASS) {
     for (uint e = first; e < first + count; ++e) largeEntries[e] = LargeEntry(slot, LIST_END, 0u, first);
-    atomicMax(clipList.binGroupsX, min((first + count + BIN_GROUP_SIZE - 1u) / BIN_GROUP_SIZE, frame.groupCap));
+    atomicMax(clipList.binGroupsX, min((first + count + BIN_GROUP_SIZE - 1u) / BIN_GROUP_SIZE, control.groupCap));
     return true;
   }
   // A bin of the box that the triangle misses gets no entry (its reserved one stays unused).

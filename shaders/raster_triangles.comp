@@ -1,4 +1,4 @@
-// Triangle pass: one invocation per triangle. Cull and snap (raster.h); a small one (32-bit edge
+// Triangle pass: one invocation per triangle. Cull and snap (triangle_setup.h); a small one (32-bit edge
 // functions suffice) is rasterized right here; one that crosses the near plane or the guard band,
 // or is not small, goes to the clip list, and the clip pass (clip_triangles.comp) draws it or hands
 // it to resolve. lavapipe runs both sides of every branch (masked; only loops really branch), so
@@ -8,8 +8,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
-#include "shared.h"
-#include "raster.h"
+#include "triangle_setup.h"
+#include "small_triangles.h"
 #include "bindings.glsl"
 #include "raster_loops.glsl"
 
@@ -17,8 +17,8 @@ layout(local_size_x = SETUP_GROUP_SIZE) in;
 
 // A small unclipped triangle, with 32-bit edges.
 void rasterizeSmallTriangle(TriangleSetup t) {
-  EdgeSetup32 small;
-  if (!setupEdges32(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height, small)) {
+  EdgeSetup small;
+  if (!setupSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height, small)) {
     return;
   }
   markBins(small.bbox);
@@ -26,9 +26,9 @@ void rasterizeSmallTriangle(TriangleSetup t) {
 }
 
 void main() {
-  loadFrame();
-  // Grid-stride: the host caps the group count at frame.groupCap.
-  for (uint id = gl_GlobalInvocationID.x; id < frame.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
+  loadUniforms();
+  // Grid-stride: the host caps the group count at control.groupCap.
+  for (uint id = gl_GlobalInvocationID.x; id < control.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
     vec3 h0, h1, h2;
     bool cullBack;
     loadForSetup(id, h0, h1, h2, cullBack);
@@ -41,7 +41,7 @@ void main() {
     } else {
       uint k = atomicAdd(clipList.count, 1u);
       clipIds[k] = id;
-      atomicMax(clipList.groupsX, min(k / CLIP_GROUP_SIZE + 1u, frame.groupCap));
+      atomicMax(clipList.groupsX, min(k / CLIP_GROUP_SIZE + 1u, control.groupCap));
     }
   }
   checkLoopBudget();

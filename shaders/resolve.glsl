@@ -1,6 +1,7 @@
 // resolve.glsl — what the two resolve passes share (after bindings.glsl): both walk the touched
 // bins (bindings.glsl), one workgroup per bin at a time (grid-stride): resolve_large the bins with
 // large triangles, then resolve_small the tiles small triangles touched.
+#include "color_slots.h"
 
 layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
 layout(constant_id = SPEC_RESOLVE_OUTPUT) const uint OUTPUT = RESOLVE_OUTPUT_KEY_SLOTS;
@@ -13,10 +14,10 @@ struct Bin {
 };
 
 Bin touchedBin(uint k) {
-  uint packed = binData[2u * frame.binCount + k];
+  uint packed = binData[2u * control.binCount + k];
   uvec2 bin = uvec2(packed & 0xFFFFu, packed >> 16);
-  uint index = bin.y * frame.binsX + bin.x;
-  return Bin(bin * BIN_SIZE, binData[index], binData[frame.binCount + index]);
+  uint index = bin.y * control.binsX + bin.x;
+  return Bin(bin * BIN_SIZE, binData[index], binData[control.binCount + index]);
 }
 
 // The first pixel of the bin's tile t (row-major), and whether small triangles wrote keys in it.

@@ -15,10 +15,9 @@
 // whose depth tests and edge steps it saves (-17% wall clock there, -19% at 4K, fig1_cube -2%;
 // PERFORMANCE.md).
 //
-// Session 6: skipping the entries that miss the tile, and with them shading per entry instead of
-// reading the winner's constants per row (5 gathers a row), fig3 -11%, floor_and_walls -10%,
-// its 4K render -9%, fig1_cube -1 to -5% (PERFORMANCE.md). Before, 57% of the (tile, entry)
-// pairs missed their tile, which made shading per entry a loss on fig1_cube.
+// Skipping the entries that miss the tile (57% of the (tile, entry) pairs otherwise), and with them
+// shading each entry's rows instead of reading the winner's constants per row (5 gathers a row):
+// fig3 -11%, floor_and_walls -10%, its 4K render -9%, fig1_cube -1 to -5% (PERFORMANCE.md).
 //
 // The 8 rows are spelled out by the FOR_ROWS macro instead of indexing per-lane arrays, which
 // lavapipe may keep in memory.
@@ -26,8 +25,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
-#include "shared.h"
-#include "raster.h"
+#include "large_triangles.h"
 #include "bindings.glsl"
 #include "resolve.glsl"
 
@@ -74,10 +72,10 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
   packedBits |= packed##r;
 
 // The second use of the packed colours (PACK_ROW): never true (every packed colour has alpha 255,
-// frame.loopProbe is small), and a no-op if it were; the compiler cannot know either, so the
+// control.loopProbe is small), and a no-op if it were; the compiler cannot know either, so the
 // packed values stay vectors.
 void keepVectors(uint packedBits) {
-  if (packedBits == frame.loopProbe) atomicOr(status.flags, 0u);
+  if (packedBits == control.loopProbe) atomicOr(status.flags, 0u);
 }
 
 // From entry e of a bin's list on, the first whose tiles include `tile` (a bit of LargeEntry.tiles),
@@ -173,9 +171,9 @@ void shadeOwnedBinTile(Bin b, uint t) {
 // with a branch: lavapipe would run both sides of the branch for every tile. A GPU rasterizes
 // every tile: on the H100, walking each bin's list up front (tileWork) and shading owned tiles,
 // with a branch per tile or these two loops, took resolve from 0.94 to 3.0-3.9 ms on
-// floor_and_walls at 4K (the walks are chains of dependent loads; PERFORMANCE.md, session 8).
+// floor_and_walls at 4K (the walks are chains of dependent loads; PERFORMANCE.md).
 void main() {
-  loadFrame();
+  loadUniforms();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
     Bin b = touchedBin(k);
     if (b.head == LIST_END) continue;  // resolve_small's

@@ -11,8 +11,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
-#include "shared.h"
-#include "raster.h"
+#include "gouraud.h"
 #include "bindings.glsl"
 #include "resolve.glsl"
 
@@ -29,7 +28,7 @@ void resolvePixelOf(uvec2 origin) {
 }
 
 void main() {
-  loadFrame();
+  loadUniforms();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
     Bin b = touchedBin(k);
     // The tiles small triangles wrote keys in, lowest first (none: only large triangles, resolve_large's).

@@ -8,11 +8,15 @@
 #version 460
 #extension GL_EXT_shader_atomic_int64 : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared.h"
 
 layout(local_size_x = 64) in;
 
-// Slots the invocations are spread over; specialized by the test to exercise SpecConstant.
-layout(constant_id = 0) const uint SLOT_COUNT = 4;
+// Slots the invocations are spread over; specialized by the test to exercise SpecConstant (the
+// id is shared.h's SPEC_SELFTEST_SLOTS).
+layout(constant_id = SPEC_SELFTEST_SLOTS) const uint SLOT_COUNT = 4;
 
 layout(push_constant) uniform Params {
   uint invocations;

@@ -3,8 +3,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
-#include "shared.h"
-#include "raster.h"
+#include "phong.h"
 #include "bindings.glsl"
 
 layout(local_size_x = SHADE_GROUP_SIZE) in;
@@ -20,10 +19,10 @@ void shadeVertex(uint i) {
   MaterialData m = materialData(object.material);
   // Only when the view or an object moved: a loop of 0 or 1 trips, the same for every lane (on
   // lavapipe no cheaper than an if: a loop body runs once, masked, even when no lane enters it).
-  [[dont_unroll]] for (uint k = frame.shadePositions; k != 0u; --k) {
+  [[dont_unroll]] for (uint k = control.shadePositions; k != 0u; --k) {
     shadedPositions[i] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
   }
-  if (frame.shadeColors == 0u) return;  // lighting inputs unchanged and view-independent
+  if (control.shadeColors == 0u) return;  // lighting inputs unchanged and view-independent
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);
   vec3 color = phongAmbient(m, frame.ambient);
@@ -34,9 +33,9 @@ void shadeVertex(uint i) {
 }
 
 void main() {
-  loadFrame();
-  // Grid-stride: the host caps the group count at frame.groupCap.
-  for (uint i = gl_GlobalInvocationID.x; i < frame.vertexCount; i += gl_NumWorkGroups.x * SHADE_GROUP_SIZE) {
+  loadUniforms();
+  // Grid-stride: the host caps the group count at control.groupCap.
+  for (uint i = gl_GlobalInvocationID.x; i < control.vertexCount; i += gl_NumWorkGroups.x * SHADE_GROUP_SIZE) {
     shadeVertex(i);
   }
   checkLoopBudget();

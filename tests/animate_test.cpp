@@ -1,10 +1,10 @@
-// Scene sequences without a GPU: the expression evaluator's values and messages, the "animate"
+// SceneSpec sequences without a GPU: the expression evaluator's values and messages, the "animate"
 // block's rules, applying a track, and a ka sweep rendered by the reference.
-#include "reference/animate.h"
-#include "reference/contact_sheet.h"
-#include "reference/expression.h"
+#include "scene/animate.h"
+#include "phongvk/contact_sheet.h"
+#include "scene/expression.h"
 #include "reference/render_reference.h"
-#include "reference/scene_data.h"
+#include "scene/scene_data.h"
 
 #include <gtest/gtest.h>
 
@@ -195,7 +195,7 @@ TEST(Animate, GeometryTracksAreThoseUnderObjectsButNotTheirMaterial) {
 
 TEST(Animate, ParseSceneGivesFrameZero) {
   const ordered_json scene = animated(oneTrack({{"path", "camera.fov"}, {"expression", "40 + 10*i"}}));
-  EXPECT_EQ(parseScene(scene.dump(), "a.json", ".").camera.fov, 40);
+  EXPECT_EQ(parseSceneSpec(scene.dump(), "a.json", ".").camera.fov, 40);
 }
 
 TEST(Animate, BlockErrors) {
@@ -269,9 +269,9 @@ TEST(Animate, EachFrameIsValidatedLikeASceneFile) {
   const ordered_json badType = oneTrack({{"path", "camera.fov"}, {"values", {60, "wide", 60}}});
   EXPECT_EQ(sceneError([&] { sequenceOf(animated(badType)).frame(1); }),
             "a.json: frame 1: camera.fov: must be a number, got string");
-  // parseScene checks frame 0 of an animated scene the same way.
+  // parseSceneSpec checks frame 0 of an animated scene the same way.
   const ordered_json badFirst = oneTrack({{"path", "camera.fov"}, {"values", {0, 60, 60}}});
-  EXPECT_EQ(sceneError([&] { parseScene(animated(badFirst).dump(), "a.json", "."); }),
+  EXPECT_EQ(sceneError([&] { parseSceneSpec(animated(badFirst).dump(), "a.json", "."); }),
             "a.json: frame 0: camera.fov: must be > 0 and < 180, got 0");
 }
 
@@ -300,7 +300,7 @@ TEST(Animate, KaSweepBrightnessIsStrictlyMonotone) {
   const SceneSequence sequence = SceneSequence::load(test::sourcePath("scenes/paper/fig4_ka_sweep.json"));
   double previous = -1;
   for (int i = 0; i < sequence.frameCount(); i += sequence.frameCount() / 10) {
-    const Scene scene = sequence.frame(i);
+    const SceneSpec scene = sequence.frame(i);
     const SceneData data = buildSceneData(scene);
     const View view = makeView(withImageSize(scene.camera, 96, 64));
     const double mean = meanBrightness(renderReference(data, makeFrame(data, view)).image);

@@ -2,8 +2,8 @@
 // or a NaN image. Complements scene_test.cpp (which covers the loader's basic cases): here are
 // the syntax corner cases, out-of-range values that used to reach the renderers as Inf/NaN,
 // broken OBJ files, unreadable and odd files, and the CLI's exit codes and output files.
-#include "reference/scene.h"
-#include "reference/scene_data.h"
+#include "scene/scene.h"
+#include "scene/scene_data.h"
 
 #include <gtest/gtest.h>
 
@@ -44,11 +44,11 @@ std::string sceneErrorOf(F&& call) {
 
 // The error for scene text whose relative files resolve against `dir`.
 std::string errorFor(const std::string& text, const std::string& dir = ".") {
-  return sceneErrorOf([&] { parseScene(text, "a.json", dir); });
+  return sceneErrorOf([&] { parseSceneSpec(text, "a.json", dir); });
 }
 
 std::string loadError(const std::string& path) {
-  return sceneErrorOf([&] { loadScene(path); });
+  return sceneErrorOf([&] { loadSceneSpec(path); });
 }
 
 // ---- JSON syntax ----
@@ -193,7 +193,7 @@ class BadMesh : public ::testing::Test {
     test::writeFile(dir_ + "/mesh.obj", obj);
     const std::string scene = sceneWith(R"("objects": [{"shape": "mesh", "file": "mesh.obj", "scale": )" +
                                         std::to_string(scale) + "}]");
-    return sceneErrorOf([&] { buildSceneData(parseScene(scene, "a.json", dir_)); });
+    return sceneErrorOf([&] { buildSceneData(parseSceneSpec(scene, "a.json", dir_)); });
   }
 
   // What every OBJ error starts with.

@@ -1,6 +1,6 @@
 // Camera (DESIGN.md "Camera"): image size from resolution, the basis, and where points land.
-#include "reference/camera.h"
-#include "reference/scene_data.h"
+#include "scene/camera.h"
+#include "scene/scene_data.h"
 #include "shaders/phong.h"
 
 #include <gtest/gtest.h>

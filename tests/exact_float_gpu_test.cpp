@@ -9,11 +9,11 @@
 #include "host/context.h"
 #include "host/float_probe.h"
 #include "host/gpu_renderer.h"
-#include "reference/camera.h"
-#include "reference/compare.h"
+#include "scene/camera.h"
+#include "phongvk/compare.h"
 #include "reference/render_reference.h"
-#include "reference/scene.h"
-#include "reference/scene_data.h"
+#include "scene/scene.h"
+#include "scene/scene_data.h"
 #include "shaders/exact_float.h"
 #include "test_util.h"
 
@@ -125,8 +125,8 @@ TEST(FloatProbe, CountsEveryDifferenceInItsOwnColumn) {
 // (a GPU with a fused fma), so the renderer can give the reference's bits.
 TEST(FloatProbe, DeviceIsExactOrCorrectable) {
   VulkanContext context = createContext({.deviceIndex = -1, .validate = true});
-  const FloatReport f = context.floats;
-  const std::string name = context.report.name;
+  const FloatReport f = probeFloatOps(context);
+  const std::string name = context.info.name;
   const size_t messages = context.validation->count();
   destroyContext(context);
   EXPECT_EQ(messages, 0u);
@@ -143,16 +143,12 @@ TEST(FloatProbe, DeviceIsExactOrCorrectable) {
 TEST(FloatProbe, ExactBuildsRenderOnAnyDevice) {
   VulkanContext context = createContext({.deviceIndex = -1, .validate = true});
   {
-    VulkanContext exact = context;  // the same device, told its division is off and correctable
-    exact.floats = FloatReport{};
-    exact.floats.probes = 1;
-    exact.floats.divideOff = 1;
-    ASSERT_TRUE(exact.floats.useExact());
-    const Scene scene = loadScene(test::sourcePath("scenes/paper/fig1_cube.json"));
+    const SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/paper/fig1_cube.json"));
     const SceneData data = buildSceneData(scene);
     const FrameInputs in = makeFrame(data, makeView(scene.camera));
     for (WorkLayout layout : {WorkLayout::Cpu, WorkLayout::Gpu}) {
-      GpuRenderer gpu(exact, data, layout);
+      // The same device, told its division is off and correctable.
+      GpuRenderer gpu(context, data, {.layout = layout, .exactFloats = true});
       const RenderOutput out = gpu.render(in, true);
       const RenderOutput ref = renderReference(data, in);
       const DiffStats stats = compareImages(ref.image, out.image, ref.keys, out.keys);

@@ -1,9 +1,9 @@
 // mesh_test.cpp — the facts every object mesh must satisfy (mesh.h, primitives.h, hull.h,
 // subdivide.h, obj_import.h, normals.h): counts, watertightness, winding, normals, errors.
-#include "reference/mesh.h"
-#include "reference/huge_pages.h"
-#include "reference/hull.h"
-#include "reference/normals.h"
+#include "scene/mesh.h"
+#include "scene/huge_pages.h"
+#include "scene/hull.h"
+#include "scene/normals.h"
 #include "tests/test_util.h"
 
 #include <gtest/gtest.h>

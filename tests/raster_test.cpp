@@ -1,7 +1,12 @@
 // Rasterization rules (DESIGN.md "Rasterization", "Visibility") through shaders/raster.h, the code
 // both renderers run.
 #include "reference/render_reference.h"
-#include "shaders/raster.h"
+#include "shaders/color_slots.h"
+#include "shaders/gouraud.h"
+#include "shaders/large_triangles.h"
+#include "shaders/row_spans.h"
+#include "shaders/small_triangles.h"
+#include "shaders/triangle_setup.h"
 
 #include <gtest/gtest.h>
 
@@ -270,9 +275,9 @@ TEST(Raster, RowSpansHoldExactlyTheCoveredPixels) {
   const FrameData f = frame();
   int rows = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    i64vec2 v[3];
-    for (auto& p : v) p = i64vec2(coord(rng), coord(rng));
-    if (trial % 3 == 0) v[2] = v[0] + (v[1] - v[0]) * int64_t(3) / int64_t(2) + i64vec2(1, 0);  // sliver
+    ivec2 v[3];
+    for (auto& p : v) p = ivec2(coord(rng), coord(rng));
+    if (trial % 3 == 0) v[2] = v[0] + (v[1] - v[0]) * 3 / 2 + ivec2(1, 0);  // sliver
     for (bool front : {false, true}) {
       EdgeSetup s;
       if (!setupEdges(v[0], v[1], v[2], front, f.width, f.height, s)) continue;
@@ -290,8 +295,8 @@ TEST(Raster, RowSpansHoldExactlyTheCoveredPixels) {
 
 
 TEST(Raster, ThirtyTwoBitCoverageOfSmallTrianglesEqualsTheSixtyFourBitOne) {
-  // The GPU's triangle pass rasterizes small triangles with 32-bit edges (EdgeSetup32); they must
-  // accept, orient, bound and cover exactly like the 64-bit setup the reference uses, at any
+  // The GPU's triangle pass rasterizes small triangles with 32-bit edges (setupSmallEdges); they
+  // must accept, orient, bound and cover exactly like the 64-bit setup the reference uses, at any
   // position on screen (the image here is large so triangles land far from the origin too).
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> where(-64 * 256, 4000 * 256);
@@ -305,15 +310,15 @@ TEST(Raster, ThirtyTwoBitCoverageOfSmallTrianglesEqualsTheSixtyFourBitOne) {
     if (!fitsSmallEdges(a, b, c)) continue;
     for (bool front : {false, true}) {
       EdgeSetup wide;
-      EdgeSetup32 narrow;
-      const bool wideOk = setupEdges(i64vec2(a), i64vec2(b), i64vec2(c), front, width, height, wide);
-      ASSERT_EQ(setupEdges32(a, b, c, front, width, height, narrow), wideOk) << "trial " << trial;
+      EdgeSetup narrow;
+      const bool wideOk = setupEdges(a, b, c, front, width, height, wide);
+      ASSERT_EQ(setupSmallEdges(a, b, c, front, width, height, narrow), wideOk) << "trial " << trial;
       if (!wideOk) continue;
       ASSERT_EQ(narrow.bbox, wide.bbox) << "trial " << trial;
       for (int y = wide.bbox.y; y <= wide.bbox.w; ++y, ++rows) {
         for (int x = wide.bbox.x; x <= wide.bbox.z; ++x) {
           covered += covers(wide, pixelCentre(x, y));
-          ASSERT_EQ(covers32(narrow, x, y), covers(wide, pixelCentre(x, y)))
+          ASSERT_EQ(coversSmall(narrow, x, y), covers(wide, pixelCentre(x, y)))
               << "trial " << trial << " pixel " << x << ", " << y;
         }
       }
@@ -329,8 +334,8 @@ TEST(Raster, ThirtyTwoBitCoverageOfSmallTrianglesEqualsTheSixtyFourBitOne) {
 bool randomBlockTriangle(std::mt19937& rng, int trial, EdgeSetup& s) {
   std::uniform_int_distribution<int> near(-200 * 256, 1200 * 256);
   std::uniform_int_distribution<int> far(-(1 << 27), 1 << 27);
-  i64vec2 v[3];
-  for (int k = 0; k < 3; ++k) v[k] = trial % 4 == k ? i64vec2(far(rng), far(rng)) : i64vec2(near(rng), near(rng));
+  ivec2 v[3];
+  for (int k = 0; k < 3; ++k) v[k] = trial % 4 == k ? ivec2(far(rng), far(rng)) : ivec2(near(rng), near(rng));
   return setupEdges(v[0], v[1], v[2], trial % 2 == 0, 1024, 1024, s);
 }
 
@@ -401,8 +406,9 @@ void expectBinTileMask(const EdgeSetup& s, ivec2 bin, int counts[4]) {
         const bool inImage = origin.x + i < 1024 && origin.y + j < 1024;
         ASSERT_FALSE(!inMask && inImage && covers(s, p)) << "bin " << bin.x << "," << bin.y << " tile " << tile;
         ASSERT_FALSE(owned && !covers(s, p)) << "bin " << bin.x << "," << bin.y << " tile " << tile;
-        counts[2] += edgeFunction(s.v1, s.v2, p) + s.bias0 == 0 || edgeFunction(s.v2, s.v0, p) + s.bias1 == 0 ||
-                     edgeFunction(s.v0, s.v1, p) + s.bias2 == 0;
+        const i64vec2 v0(s.v0), v1(s.v1), v2(s.v2);  // setupEdges' origin is (0, 0)
+        counts[2] += edgeFunction(v1, v2, p) + s.bias0 == 0 || edgeFunction(v2, v0, p) + s.bias1 == 0 ||
+                     edgeFunction(v0, v1, p) + s.bias2 == 0;
       }
     }
   }
@@ -447,10 +453,10 @@ TEST(Raster, BinTileMaskKeepsEveryTileWithACoveredPixel) {
       continue;
     }
     const ivec2 c(centre(rng), centre(rng));
-    i64vec2 v[3];
+    ivec2 v[3];
     for (auto& vertex : v) {
       const int fraction = trial % 4 == 1 ? 128 : subpixel(rng);  // on pixel centres, or anywhere
-      vertex = i64vec2((c.x + offset(rng)) * 256 + fraction, (c.y + offset(rng)) * 256 + fraction);
+      vertex = ivec2((c.x + offset(rng)) * 256 + fraction, (c.y + offset(rng)) * 256 + fraction);
     }
     if (!setupEdges(v[0], v[1], v[2], trial % 3 == 0, 1024, 1024, s)) continue;
     for (int by = s.bbox.y / int(BIN_SIZE); by <= s.bbox.w / int(BIN_SIZE); ++by) {

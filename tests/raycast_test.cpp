@@ -1,8 +1,8 @@
 // The analytic ground truth of the benchmark's error sweep: pixel values worked out by hand, the
 // silhouette's size from the tangent cone, and agreement with a finely tessellated render (which
 // would catch a flipped axis or a half-pixel shift the hand-checked centre cannot see).
-#include "reference/camera.h"
-#include "reference/compare.h"
+#include "scene/camera.h"
+#include "phongvk/compare.h"
 #include "reference/raycast.h"
 #include "reference/render_reference.h"
 
@@ -23,10 +23,10 @@ const char* HEAD_ON = R"({
                "material": {"ka": 0.1, "kd": 0.4, "ks": 0.2, "n": 10, "attenuation": [1, 0.25, 0], "color": [1, 0.5, 0]}}]
 })";
 
-Scene sceneFrom(const std::string& json) { return parseScene(json, "inline.json", "."); }
+SceneSpec sceneFrom(const std::string& json) { return parseSceneSpec(json, "inline.json", "."); }
 
 Image raycast(const std::string& json) {
-  const Scene scene = sceneFrom(json);
+  const SceneSpec scene = sceneFrom(json);
   return raycastSphere(scene, makeView(scene.camera));
 }
 
@@ -74,7 +74,7 @@ TEST(Raycast, SilhouetteRadiusFollowsTheTangentCone) {
 
 TEST(Raycast, EyeInsideTheSphereSeesOnlyBackground) {
   // The nearer hit is behind the eye; the far side faces away and closed objects are culled.
-  Scene scene = sceneFrom(HEAD_ON);
+  SceneSpec scene = sceneFrom(HEAD_ON);
   scene.camera.position = {0, 0, 0};
   const Image image = raycastSphere(scene, makeView(scene.camera));
   for (int y = 0; y < image.height; y += 20) {
@@ -87,7 +87,7 @@ TEST(Raycast, FineMeshConvergesToTheGroundTruth) {
   // shading on 20480 triangles is within 42 dB of the truth; the truth flipped upside down (a
   // wrong y axis) is at 28 dB, as highlight and terminator move. The largest difference is no
   // help: at the silhouette the inscribed mesh misses pixels the exact sphere covers.
-  Scene scene = sceneFrom(HEAD_ON);
+  SceneSpec scene = sceneFrom(HEAD_ON);
   scene.camera.fov = 30;
   scene.lights[0].position = {3, -4, 3};
   scene.objects[0].subdivide = 5;
@@ -100,7 +100,7 @@ TEST(Raycast, FineMeshConvergesToTheGroundTruth) {
 }
 
 TEST(Raycast, RejectsScenesThatAreNotOneSphere) {
-  Scene scene = sceneFrom(HEAD_ON);
+  SceneSpec scene = sceneFrom(HEAD_ON);
   scene.objects.push_back(scene.objects[0]);
   try {
     raycastSphere(scene, makeView(scene.camera));

@@ -2,9 +2,10 @@
 // and winning triangle identical at every pixel, max channel difference <= 1, >= 99.99% of
 // pixels bit-identical, the same bytes on every run, and no validation message.
 #include "host/context.h"
+#include "reference/render_reference.h"
 #include "host/gpu_renderer.h"
-#include "reference/camera.h"
-#include "reference/compare.h"
+#include "scene/camera.h"
+#include "phongvk/compare.h"
 #include "test_util.h"
 
 #include <gtest/gtest.h>
@@ -47,7 +48,7 @@ class SceneDiff : public ::testing::TestWithParam<std::string> {
 VulkanContext SceneDiff::context_;
 
 TEST_P(SceneDiff, GpuMatchesReference) {
-  const Scene scene = loadScene(test::sourcePath(GetParam()));
+  const SceneSpec scene = loadSceneSpec(test::sourcePath(GetParam()));
   const SceneData data = buildSceneData(scene);
   const FrameInputs in = makeFrame(data, makeView(scene.camera));
   const RenderOutput reference = renderReference(data, in);
@@ -62,7 +63,7 @@ TEST_P(SceneDiff, GpuMatchesReference) {
   // default must give the same bytes (a device without shared memory has only the colour buffer).
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const ColorOutput otherOutput = hasSharedMemory(context_) ? ColorOutput::ColorBuffer : ColorOutput::Auto;
-  gpu.emplace(context_, data, cpu ? WorkLayout::Gpu : WorkLayout::Cpu, otherOutput);
+  gpu.emplace(context_, data, GpuRendererOptions{.layout = cpu ? WorkLayout::Gpu : WorkLayout::Cpu, .output = otherOutput});
   const RenderOutput otherLayout = gpu->render(in, true);
   const RenderOutput otherLayoutPlain = gpu->render(in);
   gpu.reset();
@@ -144,7 +145,7 @@ void expectFrameMatchesReference(GpuRenderer& gpu, const SceneData& data, const 
 TEST(GpuRender, SequenceOfFramesSkipsViewIndependentLightingAndStillMatches) {
   // ks = 0 everywhere: moving the camera leaves the lighting bitwise unchanged, so the renderer
   // shades colours once and only transforms afterwards; every frame still equals the reference.
-  Scene scene = parseScene(R"({
+  SceneSpec scene = parseSceneSpec(R"({
     "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 160, "height": 120},
     "lights": [{"position": [1, -1, 2]}],
     "objects": [{"shape": "sphere", "radius": 0.6, "material": {"ks": 0}},
@@ -172,7 +173,7 @@ TEST(GpuRender, FramesThatOnlyChangeLightingKeepThePositionsAndStillMatch) {
   // The view stays: the shaded positions of the first frame serve the next two (one relit, one
   // unchanged, whose shade pass is skipped altogether); then the camera moves and they are
   // transformed again. Every frame equals the reference, keys included.
-  Scene scene = parseScene(R"({
+  SceneSpec scene = parseSceneSpec(R"({
     "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 160, "height": 120},
     "lights": [{"position": [1, -1, 2]}],
     "objects": [{"shape": "sphere", "radius": 0.6, "material": {"ks": 0.5}},
@@ -206,7 +207,7 @@ TEST(GpuRender, RelitFramesCompileNothingNew) {
   // to the process once the first frames are done (on any device: none should).
   const int before = test::executableMappings();
   if (before < 0) GTEST_SKIP() << "no /proc/self/maps";
-  Scene scene = loadScene(test::sourcePath("scenes/paper/fig1_cube.json"));
+  SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/paper/fig1_cube.json"));
   VulkanContext context = createContext({-1, false});
   {
     const SceneData data = buildSceneData(scene);
@@ -223,7 +224,7 @@ TEST(GpuRender, RelitFramesCompileNothingNew) {
 // colours, the host must reset every slot it read, or a pixel an object left keeps last frame's
 // colour. The cube slides across the view (a frame with keys in between switches output and back).
 TEST(GpuRender, FramesLeaveNoColourBehindInEitherOutput) {
-  Scene scene = parseScene(R"({
+  SceneSpec scene = parseSceneSpec(R"({
     "camera": {"position": [0, -3, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "width": 160, "height": 120},
     "lights": [{"position": [1, -2, 2]}],
     "objects": [{"shape": "cube", "size": 0.8, "material": {"color": [1, 0.5, 0.2]}},
@@ -234,7 +235,7 @@ TEST(GpuRender, FramesLeaveNoColourBehindInEitherOutput) {
   for (ColorOutput output : {ColorOutput::InKeySlots, ColorOutput::ColorBuffer}) {
     if (output == ColorOutput::InKeySlots && !hasSharedMemory(context)) continue;  // a discrete GPU has the other only
     SceneData data = buildSceneData(scene);
-    GpuRenderer gpu(context, data, WorkLayout::Auto, output);
+    GpuRenderer gpu(context, data, {.output = output});
     for (int i = 0; i < 5; ++i) {
       scene.camera.position = {-1.2 + 0.6 * i, -3, 0};  // the view slides, so every object moves on screen
       scene.camera.direction = {0, 1, 0};
@@ -251,14 +252,14 @@ TEST(GpuRender, FramesLeaveNoColourBehindInEitherOutput) {
 // runs out of loop iterations (65535 per invocation), which cut the frame short without a word.
 // The frame must be noticed and rendered again with more workgroups, and equal the reference.
 TEST(GpuRender, FrameOutOfLoopIterationsIsRenderedAgainWithMoreWorkgroups) {
-  Scene scene = loadScene(test::sourcePath("scenes/floor_and_walls.json"));
+  SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/floor_and_walls.json"));
   scene.camera.width = 3840;
   scene.camera.height = 2160;
   const SceneData data = buildSceneData(scene);
   const FrameInputs in = makeFrame(data, makeView(scene.camera));
   VulkanContext context = createContext({-1, true});
   {
-    GpuRenderer gpu(context, data, WorkLayout::Auto, ColorOutput::Auto, 1);
+    GpuRenderer gpu(context, data, {.firstGroupCap = 1});
     const RenderOutput out = gpu.render(in);
     EXPECT_EQ(out.image.rgb, renderReference(data, in).image.rgb);
     if (context.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
@@ -282,7 +283,7 @@ TEST(GpuRender, OverflowingTheLargeTriangleListStillMatchesEveryRun) {
                std::to_string(25 + i) + R"(, 0], "material": {"ks": 0, "color": [)" + std::to_string(0.02 * i) +
                ", 0.5, 0.5]}}";
   }
-  const Scene scene = parseScene(R"({"camera": {"position": [0, 0, 0], "direction": [0, 1, 0], "width": 640, "height": 480},
+  const SceneSpec scene = parseSceneSpec(R"({"camera": {"position": [0, 0, 0], "direction": [0, 1, 0], "width": 640, "height": 480},
                                      "lights": [{"position": [0, 1, 0]}], "objects": [)" +
                                      objects + "]}",
                                  "stack.json", ".");
@@ -311,7 +312,7 @@ TEST(GpuRender, OverflowingTheLargeTriangleListStillMatchesEveryRun) {
 }
 
 TEST(GpuRender, SpecularSceneReshadesWhenTheEyeMoves) {
-  Scene scene = parseScene(R"({
+  SceneSpec scene = parseSceneSpec(R"({
     "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 96, "height": 64},
     "lights": [{"position": [1, -1, 2]}],
     "objects": [{"shape": "sphere", "radius": 0.6, "material": {"ks": 0.8}}]

@@ -1,7 +1,8 @@
 // End to end on the reference: scene file -> PNG, with pixel values worked out by hand, and the
 // CLI's exit codes and messages.
-#include "reference/camera.h"
-#include "reference/image.h"
+#include "scene/camera.h"
+#include "image/packed_pixels.h"
+#include "phongvk/image.h"
 #include "reference/render_reference.h"
 #include "test_util.h"
 
@@ -29,7 +30,7 @@ const char* AMBIENT_CUBE = R"({
 })";
 
 RenderOutput renderText(const std::string& json) {
-  const Scene scene = parseScene(json, "inline.json", ".");
+  const SceneSpec scene = parseSceneSpec(json, "inline.json", ".");
   const SceneData data = buildSceneData(scene);
   return renderReference(data, makeFrame(data, makeView(scene.camera)));
 }

@@ -1,6 +1,6 @@
-// Scene loading: a full scene reads back with the right values and defaults, and every kind of bad
+// SceneSpec loading: a full scene reads back with the right values and defaults, and every kind of bad
 // input gets a message naming the file, the JSON path and what is wrong.
-#include "reference/scene.h"
+#include "scene/scene.h"
 
 #include <gtest/gtest.h>
 
@@ -39,9 +39,9 @@ const char* kMinimalScene =
 const char* kTetrahedronObj =
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
 
-Scene parse(const std::string& text) { return parseScene(text, "a.json", "."); }
+SceneSpec parse(const std::string& text) { return parseSceneSpec(text, "a.json", "."); }
 
-// The message parseScene throws for `text`, or "(no error)".
+// The message parseSceneSpec throws for `text`, or "(no error)".
 std::string errorFor(const std::string& text) {
   try {
     parse(text);
@@ -79,11 +79,11 @@ std::string materialError(const char* material) {
 
 // ---- valid scenes ----
 
-TEST(Scene, FullExampleLoadsWithItsValues) {
+TEST(SceneSpec, FullExampleLoadsWithItsValues) {
   std::string dir = test::makeTempDir();
   test::writeFile(dir + "/meshes/tiny.obj", kTetrahedronObj);
   test::writeFile(dir + "/scene.json", kFullScene);
-  Scene scene = loadScene(dir + "/scene.json");
+  SceneSpec scene = loadSceneSpec(dir + "/scene.json");
 
   EXPECT_EQ(scene.path, dir + "/scene.json");
   // look_at [0,0,0] from position P gives direction -P.
@@ -113,8 +113,8 @@ TEST(Scene, FullExampleLoadsWithItsValues) {
   EXPECT_TRUE(scene.objects[0].closed);
 }
 
-TEST(Scene, DefaultsFillEverythingLeftOut) {
-  Scene scene = parse(kMinimalScene);
+TEST(SceneSpec, DefaultsFillEverythingLeftOut) {
+  SceneSpec scene = parse(kMinimalScene);
   EXPECT_EQ(scene.path, "a.json");
   EXPECT_EQ(scene.camera.up, glm::dvec3(0, 0, 1));
   EXPECT_EQ(scene.camera.fov, 60);
@@ -140,8 +140,8 @@ TEST(Scene, DefaultsFillEverythingLeftOut) {
   EXPECT_EQ(scene.materials[0].n, 10.0f);
 }
 
-TEST(Scene, LightDefaults) {
-  Scene scene = parse(minimalWith([](ordered_json& s) {
+TEST(SceneSpec, LightDefaults) {
+  SceneSpec scene = parse(minimalWith([](ordered_json& s) {
                         s["lights"] = {{{"position", {1, 2, 3}}}};
                       }).dump());
   ASSERT_EQ(scene.lights.size(), 1u);
@@ -151,8 +151,8 @@ TEST(Scene, LightDefaults) {
 
 // Named materials keep file order (not sorted by name); inline ones follow, each its own entry;
 // all objects without a material share one default.
-TEST(Scene, MaterialIndicesNamedFirstThenInline) {
-  Scene scene = parse(R"({
+TEST(SceneSpec, MaterialIndicesNamedFirstThenInline) {
+  SceneSpec scene = parse(R"({
     "camera": {"position": [0, 0, 0], "direction": [1, 0, 0]},
     "materials": {"zeta": {"ks": 0.1}, "alpha": {"ks": 0.2}},
     "objects": [
@@ -174,8 +174,8 @@ TEST(Scene, MaterialIndicesNamedFirstThenInline) {
   EXPECT_EQ(scene.materials[4].ks, 0.4f);
 }
 
-TEST(Scene, WidthAndHeightSetTheAspect) {
-  Scene scene = parse(minimalWith([](ordered_json& s) {
+TEST(SceneSpec, WidthAndHeightSetTheAspect) {
+  SceneSpec scene = parse(minimalWith([](ordered_json& s) {
                         s["camera"]["width"] = 640;
                         s["camera"]["height"] = 480.0;  // integral, though written as a real
                       }).dump());
@@ -184,8 +184,8 @@ TEST(Scene, WidthAndHeightSetTheAspect) {
   EXPECT_DOUBLE_EQ(scene.camera.aspect, 640.0 / 480.0);
 }
 
-TEST(Scene, ClosedAndInterpolationCanBeChanged) {
-  Scene scene = parse(minimalWith([](ordered_json& s) {
+TEST(SceneSpec, ClosedAndInterpolationCanBeChanged) {
+  SceneSpec scene = parse(minimalWith([](ordered_json& s) {
                         s["objects"][0]["closed"] = false;
                         s["render"]["interpolation"] = "screen";
                       }).dump());
@@ -194,8 +194,8 @@ TEST(Scene, ClosedAndInterpolationCanBeChanged) {
 }
 
 // A negative linear term is fine while the quadratic has no positive root: 1 - d + d^2 > 0.
-TEST(Scene, AttenuationWithNegativeLinearTermAccepted) {
-  Scene scene = parse(minimalWith([](ordered_json& s) {
+TEST(SceneSpec, AttenuationWithNegativeLinearTermAccepted) {
+  SceneSpec scene = parse(minimalWith([](ordered_json& s) {
                         s["materials"]["m"]["attenuation"] = {1, -1, 1};
                       }).dump());
   EXPECT_EQ(scene.materials[0].attenuation, glm::vec3(1, -1, 1));
@@ -206,7 +206,7 @@ TEST(Scene, AttenuationWithNegativeLinearTermAccepted) {
 TEST(SceneErrors, MissingFile) {
   std::string path = test::makeTempDir() + "/none.json";
   try {
-    loadScene(path);
+    loadSceneSpec(path);
     FAIL() << "no error";
   } catch (const SceneError& error) {
     EXPECT_EQ(std::string(error.what()), path + ": cannot read file: No such file or directory");
@@ -495,7 +495,7 @@ TEST(SceneErrors, MissingMeshFile) {
   std::string scene = R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0]},
                           "objects": [{"shape": "mesh", "file": "meshes/x.obj"}]})";
   try {
-    parseScene(scene, "a.json", dir);
+    parseSceneSpec(scene, "a.json", dir);
     FAIL() << "no error";
   } catch (const SceneError& error) {
     EXPECT_EQ(std::string(error.what()),
@@ -504,7 +504,7 @@ TEST(SceneErrors, MissingMeshFile) {
   // A folder is not a mesh file either.
   test::writeFile(dir + "/meshes/x.obj/inside", "");
   try {
-    parseScene(scene, "a.json", dir);
+    parseSceneSpec(scene, "a.json", dir);
     FAIL() << "no error";
   } catch (const SceneError& error) {
     EXPECT_EQ(std::string(error.what()),

@@ -2,8 +2,7 @@
 // invisible in the images (--frames subsets are byte-identical to the full run) yet real (an
 // orbit without specular light shades once), and the CLI refuses bad --frames before writing.
 // Every GPU renderer runs with validation on and fails on any message.
-#include "host/sequence.h"
-#include "reference/compare.h"
+#include "phongvk/phongvk.h"
 
 #include <gtest/gtest.h>
 
@@ -34,51 +33,30 @@ std::vector<std::string> paperScenes() {
   return names;
 }
 
-// A GPU renderer with validation on; the destructor of the test checks nothing was reported,
-// after the device is gone (so leaks reported at vkDestroyDevice count too).
-class ValidatedGpu {
- public:
-  explicit ValidatedGpu(bool withKeys) : gpu_(std::make_unique<GpuFrameRenderer>(options(), withKeys)) {
-    log_ = gpu_->context().validation;
-  }
-  GpuFrameRenderer& operator*() { return *gpu_; }
-  GpuFrameRenderer* operator->() { return gpu_.get(); }
+// A GPU renderer with validation on; finish() checks it reported nothing.
+Renderer validatedGpu() { return Renderer(RendererOptions{.backend = Backend::Gpu, .device = -1, .validate = true}); }
 
-  // Destroys the renderer and its context, then checks the validation log.
-  void finish() {
-    gpu_.reset();
-    ASSERT_NE(log_, nullptr);
-    std::string text;
-    for (const std::string& message : log_->messages()) text += message + "\n";
-    EXPECT_EQ(log_->count(), 0u) << "validation messages:\n" << text;
-  }
+void expectNoValidationMessages(const Renderer& gpu) { EXPECT_EQ(gpu.stats().validationMessages, 0u); }
 
- private:
-  static ViewOptions options() {
-    ViewOptions o;
-    o.validate = true;
-    return o;
-  }
-  std::unique_ptr<GpuFrameRenderer> gpu_;
-  std::shared_ptr<ValidationLog> log_;
-};
+// Frames start, start + step, ... below end of `sequence`, at the tests' small size.
+std::vector<Scene> framesOf(const Sequence& sequence, int start, int end, int step) {
+  std::vector<Scene> frames;
+  for (int i = start; i < end; i += step) frames.push_back(sequence.frame(i).withImageSize(kWidth, kHeight));
+  return frames;
+}
 
 // Renders `frames` on both backends and checks every frame agrees: channels within 1 of 255 and
 // the same winning triangle at every pixel.
-void expectBackendsAgree(const SceneSequence& sequence, const std::vector<SequenceFrame>& frames,
-                         GpuFrameRenderer& gpu) {
-  std::vector<RenderOutput> reference;
-  ReferenceFrameRenderer cpu;
-  renderFrames(sequence, frames, cpu, [&](const SequenceFrame&, const RenderOutput& out) { reference.push_back(out); });
-  size_t k = 0;
-  renderFrames(sequence, frames, gpu, [&](const SequenceFrame& frame, const RenderOutput& out) {
-    const DiffStats stats = compareImages(reference[k].image, out.image, reference[k].keys, out.keys);
-    EXPECT_LE(stats.maxChannelDiff(), 1) << "frame " << frame.index << "\n" << formatDiff(stats);
+void expectBackendsAgree(const std::vector<Scene>& frames, Renderer& gpu) {
+  Renderer cpu(Backend::Cpu);
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const RenderOutput reference = cpu.renderWithKeys(frames[k]);
+    const RenderOutput out = gpu.renderWithKeys(frames[k]);
+    const DiffStats stats = compareImages(reference.image, out.image, reference.keys, out.keys);
+    EXPECT_LE(stats.maxChannelDiff(), 1) << "frame " << k << "\n" << formatDiff(stats);
     EXPECT_TRUE(stats.keysCompared);
-    EXPECT_EQ(stats.triangleMismatch, 0u) << "frame " << frame.index << "\n" << formatDiff(stats);
-    ++k;
-  });
-  EXPECT_EQ(k, frames.size());
+    EXPECT_EQ(stats.triangleMismatch, 0u) << "frame " << k << "\n" << formatDiff(stats);
+  }
 }
 
 class PaperScene : public ::testing::TestWithParam<std::string> {};
@@ -86,14 +64,12 @@ class PaperScene : public ::testing::TestWithParam<std::string> {};
 // About a dozen frames spread over each sequence (all of a short one) keep CI time low while
 // covering the whole sweep or orbit, and stepping exercises the reuse between frames.
 TEST_P(PaperScene, BothBackendsAgreeOnEveryFrameChecked) {
-  const SceneSequence sequence = SceneSequence::load(test::sourcePath("scenes/paper/" + GetParam() + ".json"));
+  const Sequence sequence = loadSequence(test::sourcePath("scenes/paper/" + GetParam() + ".json"));
   const int step = std::max(1, sequence.frameCount() / 12);
-  const std::vector<SequenceFrame> frames =
-      prepareFrames(sequence, {0, sequence.frameCount(), step}, kWidth, kHeight);
-  ValidatedGpu gpu(true);
-  expectBackendsAgree(sequence, frames, *gpu);
-  EXPECT_EQ(gpu->uploads(), 1);  // no paper scene animates geometry
-  gpu.finish();
+  Renderer gpu = validatedGpu();
+  expectBackendsAgree(framesOf(sequence, 0, sequence.frameCount(), step), gpu);
+  EXPECT_EQ(gpu.stats().sceneBuilds, 1u);  // no paper scene animates geometry
+  expectNoValidationMessages(gpu);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, PaperScene, ::testing::ValuesIn(paperScenes()),
@@ -105,12 +81,11 @@ TEST(SequenceReuse, OrbitWithoutSpecularShadesOnce) {
   std::ifstream file(test::sourcePath("scenes/paper/fig7_orbit_white_red.json"));
   ordered_json json = ordered_json::parse(file);
   for (auto& [name, material] : json["materials"].items()) material["ks"] = 0;
-  const SceneSequence sequence(json, "orbit_ks0.json", test::sourcePath("scenes/paper"));
-  const std::vector<SequenceFrame> frames = prepareFrames(sequence, {0, 120, 10}, kWidth, kHeight);
-  ValidatedGpu gpu(true);
-  expectBackendsAgree(sequence, frames, *gpu);
-  EXPECT_EQ(gpu->framesShaded(), 1u);
-  gpu.finish();
+  const Sequence sequence = parseSequence(json.dump(), "orbit_ks0.json", test::sourcePath("scenes/paper"));
+  Renderer gpu = validatedGpu();
+  expectBackendsAgree(framesOf(sequence, 0, 120, 10), gpu);
+  EXPECT_EQ(gpu.stats().framesShaded, 1u);
+  expectNoValidationMessages(gpu);
 }
 
 // A sequence whose geometry changes twice: the meshes are rebuilt exactly then, and the images
@@ -122,12 +97,11 @@ TEST(SequenceReuse, GeometryTrackRebuildsOnlyWhenItChanges) {
   json["animate"] = {{"frames", 5},
                      {"tracks", {{{"path", "objects[0].size"}, {"values", {1, 1, 0.6, 0.6, 0.8}}},
                                  {{"path", "objects[0].material"}, {"values", materials}}}}};
-  const SceneSequence sequence(json, "resize.json", ".");
-  const std::vector<SequenceFrame> frames = prepareFrames(sequence, {0, 5, 1}, kWidth, kHeight);
-  ValidatedGpu gpu(true);
-  expectBackendsAgree(sequence, frames, *gpu);
-  EXPECT_EQ(gpu->uploads(), 3);  // frames 0, 2 and 4
-  gpu.finish();
+  const Sequence sequence = parseSequence(json.dump(), "resize.json", test::sourcePath("scenes/paper"));
+  Renderer gpu = validatedGpu();
+  expectBackendsAgree(framesOf(sequence, 0, 5, 1), gpu);
+  EXPECT_EQ(gpu.stats().sceneBuilds, 3u);  // frames 0, 2 and 4
+  expectNoValidationMessages(gpu);
 }
 
 // ---- the CLI ----
@@ -174,7 +148,8 @@ TEST(SequenceCli, FrameSubsetsAreByteIdenticalToTheFullRun) {
     ASSERT_EQ(part.exitCode, 0) << range << "\n" << part.output;
   }
   for (int i = 0; i < 8; ++i) {
-    const std::string name = framePath("", i, 8);
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
     EXPECT_EQ(readBytes(dir + "/part/" + name), readBytes(dir + "/full/" + name)) << name;
   }
   EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/full"), fs::directory_iterator()), 8);

@@ -7,12 +7,18 @@
 // Each case prints one "stress:" line with its measured diff, for the record.
 #include "host/context.h"
 #include "host/gpu_renderer.h"
-#include "reference/camera.h"
-#include "reference/compare.h"
+#include "scene/camera.h"
+#include "phongvk/compare.h"
 #include "reference/render_reference.h"
-#include "reference/scene.h"
-#include "reference/scene_data.h"
-#include "shaders/raster.h"
+#include "scene/scene.h"
+#include "scene/scene_data.h"
+#include "shaders/color_slots.h"
+#include "shaders/gouraud.h"
+#include "shaders/phong.h"
+#include "shaders/large_triangles.h"
+#include "shaders/row_spans.h"
+#include "shaders/small_triangles.h"
+#include "shaders/triangle_setup.h"
 
 #include "stress_geometry.h"
 #include "test_util.h"
@@ -108,7 +114,7 @@ class StressTest : public ::testing::Test {
 
   // A scene file of scenes/stress/, optionally at another image size (as --width/--height).
   StressResult renderScene(const std::string& file, int width = 0, int height = 0) {
-    const Scene scene = loadScene(test::sourcePath("scenes/stress/" + file));
+    const SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/stress/" + file));
     const CameraSpec camera = width > 0 ? withImageSize(scene.camera, width, height) : scene.camera;
     SceneData data = buildSceneData(scene);
     const FrameInputs in = makeFrame(data, makeView(camera));
@@ -206,7 +212,7 @@ TEST_F(StressTest, SliversAndZeroAreaTriangles) {
 // Triangles the importer would drop, handed to the renderers directly: repeated indices, a
 // repeated position, collinear points. The raster's own zero-area test must skip them.
 TEST_F(StressTest, ZeroAreaTrianglesGivenDirectlySkippedByTheRaster) {
-  const Scene scene = loadScene(test::sourcePath("scenes/stress/one_pixel.json"));
+  const SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/stress/one_pixel.json"));
   SceneData data = buildSceneData(scene);
   const uint32_t base = uint32_t(data.vertices.size());
   const glm::vec3 n(-1, 0, 0);
@@ -271,7 +277,7 @@ SceneData gridSceneData(SceneData base, const View& view, const test::TiledSquar
 // amounts: both backends must cover every pixel and pick the same triangle everywhere. (That each
 // pixel is covered exactly once is counted in coverage_test.cpp, with the same raster.h code.)
 TEST_F(StressTest, SharedEdgesAtManySubpixelOffsets) {
-  const Scene scene = loadScene(test::sourcePath("scenes/stress/one_pixel.json"));
+  const SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/stress/one_pixel.json"));
   const View view = makeView(withImageSize(scene.camera, 64, 48));
   const SceneData base = buildSceneData(scene);
   const test::TiledSquare grid = test::jitteredGrid(24, 0.15f, 7);
@@ -372,7 +378,7 @@ TEST_F(StressTest, ImageLargerThanTheDeviceHoldsIsAClearError) {
     GTEST_SKIP() << "this device's maxStorageBufferRange (" << range << ") holds keys past " << side << "x" << side
                  << "; the case needs a smaller limit, such as lavapipe's 128 MiB";
   }
-  const Scene scene = loadScene(test::sourcePath("scenes/stress/one_pixel.json"));
+  const SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/stress/one_pixel.json"));
   const SceneData data = buildSceneData(scene);
   GpuRenderer renderer(context_, data);
   const FrameInputs tooLarge = makeFrame(data, makeView(withImageSize(scene.camera, side, side + 1)));
@@ -381,7 +387,7 @@ TEST_F(StressTest, ImageLargerThanTheDeviceHoldsIsAClearError) {
     FAIL() << "no error for a " << side << "x" << side + 1 << " image";
   } catch (const std::runtime_error& e) {
     const std::string bytes = std::to_string(VkDeviceSize(side) * (side + 1) * sizeof(uint64_t));
-    EXPECT_EQ(std::string(e.what()), "scene too large for " + context_.report.name +
+    EXPECT_EQ(std::string(e.what()), "scene too large for " + context_.info.name +
                                          ": the per-pixel depth keys need " + bytes +
                                          " bytes, more than maxStorageBufferRange (" + std::to_string(range) + ")");
   }
@@ -452,15 +458,15 @@ std::string uploadError(const VulkanContext& context, const SceneData& data) {
   return "(no error)";
 }
 
-// Scene arrays past a device limit: a clear error naming the array, the amount and the limit,
+// SceneSpec arrays past a device limit: a clear error naming the array, the amount and the limit,
 // thrown before anything is allocated. The limits are lowered on a copy of the context, so a small
 // scene reaches each of them (CliLimit.MoreVerticesThanTheDeviceHolds meets the real one).
 TEST_F(StressTest, MoreGeometryThanTheDeviceHoldsIsAClearError) {
-  SceneData data = buildSceneData(loadScene(test::sourcePath("scenes/stress/one_pixel.json")));
+  SceneData data = buildSceneData(loadSceneSpec(test::sourcePath("scenes/stress/one_pixel.json")));
   const uint64_t vertices = data.vertices.size();
   data.triangles.resize(4 * vertices + 1, data.triangles[0]);  // more than the vertices need, in both units
   const uint64_t triangles = data.triangles.size();
-  const std::string prefix = "scene too large for " + context_.report.name + ": ";
+  const std::string prefix = "scene too large for " + context_.info.name + ": ";
   auto limited = [&](uint32_t texels, uint32_t bytes) {
     VulkanContext context = context_;
     context.properties.limits.maxTexelBufferElements = texels;

@@ -1,7 +1,7 @@
 // test_util.h — small helpers shared by the test suites.
 #pragma once
 
-#include "reference/scene_data.h"
+#include "scene/scene_data.h"
 
 #include <functional>
 #include <string>

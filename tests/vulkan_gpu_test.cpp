@@ -1,6 +1,6 @@
 // vulkan_gpu_test.cpp — the Vulkan foundation: context, device choice, buffers, pipelines,
 // 64-bit atomics, timestamps. Every test runs with validation on and fails on any message.
-#include "host/commands.h"
+#include "host/submit.h"
 #include "host/context.h"
 #include "host/pipelines.h"
 #include "host/resources.h"
@@ -71,9 +71,9 @@ TEST(VkCheck, MessageNamesFileLineCallAndResult) {
 }
 
 TEST_F(VulkanTest, ContextHasASuitableDeviceWithComputeQueue) {
-  EXPECT_TRUE(context.report.suitable);
-  EXPECT_TRUE(context.report.missing.empty());
-  EXPECT_FALSE(context.report.name.empty());
+  EXPECT_TRUE(context.info.suitable);
+  EXPECT_TRUE(context.info.missing.empty());
+  EXPECT_FALSE(context.info.name.empty());
   EXPECT_NE(context.device, VK_NULL_HANDLE);
   EXPECT_NE(context.queue, VK_NULL_HANDLE);
   EXPECT_NE(context.commandPool, VK_NULL_HANDLE);
@@ -82,11 +82,11 @@ TEST_F(VulkanTest, ContextHasASuitableDeviceWithComputeQueue) {
 }
 
 TEST_F(VulkanTest, ListDevicesMarksTheChosenDeviceUsable) {
-  std::vector<DeviceReport> devices = listDevices();  // a second instance while the context lives
-  ASSERT_LT(context.report.index, devices.size());
-  const DeviceReport& chosen = devices[context.report.index];
+  std::vector<DeviceInfo> devices = listDevices();  // a second instance while the context lives
+  ASSERT_LT(context.info.index, devices.size());
+  const DeviceInfo& chosen = devices[context.info.index];
   EXPECT_TRUE(chosen.suitable);
-  EXPECT_EQ(chosen.name, context.report.name);
+  EXPECT_EQ(chosen.name, context.info.name);
 
   std::string text = formatDeviceList(devices);
   std::string line = "[" + std::to_string(chosen.index) + "] " + chosen.name + " \u2014 " + chosen.type + ", Vulkan " +
@@ -105,31 +105,31 @@ TEST_F(VulkanTest, OutOfRangeDeviceIndexIsNamedInTheError) {
 }
 
 TEST(DeviceList, FormatSaysWhyADeviceIsRejected) {
-  DeviceReport report{3, "Old GPU", "discrete GPU", "1.1.0", false, {"Vulkan 1.2", "shaderBufferInt64Atomics"}};
+  DeviceInfo report{3, "Old GPU", "discrete GPU", "1.1.0", false, {"Vulkan 1.2", "shaderBufferInt64Atomics"}};
   EXPECT_EQ(formatDeviceList({report}),
             "[3] Old GPU \u2014 discrete GPU, Vulkan 1.1.0 \u2014 rejected: missing Vulkan 1.2, "
             "shaderBufferInt64Atomics\n");
 }
 
-DeviceReport fakeDevice(uint32_t index, std::string type, std::vector<std::string> missing) {
+DeviceInfo fakeDevice(uint32_t index, std::string type, std::vector<std::string> missing) {
   return {index, "Device" + std::to_string(index), std::move(type), "1.3.0", missing.empty(), std::move(missing)};
 }
 
 TEST(ChooseDevice, PrefersADiscreteGpuOverAnEarlierCpu) {
-  std::vector<DeviceReport> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "integrated GPU", {}),
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "integrated GPU", {}),
                                        fakeDevice(2, "discrete GPU", {}), fakeDevice(3, "discrete GPU", {})};
   EXPECT_EQ(chooseDevice(devices, -1), 2u);  // the first of equal rank
   EXPECT_EQ(chooseDevice(devices, 0), 0u);   // an explicit index wins over rank
 }
 
 TEST(ChooseDevice, SkipsUnsuitableDevicesWhateverTheirRank) {
-  std::vector<DeviceReport> devices = {fakeDevice(0, "discrete GPU", {"shaderBufferInt64Atomics"}),
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "discrete GPU", {"shaderBufferInt64Atomics"}),
                                        fakeDevice(1, "CPU", {})};
   EXPECT_EQ(chooseDevice(devices, -1), 1u);
 }
 
 TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
-  std::vector<DeviceReport> devices = {fakeDevice(0, "CPU", {"shaderBufferInt64Atomics"}),
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {"shaderBufferInt64Atomics"}),
                                        fakeDevice(1, "discrete GPU", {"Vulkan 1.2", "a compute queue"})};
   EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, -1); }),
             "no usable Vulkan device (phongvk needs Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, "
@@ -138,7 +138,7 @@ TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
 }
 
 TEST(ChooseDevice, RequestedUnsuitableDeviceSaysWhatItLacks) {
-  std::vector<DeviceReport> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "discrete GPU", {"shaderInt64"})};
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "discrete GPU", {"shaderInt64"})};
   EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, 1); }),
             "Vulkan device 1 (Device1) is not usable: missing shaderInt64");
 }
@@ -245,7 +245,7 @@ TEST_F(VulkanTest, Atomic64MinIsExactIncludingTiesAndTheTopBit) {
   EXPECT_TRUE(std::any_of(expected.begin(), expected.end(), notFirstOfSlot));
 
   const Binding bindings[] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-  const SpecConstant specs[] = {{0, kSlots}};
+  const SpecConstant specs[] = {{gpu::SPEC_SELFTEST_SLOTS, kSlots}};
   ComputePipeline pipeline = createComputePipeline(context, spirv_selftest_atomic64, sizeof(spirv_selftest_atomic64),
                                                    bindings, sizeof(uint32_t), specs);
   Buffer keys;

@@ -1,0 +1,133 @@
+// backends.cpp — the public Renderer's three backends: the reference, the Vulkan compute port
+// (with the device's float probe, run once per renderer) and the graphics-pipeline baseline.
+#include "api/renderer_impl.h"
+
+#include "api/timing.h"
+
+#include "host/context.h"
+#include "host/float_probe.h"
+#include "host/gpu_renderer.h"
+#include "host/graphics_renderer.h"
+#include "reference/render_reference.h"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace phongvk {
+namespace {
+
+constexpr double NOT_MEASURED = std::numeric_limits<double>::quiet_NaN();
+
+// The reference; its "device" is this CPU thread, so a frame's device time is its compute time.
+class CpuBackend : public Renderer::Impl {
+ public:
+  FrameTime lastFrameTime() const override { return {0, lastMs_, NOT_MEASURED, NOT_MEASURED, NOT_MEASURED}; }
+  Backend backend() const override { return Backend::Cpu; }
+  std::string deviceName() const override { return "cpu (reference)"; }
+
+ protected:
+  void upload(const SceneData&) override {}
+  RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys) override {
+    ++frames_;
+    const auto start = Clock::now();
+    RenderOutput out = renderReference(data, in);
+    lastMs_ = msSince(start);
+    if (!withKeys) out.keys.clear();
+    return out;
+  }
+  uint64_t framesShaded() const override { return frames_; }
+
+ private:
+  uint64_t frames_ = 0;
+  double lastMs_ = NOT_MEASURED;
+};
+
+// A Vulkan context for the backends that need one. The derived backend's renderer (a member) is
+// destroyed before this destructor runs, so nothing outlives the context it was made on.
+class VulkanBackend : public Renderer::Impl {
+ public:
+  explicit VulkanBackend(const RendererOptions& options) : context_(createContext({options.device, options.validate})) {}
+  ~VulkanBackend() override { destroyContext(context_); }
+  std::string deviceName() const override { return context_.info.name; }
+
+ protected:
+  uint64_t validationMessages() const override { return context_.validation ? context_.validation->count() : 0; }
+  VulkanContext context_;
+};
+
+class GpuBackend : public VulkanBackend {
+ public:
+  // The device's division and square root decide which builds of the passes it runs.
+  explicit GpuBackend(const RendererOptions& options)
+      : VulkanBackend(options), exactFloats_(probeFloatOps(context_).useExact()) {}
+
+  FrameTime lastFrameTime() const override {
+    const PassTimes& t = renderer_->lastPassTimes();
+    return {0, t.total, t.shade, t.raster, t.resolve};
+  }
+  Backend backend() const override { return Backend::Gpu; }
+
+ protected:
+  void upload(const SceneData& data) override {
+    if (renderer_) {
+      shadedByEarlier_ += renderer_->framesShaded();
+      repeatedByEarlier_ += renderer_->framesRepeated();
+    }
+    renderer_.reset();  // the old buffers go before the new ones are allocated
+    GpuRendererOptions options;
+    options.exactFloats = exactFloats_;
+    renderer_.emplace(context_, data, options);
+  }
+  RenderOutput draw(const SceneData&, const FrameInputs& in, bool withKeys) override {
+    return renderer_->render(in, withKeys);
+  }
+  uint64_t framesShaded() const override { return shadedByEarlier_ + (renderer_ ? renderer_->framesShaded() : 0); }
+  uint64_t framesRepeated() const override {
+    return repeatedByEarlier_ + (renderer_ ? renderer_->framesRepeated() : 0);
+  }
+
+ private:
+  bool exactFloats_ = false;
+  std::optional<GpuRenderer> renderer_;
+  uint64_t shadedByEarlier_ = 0;  // by renderers replaced after a geometry change
+  uint64_t repeatedByEarlier_ = 0;
+};
+
+class GraphicsBackend : public VulkanBackend {
+ public:
+  using VulkanBackend::VulkanBackend;
+
+  FrameTime lastFrameTime() const override {
+    return {0, renderer_->lastDeviceMs(), NOT_MEASURED, NOT_MEASURED, NOT_MEASURED};
+  }
+  Backend backend() const override { return Backend::Graphics; }
+
+ protected:
+  void upload(const SceneData& data) override {
+    renderer_.reset();
+    renderer_.emplace(context_, data);
+  }
+  RenderOutput draw(const SceneData&, const FrameInputs& in, bool) override {
+    ++frames_;
+    return renderer_->render(in);
+  }
+  uint64_t framesShaded() const override { return frames_; }
+
+ private:
+  std::optional<GraphicsRenderer> renderer_;
+  uint64_t frames_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Renderer::Impl> makeBackend(const RendererOptions& options) {
+  switch (options.backend) {
+    case Backend::Cpu: return std::make_unique<CpuBackend>();
+    case Backend::Graphics: return std::make_unique<GraphicsBackend>(options);
+    case Backend::Gpu: break;
+  }
+  return std::make_unique<GpuBackend>(options);
+}
+
+}  // namespace phongvk

@@ -1,0 +1,108 @@
+// renderer.cpp — the public Renderer: one backend behind it, the built scene kept across calls.
+#include "api/renderer_impl.h"
+
+#include "api/timing.h"
+#include "scene/camera.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace phongvk {
+
+void Renderer::Impl::prepare(const Scene& scene) {
+  const SceneSpec& spec = scene.spec();
+  if (data_ && sameGeometry(*builtFrom_, spec)) {
+    const size_t materials = data_->materials.size(), lights = data_->lights.size();
+    refreshShading(*data_, spec);
+    // A backend's buffers are sized for the counts it was built with.
+    if (data_->materials.size() == materials && data_->lights.size() == lights) return;
+  }
+  const auto start = Clock::now();
+  data_.reset();  // the old meshes go before the new ones are built
+  data_ = buildSceneData(spec);
+  buildMs_ += msSince(start);
+  upload(*data_);
+  builtFrom_ = std::make_shared<const SceneSpec>(spec);
+  ++sceneBuilds_;
+}
+
+RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys) {
+  prepare(scene);
+  RenderOutput out = draw(*data_, makeFrame(*data_, makeView(scene.spec().camera)), withKeys);
+  ++framesRendered_;
+  return out;
+}
+
+RendererStats Renderer::Impl::stats() const {
+  RendererStats s;
+  s.sceneBuilds = sceneBuilds_;
+  s.framesRendered = framesRendered_;
+  s.framesShaded = framesShaded();
+  s.framesRepeated = framesRepeated();
+  s.triangles = data_ ? data_->triangles.size() : 0;
+  s.buildMs = buildMs_;
+  s.validationMessages = validationMessages();
+  return s;
+}
+
+Renderer::Renderer(Backend backend, int device) : Renderer(RendererOptions{backend, device, false}) {}
+Renderer::Renderer(const RendererOptions& options) : impl_(makeBackend(options)) {}
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+Image Renderer::render(const Scene& scene) { return impl_->render(scene, false).image; }
+
+RenderOutput Renderer::renderWithKeys(const Scene& scene) {
+  if (impl_->backend() == Backend::Graphics) {
+    throw std::invalid_argument("the graphics backend has no visibility keys; use the gpu or cpu backend");
+  }
+  return impl_->render(scene, true);
+}
+
+std::vector<FrameTime> Renderer::timeFrames(const Scene& scene, int repeat) {
+  std::vector<FrameTime> frames;
+  const FrameTimes times = phongvk::timeFrames(repeat, [&] {
+    impl_->render(scene, false);
+    frames.push_back(impl_->lastFrameTime());
+    return frames.back().deviceMs;
+  });
+  frames.erase(frames.begin());  // the warm-up
+  for (size_t i = 0; i < frames.size(); ++i) frames[i].wallMs = times.wallMs[i];
+  return frames;
+}
+
+Backend Renderer::backend() const { return impl_->backend(); }
+std::string Renderer::deviceName() const { return impl_->deviceName(); }
+RendererStats Renderer::stats() const { return impl_->stats(); }
+
+const char* backendName(Backend backend) {
+  switch (backend) {
+    case Backend::Gpu: return "gpu";
+    case Backend::Cpu: return "cpu";
+    case Backend::Graphics: return "graphics";
+  }
+  return "gpu";
+}
+
+Backend parseBackend(const std::string& name) {
+  if (name == "gpu") return Backend::Gpu;
+  if (name == "cpu") return Backend::Cpu;
+  if (name == "graphics" || name == "raster") return Backend::Graphics;
+  throw std::invalid_argument("unknown backend '" + name + "' (gpu, cpu or graphics)");
+}
+
+DiffResult diff(const Scene& scene, const RendererOptions& gpuOptions) {
+  DiffResult result;
+  result.reference = Renderer(Backend::Cpu).renderWithKeys(scene);
+  RendererOptions options = gpuOptions;
+  options.backend = Backend::Gpu;
+  Renderer gpu(options);
+  result.gpu = gpu.renderWithKeys(scene);
+  result.deviceName = gpu.deviceName();
+  result.stats = compareImages(result.reference.image, result.gpu.image, result.reference.keys, result.gpu.keys);
+  return result;
+}
+
+}  // namespace phongvk

@@ -1,0 +1,52 @@
+// renderer_impl.h — what every backend of the public Renderer shares: the scene it built and
+// uploaded last, reused while the geometry stays the same (scene_data.h sameGeometry), and the
+// statistics. A backend says how it uploads built meshes and renders one frame.
+#pragma once
+
+#include "phongvk/phongvk.h"
+#include "scene/scene_data.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace phongvk {
+
+class Renderer::Impl {
+ public:
+  virtual ~Impl() = default;
+
+  // One frame of `scene`: builds and uploads its meshes unless the last scene had the same
+  // geometry (and as many materials and lights), then renders.
+  RenderOutput render(const Scene& scene, bool withKeys);
+  // The last frame's device times (NaN where not measured); wallMs is left to the caller.
+  virtual FrameTime lastFrameTime() const = 0;
+  virtual Backend backend() const = 0;
+  virtual std::string deviceName() const = 0;
+  RendererStats stats() const;
+
+ protected:
+  // New meshes (or new material or light counts): replace whatever was uploaded.
+  virtual void upload(const SceneData& data) = 0;
+  virtual RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys) = 0;
+  // Frames whose lighting the backend computed, and frames it rendered again (gpu).
+  virtual uint64_t framesShaded() const = 0;
+  virtual uint64_t framesRepeated() const { return 0; }
+  virtual uint64_t validationMessages() const { return 0; }
+
+ private:
+  // Makes data_ hold `scene`'s meshes and shading, building and uploading them unless the last
+  // scene's can serve.
+  void prepare(const Scene& scene);
+
+  std::optional<SceneData> data_;
+  std::shared_ptr<const SceneSpec> builtFrom_;  // the scene data_'s meshes were built from
+  uint64_t sceneBuilds_ = 0;
+  uint64_t framesRendered_ = 0;
+  double buildMs_ = 0;
+};
+
+// The backends (backends.cpp).
+std::unique_ptr<Renderer::Impl> makeBackend(const RendererOptions& options);
+
+}  // namespace phongvk

@@ -1,0 +1,45 @@
+#include "cli/cli_support.h"
+
+#include <cstdio>
+
+namespace phongvk::cli {
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+namespace {
+
+int report(const std::exception& error, int exitCode) {
+  std::fprintf(stderr, "error: %s\n", error.what());
+  return exitCode;
+}
+
+}  // namespace
+
+int guarded(const std::function<int()>& command) {
+  try {
+    return command();
+  } catch (const SceneError& e) {
+    return report(e, EXIT_BAD_INPUT);
+  } catch (const OutputError& e) {
+    return report(e, EXIT_BAD_INPUT);
+  } catch (const UsageError& e) {
+    return report(e, EXIT_BAD_INPUT);
+  } catch (const NoDeviceError& e) {
+    return report(e, EXIT_NO_DEVICE);
+  } catch (const std::exception& e) {
+    return report(e, EXIT_FAILURE_OTHER);
+  }
+}
+
+Scene sizedAsAsked(const Scene& scene, const ViewOptions& options) {
+  if (options.width <= 0 && options.height <= 0) return scene;
+  return scene.withImageSize(options.width, options.height);
+}
+
+RendererOptions rendererOptions(const ViewOptions& options, const std::string& backend) {
+  return {parseBackend(backend), options.device, options.validate};
+}
+
+}  // namespace phongvk::cli

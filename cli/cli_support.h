@@ -1,0 +1,35 @@
+// cli_support.h — what the phongvk subcommands share: failures mapped to exit codes, output
+// checks before any work, loading the scene the options name, and timing.
+#pragma once
+
+#include "cli/commands.h"
+#include "phongvk/phongvk.h"
+
+#include <chrono>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace phongvk::cli {
+
+// A command-line value that is well formed for the parser but wrong for this input, e.g.
+// --frames 0:200 for a sequence of 120 frames. Exits with EXIT_BAD_INPUT.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start);
+
+// Runs a command, turning each kind of failure into its message on stderr and its exit code.
+int guarded(const std::function<int()>& command);
+
+// `scene` at the size the options ask for (--width/--height), or its own.
+Scene sizedAsAsked(const Scene& scene, const ViewOptions& options);
+
+// The renderer the options ask for: `backend` on options.device, validating if asked.
+RendererOptions rendererOptions(const ViewOptions& options, const std::string& backend);
+
+}  // namespace phongvk::cli

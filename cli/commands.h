@@ -1,0 +1,50 @@
+// commands.h — the phongvk subcommands; main.cpp parses the arguments and calls these. Each runs
+// on the public API (include/phongvk) only.
+#pragma once
+
+#include <string>
+
+namespace phongvk::cli {
+
+// Exit codes, documented in the README.
+enum ExitCode : int {
+  EXIT_OK = 0,
+  EXIT_DIFF_ABOVE_TOLERANCE = 1,
+  EXIT_BAD_INPUT = 2,   // scene errors, bad options, unwritable output
+  EXIT_NO_DEVICE = 3,   // no usable Vulkan device
+  EXIT_FAILURE_OTHER = 4,
+};
+
+struct ViewOptions {
+  std::string scene;
+  int width = 0;        // with height: overrides the scene camera's image size
+  int height = 0;
+  int device = -1;      // Vulkan device index, -1 = best
+  bool validate = false;
+};
+
+struct RenderOptions : ViewOptions {
+  std::string output;
+  std::string backend = "gpu";  // gpu (compute) | cpu (reference) | graphics (graphics pipeline; also "raster")
+  int repeat = 0;               // > 0: time this many frames after a warm-up
+};
+
+struct DiffOptions : ViewOptions {
+  std::string heatmap;          // optional PNG
+  double tolerance = 1;         // max allowed channel difference, in 8-bit units
+};
+
+struct SequenceOptions : ViewOptions {
+  std::string outputDir;
+  std::string frames = ":";  // START:END[:STEP], half-open like a Python slice; ":" is every frame
+  std::string sheet;         // contact sheet PNG, optional
+  int thumbnailWidth = 160;  // on the sheet; frames are box-filtered down to it, never enlarged
+  std::string backend = "gpu";
+};
+
+int runRender(const RenderOptions& options);     // render.cpp
+int runDiff(const DiffOptions& options);         // diff.cpp
+int runSequence(const SequenceOptions& options); // sequence.cpp
+int runDevices();                                // devices.cpp
+
+}  // namespace phongvk::cli

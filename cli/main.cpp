@@ -1,0 +1,99 @@
+// phongvk — headless Phong/Gouraud renderer. main parses arguments and calls cli/commands.h.
+#include "cli/commands.h"
+#include "phongvk/phongvk.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <string>
+
+namespace {
+
+using namespace phongvk::cli;
+
+void addViewOptions(CLI::App* command, ViewOptions& options) {
+  command->add_option("scene", options.scene, "Scene file (JSON)")->required();
+  auto* width = command->add_option("--width", options.width, "Image width in pixels (with --height)")
+                    ->check(CLI::Range(1, 16384));
+  auto* height = command->add_option("--height", options.height, "Image height in pixels (with --width)")
+                     ->check(CLI::Range(1, 16384));
+  width->needs(height);
+  height->needs(width);
+  command->add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")
+      ->check(CLI::NonNegativeNumber);
+  command->add_flag("--validate", options.validate, "Enable the Vulkan validation layers");
+}
+
+// `render` also offers the graphics-pipeline baseline ("graphics", or by its older name
+// "raster"); sequences use the other two.
+void addBackendOption(CLI::App* command, std::string& backend, bool withGraphics = false) {
+  std::vector<std::string> choices = {"gpu", "cpu"};
+  std::string help = "gpu (Vulkan compute, default) or cpu (the reference)";
+  if (withGraphics) {
+    choices.insert(choices.end(), {"graphics", "raster"});
+    help = "gpu (Vulkan compute, default), cpu (the reference) or graphics (Vulkan graphics pipeline; also 'raster')";
+  }
+  command->add_option("--backend", backend, help)->check(CLI::IsMember(choices));
+}
+
+// CLI11 reports an unknown first word as a missing subcommand; name it and the commands instead.
+int rejectUnknownCommand(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return 0;
+  std::string known;
+  for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+    if (command->get_name() == argv[1]) return 0;
+    known += (known.empty() ? "" : ", ") + command->get_name();
+  }
+  std::fprintf(stderr, "error: unknown command '%s' (commands: %s; see phongvk --help)\n", argv[1], known.c_str());
+  return EXIT_BAD_INPUT;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"phongvk: Phong illumination per vertex, Gouraud interpolation, on Vulkan compute or the CPU reference"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("phongvk ") + phongvk::version() + " (" + phongvk::revision() + ")");
+
+  RenderOptions render;
+  CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to PNG");
+  addViewOptions(renderCmd, render);
+  renderCmd->add_option("-o,--output", render.output, "Output PNG")->required();
+  addBackendOption(renderCmd, render.backend, true);
+  renderCmd->add_option("--repeat", render.repeat, "Time N frames after a warm-up and print the median")
+      ->check(CLI::Range(1, 100000));
+
+  DiffOptions diff;
+  CLI::App* diffCmd = app.add_subcommand("diff", "Render with both backends and compare pixel by pixel");
+  addViewOptions(diffCmd, diff);
+  diffCmd->add_option("--heatmap", diff.heatmap, "Write a PNG showing where the images differ");
+  diffCmd->add_option("--tolerance", diff.tolerance, "Largest allowed channel difference, in 8-bit units (default 1)")
+      ->check(CLI::Range(0.0, 255.0));
+
+  SequenceOptions sequence;
+  CLI::App* sequenceCmd = app.add_subcommand("sequence", "Render the frames of an animated scene to numbered PNGs");
+  addViewOptions(sequenceCmd, sequence);
+  sequenceCmd->add_option("-o,--output", sequence.outputDir, "Folder for frame_0000.png, frame_0001.png, ...")
+      ->required();
+  sequenceCmd->add_option("--frames", sequence.frames,
+                          "START:END[:STEP], END excluded like a Python slice (default: every frame)");
+  sequenceCmd->add_option("--sheet", sequence.sheet, "Also write a contact sheet of the frames (PNG)");
+  sequenceCmd->add_option("--thumb-width", sequence.thumbnailWidth, "Widest thumbnail on the sheet (default 160)")
+      ->check(CLI::Range(8, 4096));
+  addBackendOption(sequenceCmd, sequence.backend);
+
+  app.add_subcommand("devices", "List Vulkan devices and whether phongvk can use them");
+
+  if (const int code = rejectUnknownCommand(app, argc, argv)) return code;
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints help (exit 0) or the usage error; a usage error is bad input (exit 2).
+    const int code = app.exit(e);
+    return code == 0 ? 0 : EXIT_BAD_INPUT;
+  }
+  if (renderCmd->parsed()) return runRender(render);
+  if (diffCmd->parsed()) return runDiff(diff);
+  if (sequenceCmd->parsed()) return runSequence(sequence);
+  return runDevices();
+}

@@ -1,0 +1,62 @@
+// render.cpp — `phongvk render`: one still on the chosen backend, optionally timed (--repeat).
+#include "cli/cli_support.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace phongvk::cli {
+namespace {
+
+// --repeat: N timed frames after one warm-up: wall clock per frame and device time, and on the
+// compute backend the median device time of each pass, so a user sees where a frame goes.
+void printRepeatTiming(const std::vector<FrameTime>& frames, Backend backend) {
+  std::vector<double> wall, device, shade, raster, resolve;
+  for (const FrameTime& f : frames) {
+    wall.push_back(f.wallMs);
+    device.push_back(f.deviceMs);
+    shade.push_back(f.shadeMs);
+    raster.push_back(f.rasterMs);
+    resolve.push_back(f.resolveMs);
+  }
+  std::printf("frame ms: median %.3f (device %.3f, min %.3f, max %.3f)\n", median(wall), median(device),
+              *std::min_element(wall.begin(), wall.end()), *std::max_element(wall.begin(), wall.end()));
+  if (backend != Backend::Gpu) return;
+  std::printf("device ms by pass: shade %.3f, raster %.3f, resolve %.3f (medians)\n", median(shade), median(raster),
+              median(resolve));
+}
+
+// "gpu (Vulkan compute, llvmpipe ...)", "cpu (reference)", "graphics (Vulkan graphics pipeline, ...)".
+std::string describeBackend(const Renderer& renderer) {
+  switch (renderer.backend()) {
+    case Backend::Cpu: return "cpu (reference)";
+    case Backend::Graphics: return "graphics (Vulkan graphics pipeline, " + renderer.deviceName() + ")";
+    case Backend::Gpu: break;
+  }
+  return "gpu (Vulkan compute, " + renderer.deviceName() + ")";
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& options) {
+  return guarded([&] {
+    checkWritable(options.output);
+    const auto start = Clock::now();
+    const Scene scene = sizedAsAsked(loadScene(options.scene), options);
+    const double loadMs = msSince(start);
+    const auto renderStart = Clock::now();
+    Renderer renderer(rendererOptions(options, options.backend));
+    if (options.repeat > 0) printRepeatTiming(renderer.timeFrames(scene, options.repeat), renderer.backend());
+    const Image image = renderer.render(scene);
+    const RendererStats stats = renderer.stats();
+    // Building the meshes counts as loading the scene, as the summary has always said.
+    const double renderMs = msSince(renderStart) - stats.buildMs;
+    writePng(options.output, image);
+    std::printf("rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms -> %s\n",
+                options.scene.c_str(), image.width, image.height, scene.objectCount(), stats.triangles,
+                scene.lightCount(), describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,
+                options.output.c_str());
+    return int(EXIT_OK);
+  });
+}
+
+}  // namespace phongvk::cli

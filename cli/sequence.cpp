@@ -1,0 +1,202 @@
+// sequence.cpp — `phongvk sequence`: the frames of an animated scene (docs/DESIGN.md, "animate") as
+// numbered PNGs, and optionally a contact sheet of them. One Renderer renders every frame, so the
+// meshes are built and uploaded once unless a track changes geometry (Renderer keeps them), and
+// the GPU backend sends only what changed and skips per-vertex lighting where that is legal.
+#include "cli/sequence.h"
+
+#include "cli/cli_support.h"
+
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+#include <vector>
+
+namespace phongvk::cli {
+namespace {
+
+constexpr int kProgressBarWidth = 30;
+
+// One part of --frames: empty (the default) or a non-negative integer.
+int slicePart(const std::string& text, const std::string& part, const char* name, int fallback) {
+  if (part.empty()) return fallback;
+  int value = -1;
+  auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+  if (error != std::errc() || end != part.data() + part.size() || value < 0) {
+    throw UsageError("--frames " + text + ": " + name + " '" + part + "' is not a non-negative integer");
+  }
+  return value;
+}
+
+std::vector<std::string> splitColons(const std::string& text) {
+  std::vector<std::string> parts(1);
+  for (char c : text) {
+    if (c == ':') parts.emplace_back();
+    else parts.back() += c;
+  }
+  return parts;
+}
+
+// Progress on stderr: a bar redrawn in place on a terminal, one line per frame otherwise (logs,
+// batch jobs), so a log shows which frame a failure happened at. A frame's time runs from the
+// previous report (or the start) and so includes writing its PNG.
+class Progress {
+ public:
+  explicit Progress(int total) : total_(total), terminal_(isatty(fileno(stderr))) {}
+
+  void frameDone(int index, const std::string& file) {
+    const double ms = msSince(last_);
+    last_ = Clock::now();
+    ++done_;
+    totalMs_ += ms;
+    if (terminal_) {
+      drawBar(index);
+    } else {
+      std::fprintf(stderr, "frame %d (%d/%d): %.1f ms -> %s\n", index, done_, total_, ms, file.c_str());
+    }
+  }
+
+ private:
+  void drawBar(int index) const {
+    const int filled = done_ * kProgressBarWidth / total_;
+    const double perFrame = totalMs_ / done_;
+    std::fprintf(stderr, "\r[%s%s] %d/%d frame %d  %.0f ms/frame  %.0f s left \x1b[K",
+                 std::string(filled, '#').c_str(), std::string(kProgressBarWidth - filled, '.').c_str(), done_,
+                 total_, index, perFrame, perFrame * (total_ - done_) / 1000);
+    if (done_ == total_) std::fputc('\n', stderr);
+    std::fflush(stderr);
+  }
+
+  int total_;
+  bool terminal_;
+  int done_ = 0;
+  double totalMs_ = 0;
+  Clock::time_point last_ = Clock::now();
+};
+
+// What becomes of each rendered frame: its PNG, its thumbnail for the sheet, a progress report.
+class FrameOutputs {
+ public:
+  FrameOutputs(const SequenceOptions& options, int frameCount, int selected)
+      : options_(options), frameCount_(frameCount), progress_(selected) {}
+
+  void add(int index, const Image& image) {
+    const std::string file = framePath(options_.outputDir, index, frameCount_);
+    writePng(file, image);
+    if (!options_.sheet.empty()) {
+      const ThumbnailSize size = thumbnailSize(image.width, image.height, options_.thumbnailWidth);
+      thumbnails_.push_back({index, downscale(image, size.width, size.height)});
+    }
+    progress_.frameDone(index, file);
+  }
+
+  void writeSheet() const {
+    if (options_.sheet.empty()) return;
+    writePng(options_.sheet, contactSheet(thumbnails_, sheetColumns(int(thumbnails_.size()))));
+  }
+
+ private:
+  const SequenceOptions& options_;
+  int frameCount_;
+  Progress progress_;
+  std::vector<Thumbnail> thumbnails_;
+};
+
+// Creates the frames folder and checks every output before the first frame is rendered.
+void prepareOutputs(const SequenceOptions& options, int frameCount) {
+  checkWritable(options.sheet);  // first, so a bad sheet path leaves no empty frames folder behind
+  const std::string& dir = options.outputDir;
+  if (std::filesystem::exists(dir) && !std::filesystem::is_directory(dir)) {
+    throw OutputError("cannot write frames to '" + dir + "': it exists and is not a folder");
+  }
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) throw OutputError("cannot create folder '" + dir + "': " + error.message());
+  checkWritable(framePath(dir, 0, frameCount));
+}
+
+void printSummary(const SequenceOptions& options, const FrameRange& range, const Scene& first,
+                  const std::string& backend, uint64_t builds, double totalMs) {
+  std::printf("sequence %s: frames %d:%d:%d (%d), %dx%d, %s, meshes built %d time%s: %.2f s, %.1f ms/frame"
+              " -> %s%s%s\n",
+              options.scene.c_str(), range.start, range.end, range.step, range.count(), first.width(), first.height(),
+              backend.c_str(), int(builds), builds == 1 ? "" : "s", totalMs / 1000, totalMs / range.count(),
+              options.outputDir.c_str(), options.sheet.empty() ? "" : ", sheet ", options.sheet.c_str());
+}
+
+// Every frame's scene, at the asked size, validated before any is rendered: a bad frame 17 fails
+// before frame 0 is written.
+std::vector<Scene> prepareFrames(const Sequence& sequence, const FrameRange& range, const ViewOptions& options) {
+  std::vector<Scene> frames;
+  for (int64_t i = range.start; i < range.end; i += range.step) {  // 64-bit: a huge STEP may not overflow
+    const Scene scene = sequence.frame(int(i));
+    try {
+      frames.push_back(sizedAsAsked(scene, options));
+    } catch (const SceneError& error) {
+      throw SceneError(sequence.path() + ": frame " + std::to_string(i) + ": " + error.what());
+    }
+  }
+  return frames;
+}
+
+// "gpu (llvmpipe ...), lighting computed on 1 of 120 frames" or "cpu (reference)".
+std::string backendSummary(const Renderer& renderer, int frames) {
+  if (renderer.backend() == Backend::Cpu) return "cpu (reference)";
+  return "gpu (" + renderer.deviceName() + "), lighting computed on " + std::to_string(renderer.stats().framesShaded) +
+         " of " + std::to_string(frames) + " frames";
+}
+
+}  // namespace
+
+FrameRange parseFrameRange(const std::string& text, int frameCount) {
+  const std::vector<std::string> parts = splitColons(text);
+  if (parts.size() < 2 || parts.size() > 3) {
+    throw UsageError("--frames '" + text +
+                     "': expected START:END or START:END:STEP (END excluded, like a Python slice)");
+  }
+  FrameRange range;
+  range.start = slicePart(text, parts[0], "START", 0);
+  range.end = slicePart(text, parts[1], "END", frameCount);
+  range.step = parts.size() == 3 ? slicePart(text, parts[2], "STEP", 1) : 1;
+  const std::string frames = "the sequence has " + std::to_string(frameCount) + " frames";
+  if (range.start >= frameCount) {
+    throw UsageError("--frames " + text + ": START " + std::to_string(range.start) + " is out of range: " + frames +
+                     ", so START < " + std::to_string(frameCount));
+  }
+  if (range.end > frameCount) {
+    throw UsageError("--frames " + text + ": END " + std::to_string(range.end) + " is out of range: " + frames +
+                     ", so END <= " + std::to_string(frameCount));
+  }
+  if (range.start >= range.end) throw UsageError("--frames " + text + ": selects no frames (START must be < END)");
+  if (range.step < 1) throw UsageError("--frames " + text + ": STEP must be >= 1");
+  return range;
+}
+
+std::string framePath(const std::string& dir, int index, int frameCount) {
+  const int digits = std::max(4, int(std::to_string(std::max(frameCount - 1, 0)).size()));
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%0*d.png", digits, index);
+  return (std::filesystem::path(dir) / name).string();
+}
+
+int runSequence(const SequenceOptions& options) {
+  return guarded([&] {
+    const auto start = Clock::now();
+    const Sequence sequence = loadSequence(options.scene);
+    const FrameRange range = parseFrameRange(options.frames, sequence.frameCount());
+    const std::vector<Scene> frames = prepareFrames(sequence, range, options);
+    prepareOutputs(options, sequence.frameCount());
+    Renderer renderer(rendererOptions(options, options.backend));
+    FrameOutputs outputs(options, sequence.frameCount(), range.count());
+    for (size_t k = 0; k < frames.size(); ++k) {
+      outputs.add(int(range.start + int64_t(k) * range.step), renderer.render(frames[k]));
+    }
+    outputs.writeSheet();
+    printSummary(options, range, frames[0], backendSummary(renderer, range.count()), renderer.stats().sceneBuilds,
+                 msSince(start));
+    return int(EXIT_OK);
+  });
+}
+
+}  // namespace phongvk::cli

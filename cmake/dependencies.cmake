@@ -1,0 +1,10 @@
+# What the scene and image libraries need from the system, for the main build (CMakeLists.txt) and
+# the fuzz build (fuzz/CMakeLists.txt) alike, so the two cannot drift apart.
+find_package(glm REQUIRED)
+find_package(nlohmann_json REQUIRED)
+find_package(tinyobjloader REQUIRED)
+find_package(ZLIB REQUIRED)  # PNG deflate (image/png.cpp)
+set(PHONGVK_SCENE_LIBRARIES glm::glm nlohmann_json::nlohmann_json tinyobjloader::tinyobjloader)
+set(PHONGVK_IMAGE_LIBRARIES ZLIB::ZLIB)
+# stb (Debian's libstb-dev) installs its headers under /usr/include/stb.
+set(PHONGVK_STB_INCLUDE_DIR /usr/include/stb)

@@ -1,0 +1,48 @@
+# phongvk_compile_shaders(TARGET target OUTPUT_DIR dir SOURCES file... [EXACT_SKIP name...])
+#
+# Compiles GLSL to SPIR-V at build time with glslang and embeds it as C arrays: x.comp becomes
+# spirv_x in x.spv.h; a graphics stage x.vert / x.frag becomes spirv_x_vert / spirv_x_frag in
+# x_vert.spv.h / x_frag.spv.h (the stages of one pipeline share a base name). glslang writes a
+# dependency file per shader, so editing an included header rebuilds exactly the shaders that
+# include it. Every compute shader not named in EXACT_SKIP is also built as spirv_x_exact with
+# EXACT_FLOAT_OPS=1: division and sqrt corrected to the correctly rounded result
+# (shaders/exact_float.h), for devices whose own are off (host/float_probe.h). A build of its own,
+# not a specialization constant: lavapipe inlines both sides of every call before it drops the dead
+# one, which cost ~40 ms of pipeline compiling per process.
+# `target` is a custom target the users of the headers depend on.
+function(phongvk_compile_shaders)
+  cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR" "SOURCES;EXACT_SKIP" ${ARGN})
+  set(outputs)
+  foreach(src ${ARG_SOURCES})
+    get_filename_component(name ${src} NAME_WE)
+    get_filename_component(stage ${src} LAST_EXT)
+    get_filename_component(dir ${src} DIRECTORY)
+    set(variants "${name}")
+    if(stage STREQUAL ".comp")
+      if(NOT name IN_LIST ARG_EXACT_SKIP)
+        list(APPEND variants "${name}_exact")
+      endif()
+    else()
+      string(SUBSTRING ${stage} 1 -1 stage)
+      set(variants "${name}_${stage}")
+    endif()
+    foreach(variant ${variants})
+      set(out ${ARG_OUTPUT_DIR}/${variant}.spv.h)
+      set(defines)
+      if(variant MATCHES "_exact$")
+        set(defines -DEXACT_FLOAT_OPS=1)
+      endif()
+      add_custom_command(
+        OUTPUT ${out}
+        COMMAND ${CMAKE_COMMAND} -E make_directory ${ARG_OUTPUT_DIR}
+        COMMAND Vulkan::glslangValidator -V --target-env vulkan1.2 -I${dir} ${defines}
+                --vn spirv_${variant} --depfile ${out}.d -o ${out} ${src}
+        MAIN_DEPENDENCY ${src}
+        DEPFILE ${out}.d
+        COMMENT "glslang: ${variant} -> SPIR-V"
+        VERBATIM)
+      list(APPEND outputs ${out})
+    endforeach()
+  endforeach()
+  add_custom_target(${ARG_TARGET} DEPENDS ${outputs})
+endfunction()

@@ -1,0 +1,133 @@
+// gpu_pipelines.cpp — which passes a frame runs and with which specialization constants, compiled
+// once each, in parallel, and kept for the renderer's life.
+#include "host/gpu_renderer.h"
+
+#include "shaders/bin_large.spv.h"
+#include "shaders/bin_large_exact.spv.h"
+#include "shaders/clip_triangles.spv.h"
+#include "shaders/clip_triangles_exact.spv.h"
+#include "shaders/fill_background.spv.h"
+#include "shaders/fill_background_exact.spv.h"
+#include "shaders/pack_colors.spv.h"
+#include "shaders/pack_colors_exact.spv.h"
+#include "shaders/raster_triangles.spv.h"
+#include "shaders/raster_triangles_exact.spv.h"
+#include "shaders/resolve_large.spv.h"
+#include "shaders/resolve_large_exact.spv.h"
+#include "shaders/resolve_small.spv.h"
+#include "shaders/resolve_small_exact.spv.h"
+#include "shaders/shade_vertices.spv.h"
+#include "shaders/shade_vertices_exact.spv.h"
+
+#include <exception>
+#include <future>
+
+namespace phongvk {
+
+using namespace gpu;
+
+namespace {
+
+struct ShaderCode {
+  const uint32_t* spirv;
+  size_t bytes;
+};
+
+#define SHADER(name) {spirv_##name, sizeof(spirv_##name)}
+
+// Per pass (GpuRenderer::Pass order): the build with the device's own division and sqrt, and the
+// `_exact` build that corrects them (shaders/exact_float.h), for devices whose own are off.
+constexpr ShaderCode SHADERS[][2] = {
+    {SHADER(shade_vertices), SHADER(shade_vertices_exact)},
+    {SHADER(raster_triangles), SHADER(raster_triangles_exact)},
+    {SHADER(clip_triangles), SHADER(clip_triangles_exact)},
+    {SHADER(resolve_small), SHADER(resolve_small_exact)},
+    {SHADER(resolve_large), SHADER(resolve_large_exact)},
+    {SHADER(bin_large), SHADER(bin_large_exact)},
+    {SHADER(fill_background), SHADER(fill_background_exact)},
+    {SHADER(pack_colors), SHADER(pack_colors_exact)},
+};
+
+#undef SHADER
+
+// The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
+std::vector<SpecConstant> shadeSpecs(const std::vector<MaterialData>& materials, size_t lightCount) {
+  bool specular = false, constantAttenuation = true;
+  for (const MaterialData& m : materials) {
+    specular = specular || m.ks != 0.0f;
+    constantAttenuation = constantAttenuation && m.attenuation.y == 0.0f && m.attenuation.z == 0.0f;
+  }
+  return {{SPEC_LIGHT_COUNT, uint32_t(lightCount)}, {SPEC_SPECULAR, specular}, {SPEC_CONSTANT_ATTENUATION, constantAttenuation}};
+}
+
+std::vector<uint32_t> pipelineKey(uint32_t pass, const std::vector<SpecConstant>& specs) {
+  std::vector<uint32_t> key = {pass};
+  for (const SpecConstant& s : specs) key.insert(key.end(), {s.id, s.value});
+  return key;
+}
+
+}  // namespace
+
+// Compiles the requested pipelines not compiled before, all at once on threads of their own (a
+// CPU device compiles each on the calling thread: ~30-40 ms apiece for the raster, clip and
+// large-resolve passes on lavapipe), and keeps them: a sequence that toggles a feature (a ks
+// sweep through 0) compiles each variant once. Every thread is joined before any error is rethrown.
+void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests) {
+  std::vector<std::pair<std::vector<uint32_t>, std::future<ComputePipeline>>> pending;
+  for (const PipelineRequest& r : requests) {
+    std::vector<uint32_t> key = pipelineKey(r.pass, r.specs);
+    if (pipelines_.count(key) != 0) continue;
+    const ShaderCode code = SHADERS[r.pass][exactFloats_ ? 1 : 0];
+    pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
+                           return createComputePipeline(context_, code.spirv, code.bytes, SHARED_BINDINGS, 0, specs);
+                         }));
+  }
+  std::exception_ptr failure;
+  for (auto& [key, compiled] : pending) {
+    try {
+      pipelines_[key] = compiled.get();
+    } catch (...) {
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+// The pipeline compilePipelines made for `request`.
+const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) const {
+  return pipelines_.at(pipelineKey(request.pass, request.specs));
+}
+
+// Every pass's pipeline for frames with these materials, lights and interpolation mode. Frames
+// with keys (for diffs) compile their own resolve pipelines when first asked for: resolve keeps
+// the final keys and writes the colour buffer (RESOLVE_OUTPUT_KEEP_KEYS) after the background
+// pass. Without keys the colours go to the key slots, where the host reads them (colorsInKeys_) or
+// the pack pass packs them into the colour buffer.
+std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::vector<MaterialData>& materials,
+                                                                   size_t lightCount, uint32_t interpolation,
+                                                                   bool withKeys) const {
+  const uint32_t output = withKeys ? RESOLVE_OUTPUT_KEEP_KEYS : RESOLVE_OUTPUT_KEY_SLOTS;
+  std::vector<PipelineRequest> requests = {
+      {SHADE, shadeSpecs(materials, lightCount)},
+      {RASTER, {}},
+      {CLIP, {{SPEC_BIN_PASS, binPass_}}},
+      {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_OUTPUT, output}}},
+      {RESOLVE_LARGE,
+       {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
+  };
+  if (binPass_) requests.push_back({BIN_LARGE, {}});
+  if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background
+  if (packsColors(withKeys)) requests.push_back({PACK, {}});
+  return requests;
+}
+
+bool GpuRenderer::packsColors(bool withKeys) const { return !withKeys && !colorsInKeys_; }
+
+void GpuRenderer::selectPipelines(const FrameInputs& in) {
+  const std::vector<PipelineRequest> requests =
+      requestsFor(in.materials, in.lights.size(), in.frame.interpolation, withKeys_);
+  compilePipelines(requests);
+  for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);
+}
+
+}  // namespace phongvk

@@ -1,0 +1,33 @@
+// errors.h — the failures phongvk reports as exceptions, one type per exit code of the CLI
+// (README "Exit codes"). Anything else thrown is a std::runtime_error with a message that names
+// the cause (a device limit, a Vulkan call that failed).
+#pragma once
+
+#include "phongvk/export.h"
+
+#include <stdexcept>
+
+namespace phongvk {
+
+// A scene that cannot be loaded or built. what() names the file, the JSON path and, for a mesh,
+// the inner file and line: "scenes/a.json: objects[2].material.ks: must be >= 0, got -1".
+class PHONGVK_API SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An output file that cannot be written (missing folder, permissions, full disk). Nothing partial
+// is left behind.
+class PHONGVK_API OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// No usable Vulkan driver or device (or not the one asked for); what() lists every device and
+// what it lacks.
+class PHONGVK_API NoDeviceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace phongvk

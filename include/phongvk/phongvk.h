@@ -1,0 +1,175 @@
+// phongvk.h — the public C++ API: load a scene, render it with the Vulkan compute port or the CPU
+// reference, get an RGB image, diff the two. The phongvk command, the benchmark and outside
+// projects (find_package(phongvk), the phongvk::phongvk target) call this and nothing else.
+//
+//   phongvk::Scene scene = phongvk::loadScene("scenes/basic.json");
+//   phongvk::Renderer gpu(phongvk::Backend::Gpu);
+//   phongvk::Image image = gpu.render(scene);          // 1385x923, row 0 at the top
+//   phongvk::writePng("basic.png", image);
+//
+// Both renderers implement one contract (docs/DESIGN.md) and give the same bytes on every device.
+#pragma once
+
+#include "phongvk/compare.h"
+#include "phongvk/contact_sheet.h"
+#include "phongvk/devices.h"
+#include "phongvk/errors.h"
+#include "phongvk/export.h"
+#include "phongvk/image.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace phongvk {
+
+// The library's version ("1.0.0") and the git revision it was built from ("609e5db", with
+// "-dirty" for uncommitted changes; "unknown" outside a checkout).
+PHONGVK_API const char* version();
+PHONGVK_API const char* revision();
+
+struct SceneSpec;  // the validated scene model (internal)
+
+// A validated scene: camera, lights, materials, objects (docs/DESIGN.md "Scene file"). Cheap to
+// copy (copies share the validated model). Meshes are built by the renderer that first renders it.
+class PHONGVK_API Scene {
+ public:
+  // The file it came from, as given ("" for a scene made from text without a name).
+  const std::string& path() const;
+  // The image the scene's camera renders (or the size set by withImageSize).
+  int width() const;
+  int height() const;
+  size_t objectCount() const;
+  size_t lightCount() const;
+  // The same scene rendered at width x height pixels (1..16384 each): the vertical field of view
+  // is kept and the aspect follows the new size. Throws SceneError for a size out of range.
+  Scene withImageSize(int width, int height) const;
+
+  explicit Scene(std::shared_ptr<const SceneSpec> spec);
+  const SceneSpec& spec() const { return *spec_; }
+
+ private:
+  std::shared_ptr<const SceneSpec> spec_;
+};
+
+// Reads and validates a scene file. Throws SceneError naming the file and the JSON path (and for a
+// mesh the inner file and line). A file with an "animate" block gives its frame 0.
+PHONGVK_API Scene loadScene(const std::string& path);
+
+// The same from JSON text: `name` stands for the file in messages and relative mesh paths resolve
+// against `baseDir`.
+PHONGVK_API Scene parseScene(const std::string& json, const std::string& name = "scene.json",
+                             const std::string& baseDir = ".");
+
+class SceneSequence;  // internal
+
+// The frames of a scene file's "animate" block (a file without one is a sequence of one frame).
+class PHONGVK_API Sequence {
+ public:
+  int frameCount() const;
+  const std::string& path() const;
+  // Frame `index` (0 <= index < frameCount()) as a scene, validated like a file: messages name the
+  // frame, "a.json: frame 17: objects[0].material.ks: must be >= 0, got -1". Throws SceneError.
+  Scene frame(int index) const;
+
+  explicit Sequence(std::shared_ptr<const SceneSequence> sequence);
+
+ private:
+  std::shared_ptr<const SceneSequence> sequence_;
+};
+
+// Reads a scene file and validates its "animate" block, evaluating every track at every frame.
+// Throws SceneError.
+PHONGVK_API Sequence loadSequence(const std::string& path);
+
+// The same from JSON text, named and resolved as parseScene does.
+PHONGVK_API Sequence parseSequence(const std::string& json, const std::string& name = "scene.json",
+                                   const std::string& baseDir = ".");
+
+enum class Backend {
+  Gpu,       // the Vulkan compute port (the default)
+  Cpu,       // the reference: plain single-threaded C++, the specification in code
+  Graphics,  // the Vulkan graphics pipeline, the benchmark's speed baseline (not bit-identical)
+};
+
+// "gpu", "cpu", "graphics"; parseBackend also takes "raster", the graphics backend's older name.
+// parseBackend throws std::invalid_argument for any other name.
+PHONGVK_API const char* backendName(Backend backend);
+PHONGVK_API Backend parseBackend(const std::string& name);
+
+struct RendererOptions {
+  Backend backend = Backend::Gpu;
+  int device = -1;        // Vulkan device index (listDevices); -1: the best usable one
+  bool validate = false;  // Vulkan validation layers (also with the environment PHONGVK_VALIDATE=1)
+};
+
+// One timed frame: wall clock around the render call, and the device's own time in all and per
+// pass (NaN where the backend or device does not measure it: the graphics baseline has no passes;
+// the reference's device is the CPU thread, its device time the frame's compute time).
+struct FrameTime {
+  double wallMs = 0;
+  double deviceMs = 0;
+  double shadeMs = 0;    // vertex transform and lighting
+  double rasterMs = 0;   // triangle set-up, culling, clipping, small triangles, binning
+  double resolveMs = 0;  // large triangles, colours
+};
+
+// What a renderer has done so far.
+struct RendererStats {
+  uint64_t sceneBuilds = 0;      // times meshes were built (a scene with new geometry)
+  uint64_t framesRendered = 0;
+  uint64_t framesShaded = 0;     // frames whose per-vertex lighting was computed (gpu; others reuse it)
+  uint64_t framesRepeated = 0;   // frames rendered again with larger lists or more workgroups (gpu)
+  size_t triangles = 0;          // of the last scene rendered
+  double buildMs = 0;            // time spent building meshes, in all (uploads not included)
+  uint64_t validationMessages = 0;  // Vulkan validation warnings and errors (RendererOptions::validate)
+};
+
+// Renders scenes on one backend. It keeps what it built and uploaded: rendering a scene with the
+// same geometry as the last one (another frame of a sequence, another camera, other materials or
+// lights) builds no meshes and sends only what changed. Not thread-safe; one Vulkan device each.
+class PHONGVK_API Renderer {
+ public:
+  // Throws NoDeviceError when the GPU backends find no usable Vulkan device.
+  explicit Renderer(Backend backend = Backend::Gpu, int device = -1);
+  explicit Renderer(const RendererOptions& options);
+  ~Renderer();
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
+
+  // One frame of `scene`. Throws SceneError for a scene whose meshes cannot be built, and
+  // std::runtime_error naming the device limit a scene exceeds.
+  Image render(const Scene& scene);
+  // The same with the per-pixel visibility keys (for diffs; the gpu backend's keys equal the
+  // reference's). The graphics backend has no keys.
+  RenderOutput renderWithKeys(const Scene& scene);
+  // One untimed warm-up frame, then `repeat` timed frames of `scene`.
+  std::vector<FrameTime> timeFrames(const Scene& scene, int repeat);
+
+  Backend backend() const;
+  // "cpu (reference)" or the Vulkan device's name: "llvmpipe (LLVM 15.0.6, 256 bits)".
+  std::string deviceName() const;
+  RendererStats stats() const;
+
+  class Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// The scene rendered by the reference and by the compute port, both with keys, and compared.
+struct DiffResult {
+  RenderOutput reference;
+  RenderOutput gpu;
+  DiffStats stats;
+  std::string deviceName;
+};
+
+// What `phongvk diff` does. Throws as Renderer does.
+PHONGVK_API DiffResult diff(const Scene& scene, const RendererOptions& gpuOptions = {});
+
+// The middle value (the mean of the two middle ones for an even count); NaN for no values.
+PHONGVK_API double median(std::vector<double> values);
+
+}  // namespace phongvk

@@ -1,0 +1,57 @@
+#include "scene/camera.h"
+
+#include <cmath>
+#include <string>
+
+namespace phongvk {
+
+namespace {
+
+void checkSide(int pixels, const char* what) {
+  if (pixels < 1 || pixels > MAX_IMAGE_SIDE) {
+    throw SceneError(std::string("camera: image ") + what + " " + std::to_string(pixels) +
+                     " is outside 1.." + std::to_string(MAX_IMAGE_SIDE) + " pixels");
+  }
+}
+
+}  // namespace
+
+View makeView(const CameraSpec& camera) {
+  View view{};
+  const double halfHeight = std::tan(glm::radians(camera.fov) / 2);  // at 1 m from the eye
+  if (camera.width > 0 && camera.height > 0) {
+    view.width = camera.width;
+    view.height = camera.height;
+    view.focal = camera.height / (2 * halfHeight);
+  } else {
+    const double h = 2 * camera.resolution * halfHeight;
+    const double w = h * camera.aspect;
+    if (!(h < MAX_IMAGE_SIDE + 1.0) || !(w < MAX_IMAGE_SIDE + 1.0)) checkSide(MAX_IMAGE_SIDE + 1, "size");
+    view.height = static_cast<int>(std::floor(h));
+    view.width = static_cast<int>(std::floor(w));
+    view.focal = camera.resolution;
+  }
+  checkSide(view.width, "width");
+  checkSide(view.height, "height");
+
+  view.eye = camera.position;
+  view.forward = glm::normalize(camera.direction);
+  const glm::dvec3 side = glm::cross(view.forward, camera.up);
+  if (glm::length(side) <= 1e-9 * glm::length(camera.up)) {
+    throw SceneError("camera.up: parallel to the view direction");
+  }
+  view.right = glm::normalize(side);
+  view.up = glm::cross(view.right, view.forward);
+  view.nearPlane = camera.nearPlane;
+  view.farPlane = camera.farPlane;
+  return view;
+}
+
+CameraSpec withImageSize(CameraSpec camera, int width, int height) {
+  camera.width = width;
+  camera.height = height;
+  camera.aspect = static_cast<double>(width) / height;
+  return camera;
+}
+
+}  // namespace phongvk

@@ -1,0 +1,34 @@
+// camera.h — the camera's image size, focal length and basis (DESIGN.md "Camera").
+#pragma once
+
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+namespace phongvk {
+
+struct View {
+  glm::dvec3 eye;
+  glm::dvec3 right;    // r = normalize(cross(f, up))
+  glm::dvec3 up;       // u = cross(r, f)
+  glm::dvec3 forward;  // f = normalize(direction)
+  double focal;        // pixels per metre on the image plane 1 m in front of the eye
+  int width;
+  int height;
+  double nearPlane;
+  double farPlane;
+};
+
+// The largest image either side may be; the loader and the CLI both enforce it.
+inline constexpr int MAX_IMAGE_SIDE = 16384;
+
+// H = floor(2 res tan(fov/2)), W = floor(2 res tan(fov/2) aspect), focal = res; or, when the
+// camera gives width and height, those and focal = H / (2 tan(fov/2)). Throws SceneError for
+// an image size out of 1..MAX_IMAGE_SIDE or up parallel to the direction.
+View makeView(const CameraSpec& camera);
+
+// The same camera rendered at width x height (the CLI's --width/--height): the vertical field of
+// view is kept and the aspect follows the new size.
+CameraSpec withImageSize(CameraSpec camera, int width, int height);
+
+}  // namespace phongvk

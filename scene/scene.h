@@ -1,0 +1,103 @@
+// scene.h — the validated scene model and its JSON loader (DESIGN.md "Scene file").
+// Everything downstream reads this model; nothing downstream re-reads the JSON.
+#pragma once
+
+#include "phongvk/errors.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace phongvk {
+
+// Defaults are the values the paper's own code used.
+struct Material {
+  float ka = 0.15f;
+  float kd = 1.0f;
+  float ks = 0.8f;
+  float n = 10.0f;                                  // shininess
+  glm::vec3 attenuation = {1.0f, 0.2f, 0.2f};       // a, b, c of 1 / (a + b d + c d^2)
+  glm::vec3 color = {0.8f, 0.8f, 0.8f};
+};
+
+struct Light {
+  glm::dvec3 position = {0, 0, 0};
+  float intensity = 1.0f;
+  glm::vec3 color = {1, 1, 1};
+};
+
+struct CameraSpec {
+  glm::dvec3 position = {0, 0, 0};
+  glm::dvec3 direction = {1, 0, 0};  // from "direction", or look_at - position
+  glm::dvec3 up = {0, 0, 1};
+  double fov = 60;                   // vertical, degrees
+  double aspect = 1.5;               // width / height
+  double resolution = 800;           // pixels per metre of an image plane 1 m in front of the eye
+  int width = 0;                     // when > 0 (with height), sets the image size directly
+  int height = 0;
+  double nearPlane = 0.05;
+  double farPlane = 1000;
+};
+
+// The largest |coordinate| and size, in metres, a scene may use (positions, centres, points,
+// radii, OBJ vertices after scaling): far beyond any useful scene, small enough that the offsets
+// and squared distances the renderers take in 32-bit float cannot overflow.
+inline constexpr double MAX_COORDINATE = 1e15;
+
+// A file's size and modification time: a renderer rebuilds a mesh whose file changed since it
+// built it (sameGeometry, scene_data.h).
+struct FileVersion {
+  uint64_t bytes = 0;
+  int64_t modified = 0;  // nanoseconds since the file clock's epoch
+  bool operator==(const FileVersion&) const = default;
+};
+
+enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
+enum class Interpolation { Perspective, Screen };
+
+struct Object {
+  Shape shape = Shape::Sphere;
+  glm::dvec3 center = {0, 0, 0};
+  double radius = 0.5;
+  double size = 1;                   // cube edge length
+  double height = 1;                 // cylinder / cone, along +z, centred on `center`
+  int segments = 32;                 // sphere / cylinder / cone around the axis
+  int rings = 1;                     // cone: rings along the side
+  int subdivide = 0;                 // 1 -> 4 splits, this many times
+  std::vector<glm::dvec3> points;    // polyhedron: convex hull of these
+  std::string file;                  // mesh: OBJ path, already resolved against the scene folder
+  FileVersion fileVersion;           // mesh: the file as it was when the scene was loaded
+  double scale = 1;                  // mesh
+  glm::dvec3 translate = {0, 0, 0};  // mesh
+  int material = 0;                  // index into SceneSpec::materials
+  bool closed = true;                // back faces culled; primitives true, meshes default false
+  std::string jsonPath;              // "objects[3]", for error messages downstream
+};
+
+struct SceneSpec {
+  std::string path;                  // the file it came from (for messages)
+  CameraSpec camera;
+  glm::vec3 background = {0, 0, 0};
+  glm::vec3 ambient = {1, 1, 1};
+  std::vector<Light> lights;
+  std::vector<Material> materials;   // named ones first (in file order), then inline ones
+  std::vector<Object> objects;
+  Interpolation interpolation = Interpolation::Perspective;
+};
+
+// Reads and validates a scene file. Throws SceneError naming the file and the JSON path.
+// A file with an "animate" block gives its frame 0 (animate.h has the other frames).
+SceneSpec loadSceneSpec(const std::string& path);
+
+// Parses scene JSON text. `path` names the source in messages; relative files resolve against
+// `baseDir`. Throws SceneError. Like loadSceneSpec, an animated scene gives its frame 0.
+SceneSpec parseSceneSpec(const std::string& text, const std::string& path, const std::string& baseDir);
+
+// A scene file's text. Throws SceneError "<path>: cannot read file: <why>".
+std::string readSceneText(const std::string& path);
+
+}  // namespace phongvk

@@ -1,0 +1,112 @@
+// scene_camera.cpp — the scene file's "camera" (DESIGN.md "Camera"): position, view direction,
+// up, field of view, image size and depth range, checked so that every loaded camera makes a view
+// (camera.h makeView) without a NaN or an overflow.
+#include "scene/scene_sections.h"
+
+#include "scene/camera.h"
+
+#include <cfloat>
+#include <cmath>
+
+namespace phongvk::scenejson {
+namespace {
+
+const Keys kCameraKeys = {"position",   "direction", "look_at", "up",   "fov", "aspect",
+                          "resolution", "width",     "height",  "near", "far"};
+
+// Below this |cross(f, up)| the camera's right vector is numerically meaningless.
+constexpr double kParallelTolerance = 1e-6;
+
+// A narrower field of view makes the focal length (up to 8192 / tan(fov / 2) pixels per metre)
+// large enough that focal times a distance overflows a 32-bit float in the shaders.
+constexpr double kMinFov = 1e-6;
+
+// "direction", or "look_at" (a point) made into one; exactly one of them.
+glm::dvec3 readViewDirection(const Node& camera, glm::dvec3 position) {
+  auto direction = camera.find("direction");
+  auto lookAt = camera.find("look_at");
+  if (direction && lookAt) lookAt->fail("cannot be given together with 'direction'");
+  if (direction) return usableDirection(*direction, vec3(*direction));
+  if (!lookAt) camera.fail("missing required field 'direction' (or 'look_at')");
+  glm::dvec3 target = point(*lookAt);
+  if (target == position) lookAt->fail("equals camera.position, so there is no view direction");
+  return usableDirection(*lookAt, target - position);
+}
+
+glm::dvec3 readUp(const Node& camera, glm::dvec3 direction) {
+  glm::dvec3 up = {0, 0, 1};
+  auto node = camera.find("up");
+  if (node) up = usableDirection(*node, vec3(*node));
+  glm::dvec3 side = glm::cross(glm::normalize(direction), glm::normalize(up));
+  if (glm::length(side) < kParallelTolerance) camera.failAt("up", "parallel to the view direction");
+  return up;
+}
+
+// DESIGN.md "Camera": H = floor(2·resolution·tan(fov/2)), W = floor(2·resolution·tan(fov/2)·aspect)
+// (the same operations as makeView, so a scene that loads also makes a view).
+void checkImageSizeFromResolution(const Node& camera, const CameraSpec& spec) {
+  double planeHeight = 2 * spec.resolution * std::tan(glm::radians(spec.fov) / 2);
+  double height = std::floor(planeHeight);
+  double width = std::floor(planeHeight * spec.aspect);
+  if (width >= 1 && height >= 1 && width <= MAX_IMAGE_SIDE && height <= MAX_IMAGE_SIDE) return;
+  std::string size = formatNumber(width) + "x" + formatNumber(height);
+  std::string inputs = "resolution " + formatNumber(spec.resolution) + ", fov " +
+                       formatNumber(spec.fov) + ", aspect " + formatNumber(spec.aspect);
+  camera.failAt("resolution", "image would be " + size + " pixels (" + inputs +
+                                  "); each side must be 1 to " + std::to_string(MAX_IMAGE_SIDE));
+}
+
+// Either resolution + aspect, or width + height (which then set the aspect).
+void readImageSize(const Node& camera, CameraSpec& spec) {
+  auto width = camera.find("width");
+  auto height = camera.find("height");
+  if (!width && !height) {
+    if (auto node = camera.find("aspect")) spec.aspect = positive(*node);
+    if (auto node = camera.find("resolution")) spec.resolution = positive(*node);
+    checkImageSizeFromResolution(camera, spec);
+    return;
+  }
+  if (!height) width->fail("must be given together with 'height'");
+  if (!width) height->fail("must be given together with 'width'");
+  for (std::string_view key : {"resolution", "aspect"}) {
+    if (camera.find(key)) camera.failAt(key, "cannot be given together with 'width' and 'height'");
+  }
+  spec.width = integer(*width, 1, MAX_IMAGE_SIDE);
+  spec.height = integer(*height, 1, MAX_IMAGE_SIDE);
+  spec.aspect = double(spec.width) / spec.height;
+}
+
+void readDepthRange(const Node& camera, CameraSpec& spec) {
+  if (auto node = camera.find("near")) spec.nearPlane = positive(*node);
+  // The renderers clip at near as a float: one that rounds to 0 would let them divide by w = 0.
+  if (static_cast<float>(spec.nearPlane) < FLT_MIN) {
+    camera.failAt("near", "must be >= " + formatNumber(FLT_MIN) + " (the smallest normal 32-bit float), got " +
+                              formatNumber(spec.nearPlane));
+  }
+  if (auto node = camera.find("far")) spec.farPlane = number(*node);
+  if (!(spec.farPlane > spec.nearPlane)) {
+    camera.failAt("far", "must be > near (" + formatNumber(spec.nearPlane) + "), got " +
+                             formatNumber(spec.farPlane));
+  }
+}
+
+}  // namespace
+
+CameraSpec readCamera(const Node& camera) {
+  requireObject(camera);
+  checkKeys(camera, kCameraKeys);
+  CameraSpec spec;
+  spec.position = point(camera.require("position"));
+  spec.direction = readViewDirection(camera, spec.position);
+  spec.up = readUp(camera, spec.direction);
+  if (auto node = camera.find("fov")) spec.fov = inOpenRange(*node, 0, 180);
+  if (spec.fov < kMinFov) {
+    camera.failAt("fov", "must be >= " + formatNumber(kMinFov) +
+                             " degrees (a narrower view overflows 32-bit floats), got " + formatNumber(spec.fov));
+  }
+  readImageSize(camera, spec);
+  readDepthRange(camera, spec);
+  return spec;
+}
+
+}  // namespace phongvk::scenejson

@@ -1,0 +1,60 @@
+// scene_data.h — the scene flattened into the arrays both renderers consume (shaders/shared.h
+// layouts), and the per-frame data derived from a camera view.
+#pragma once
+
+#include "scene/camera.h"
+#include "scene/scene.h"
+#include "shaders/shared.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace phongvk {
+
+// Built once per scene: meshes with normals, materials, lights. Geometry is uploaded once by the
+// GPU path; materials and lights may be refreshed per frame (refreshShading).
+struct SceneData {
+  std::vector<gpu::VertexIn> vertices;      // local to their object's origin
+  std::vector<glm::uvec4> triangles;        // xyz: vertex indices; w: object index
+  std::vector<glm::dvec3> objectOrigins;    // world, double: offsets are taken in double
+  // Lighting is evaluated relative to this point (the mean object origin): fixed per scene, so
+  // a moving camera leaves view-independent lighting bitwise unchanged.
+  glm::dvec3 lightingOrigin{0.0};
+  std::vector<gpu::ObjectData> objects;     // material, flags, lightOffset; viewOffset per frame
+  std::vector<gpu::MaterialData> materials;
+  std::vector<gpu::LightData> lights;       // positions relative to lightingOrigin
+  glm::vec3 background{0.0f};
+  glm::vec3 ambient{1.0f};
+  uint32_t interpolation = gpu::INTERP_PERSPECTIVE;
+};
+
+// One frame's inputs to either renderer: the frame constants, the per-object offsets from the eye,
+// and the shading data (materials, lights) in force for this frame.
+struct FrameInputs {
+  gpu::FrameData frame{};
+  std::vector<gpu::ObjectData> objects;
+  std::vector<gpu::LightData> lights;
+  std::vector<gpu::MaterialData> materials;
+};
+
+// Builds every object's mesh and flattens the scene. Throws SceneError.
+SceneData buildSceneData(const SceneSpec& scene);
+
+// True when a and b make the same meshes: the same objects, in order, with the same shapes,
+// geometry values, mesh files (unchanged on disk) and culling. Materials, lights, the camera and
+// the render options may differ: refreshShading and makeFrame take those from b.
+bool sameGeometry(const SceneSpec& a, const SceneSpec& b);
+
+// Replaces what a frame of a sequence may change without touching geometry: materials, lights,
+// ambient, background and interpolation. The scene must have the same objects as `data`'s.
+void refreshShading(SceneData& data, const SceneSpec& scene);
+
+// True when the vertex colours do not depend on where the eye is: no light, or no material with
+// a specular term.
+bool lightingIsViewIndependent(const FrameInputs& in);
+
+// The frame for `view`: camera basis, image size, and offsets from the eye computed in double.
+FrameInputs makeFrame(const SceneData& data, const View& view);
+
+}  // namespace phongvk

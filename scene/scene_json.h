@@ -1,0 +1,84 @@
+// scene_json.h — checked reading of JSON values for the scene loader. Every failure throws
+// SceneError as "<file>: <json path>: <what is wrong>", e.g.
+// "scenes/a.json: objects[2].material.ks: must be >= 0, got -1".
+#pragma once
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace phongvk::scenejson {
+
+// Ordered, so "materials" keeps its file order: named materials are indexed in that order.
+using Json = nlohmann::ordered_json;
+using Keys = std::vector<std::string_view>;
+
+// Parses JSON text. A syntax error names its line and column; a number too large for a double
+// and a duplicate key name their JSON path.
+Json parseJson(const std::string& text, const std::string& file);
+
+// A JSON value together with where it sits, so every check can say where it failed.
+class Node {
+ public:
+  Node(const Json& value, std::string path, const std::string& file);
+
+  const Json& json() const { return *value_; }
+  const std::string& path() const { return path_; }
+
+  [[noreturn]] void fail(const std::string& what) const;
+  // Fails at a member that may be absent, e.g. "camera.resolution" for an image size that
+  // came from the default resolution.
+  [[noreturn]] void failAt(std::string_view key, const std::string& what) const;
+
+  // Members of an object (checked with requireObject first) and elements of an array.
+  std::optional<Node> find(std::string_view key) const;
+  Node require(std::string_view key) const;  // "missing required field 'key'"
+  Node child(std::string_view key) const;    // precondition: the key exists
+  Node element(size_t index) const;
+
+ private:
+  const Json* value_;
+  std::string path_;
+  const std::string* file_;
+};
+
+// "objects[2]" + "material" -> "objects[2].material"; the top level has the empty path.
+std::string childPath(const std::string& parent, std::string_view key);
+
+void requireObject(const Node& node);
+void requireArray(const Node& node);
+
+// Rejects keys outside `allowed`, listing the allowed ones. A key in `usedElsewhere` also gets
+// `whyNotHere` ("not used by shape 'cube'"), so the reader learns it is valid, just not here.
+void checkKeys(const Node& object, const Keys& allowed, const Keys& usedElsewhere = {},
+               std::string_view whyNotHere = {});
+
+// Numbers: JSON numbers only (no bools, no strings), always finite.
+double number(const Node& node);
+double atLeast(const Node& node, double min);                  // >= min
+double positive(const Node& node);                             // > 0
+double inRange(const Node& node, double min, double max);      // min <= x <= max
+double inOpenRange(const Node& node, double min, double max);  // min < x < max
+int integer(const Node& node, int min, int max);               // integral value in min..max
+// Narrows a checked value to float, rejecting magnitudes a float cannot hold (they would
+// become inf, and inf times a zero term is NaN downstream).
+float toFloat(const Node& node, double value);
+
+bool boolean(const Node& node);
+std::string string(const Node& node);
+
+// An array of exactly 3 numbers, each read (and range checked) by `element`.
+using ElementReader = double (*)(const Node&);
+glm::dvec3 vec3(const Node& node, ElementReader element = number);
+
+// Shortest text that reads back as the same number: "-1", "0.05", "1e+300". The float
+// overload prints a float field's value as written (0.1f as "0.1", not "0.10000000149011612").
+std::string formatNumber(double value);
+std::string formatNumber(float value);
+
+}  // namespace phongvk::scenejson

@@ -1,0 +1,63 @@
+// scene_lighting.cpp — the scene file's "lights" and materials (DESIGN.md "Phong, per vertex"):
+// colours, intensities, Phong coefficients and an attenuation that stays positive at every distance.
+#include "scene/scene_sections.h"
+
+namespace phongvk::scenejson {
+namespace {
+
+const Keys kLightKeys = {"position", "intensity", "color"};
+const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color"};
+
+Light readLight(const Node& node) {
+  requireObject(node);
+  checkKeys(node, kLightKeys);
+  Light light;
+  light.position = point(node.require("position"));
+  if (auto intensity = node.find("intensity")) light.intensity = nonNegativeFloat(*intensity);
+  if (auto lightColor = node.find("color")) light.color = color(*lightColor);
+  return light;
+}
+
+}  // namespace
+
+std::vector<Light> readLights(const Node& node) {
+  requireArray(node);
+  std::vector<Light> lights;
+  for (size_t i = 0; i < node.json().size(); ++i) lights.push_back(readLight(node.element(i)));
+  return lights;
+}
+
+namespace {
+
+// 1 / (a + b d + c d^2) needs a + b d + c d^2 > 0 for every distance d > 0: a and c may not be
+// negative (small and large d), not all zero, and a negative b needs the quadratic to have no
+// real root (b^2 < 4ac). Checked on the floats the renderers will use.
+glm::vec3 readAttenuation(const Node& node) {
+  glm::vec3 abc = glm::vec3(vec3(node, floatComponent));
+  double a = abc.x, b = abc.y, c = abc.z;
+  bool allZero = a == 0 && b == 0 && c == 0;
+  if (a < 0 || c < 0 || allZero || !(b >= 0 || b * b < 4 * a * c)) {
+    node.fail("a + b*d + c*d^2 must stay positive for all distances d > 0, got [" +
+              formatNumber(abc.x) + ", " + formatNumber(abc.y) + ", " + formatNumber(abc.z) + "]");
+  }
+  return abc;
+}
+
+}  // namespace
+
+Material readMaterial(const Node& node) {
+  requireObject(node);
+  checkKeys(node, kMaterialKeys);
+  Material material;
+  if (auto ka = node.find("ka")) material.ka = nonNegativeFloat(*ka);
+  if (auto kd = node.find("kd")) material.kd = nonNegativeFloat(*kd);
+  if (auto ks = node.find("ks")) material.ks = nonNegativeFloat(*ks);
+  if (auto n = node.find("n")) material.n = nonNegativeFloat(*n);
+  if (auto attenuation = node.find("attenuation")) {
+    material.attenuation = readAttenuation(*attenuation);
+  }
+  if (auto materialColor = node.find("color")) material.color = color(*materialColor);
+  return material;
+}
+
+}  // namespace phongvk::scenejson

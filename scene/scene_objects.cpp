@@ -1,0 +1,125 @@
+// scene_objects.cpp — the scene file's "objects": each shape's keys, its geometry values and its
+// material. Meshes are only checked for a readable file here; mesh.cpp builds them.
+#include "scene/scene_sections.h"
+
+#include <chrono>
+#include <filesystem>
+
+namespace phongvk::scenejson {
+namespace {
+
+const Keys kObjectKeys = {"shape", "material", "subdivide", "closed"};  // every shape
+
+struct ShapeInfo {
+  Shape shape;
+  std::string_view name;
+  Keys keys;  // on top of kObjectKeys
+};
+
+const std::vector<ShapeInfo> kShapes = {
+    {Shape::Sphere, "sphere", {"center", "radius", "segments"}},
+    {Shape::Cube, "cube", {"center", "size"}},
+    {Shape::Cylinder, "cylinder", {"center", "radius", "height", "segments"}},
+    {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
+    {Shape::Icosphere, "icosphere", {"center", "radius"}},
+    {Shape::Polyhedron, "polyhedron", {"points"}},
+    {Shape::Mesh, "mesh", {"file", "scale", "translate"}},
+};
+
+
+const ShapeInfo& readShape(const Node& node) {
+  std::string name = string(node);
+  for (const ShapeInfo& info : kShapes) {
+    if (info.name == name) return info;
+  }
+  std::string allowed;
+  for (const ShapeInfo& info : kShapes) {
+    allowed += (allowed.empty() ? "" : ", ") + std::string(info.name);
+  }
+  node.fail("unknown shape '" + name + "' (allowed: " + allowed + ")");
+}
+
+void checkObjectKeys(const Node& node, const ShapeInfo& info) {
+  Keys allowed = kObjectKeys;
+  allowed.insert(allowed.end(), info.keys.begin(), info.keys.end());
+  Keys anyShape;
+  for (const ShapeInfo& other : kShapes) {
+    anyShape.insert(anyShape.end(), other.keys.begin(), other.keys.end());
+  }
+  checkKeys(node, allowed, anyShape, "not used by shape '" + std::string(info.name) + "'");
+}
+
+std::vector<glm::dvec3> readPoints(const Node& node) {
+  requireArray(node);
+  size_t count = node.json().size();
+  if (count < 4) node.fail("needs at least 4 points, got " + std::to_string(count));
+  std::vector<glm::dvec3> points;
+  for (size_t i = 0; i < count; ++i) points.push_back(point(node.element(i)));
+  return points;
+}
+
+// Only checks that the file can be read: the OBJ itself is parsed by the mesh builder.
+std::string resolveMeshFile(const Node& node, const std::string& baseDir) {
+  std::string file = string(node);
+  if (file.empty()) node.fail("must name a file, got an empty string");
+  // An absolute `file` replaces baseDir here.
+  std::string resolved = (std::filesystem::path(baseDir) / file).string();
+  if (auto reason = unreadableReason(resolved)) node.fail("cannot read '" + file + "': " + *reason);
+  return resolved;
+}
+
+FileVersion fileVersion(const std::string& path) {
+  std::error_code error;
+  FileVersion version;
+  version.bytes = std::filesystem::file_size(path, error);
+  const auto modified = std::filesystem::last_write_time(path, error);
+  if (!error) version.modified = std::chrono::duration_cast<std::chrono::nanoseconds>(modified.time_since_epoch()).count();
+  return version;
+}
+
+// Each geometry key means the same for every shape that takes it, and checkObjectKeys has
+// already rejected the keys this shape does not take, so one reader serves all shapes.
+void readGeometry(const Node& node, Object& object, const std::string& baseDir) {
+  if (auto center = node.find("center")) object.center = point(*center);
+  if (auto radius = node.find("radius")) object.radius = length(*radius);
+  if (auto size = node.find("size")) object.size = length(*size);
+  if (auto height = node.find("height")) object.height = length(*height);
+  if (auto segments = node.find("segments")) object.segments = integer(*segments, 3, 4096);
+  if (auto rings = node.find("rings")) object.rings = integer(*rings, 1, 4096);
+  if (auto scale = node.find("scale")) object.scale = positive(*scale);
+  if (auto translate = node.find("translate")) object.translate = point(*translate);
+  if (object.shape == Shape::Polyhedron) object.points = readPoints(node.require("points"));
+  if (object.shape == Shape::Mesh) {
+    object.file = resolveMeshFile(node.require("file"), baseDir);
+    object.fileVersion = fileVersion(object.file);
+  }
+}
+
+Object readObject(const Node& node, const std::string& baseDir, MaterialTable& materials) {
+  requireObject(node);
+  const ShapeInfo& info = readShape(node.require("shape"));
+  checkObjectKeys(node, info);
+  Object object;
+  object.shape = info.shape;
+  object.jsonPath = node.path();
+  object.closed = info.shape != Shape::Mesh;  // imported meshes are often open or mis-wound
+  readGeometry(node, object, baseDir);
+  if (auto subdivide = node.find("subdivide")) object.subdivide = integer(*subdivide, 0, 10);
+  if (auto closed = node.find("closed")) object.closed = boolean(*closed);
+  object.material = materials.forObject(node.find("material"));
+  return object;
+}
+
+}  // namespace
+
+std::vector<Object> readObjects(const Node& node, const std::string& baseDir, MaterialTable& materials) {
+  requireArray(node);
+  if (node.json().empty()) node.fail("scene has no objects");
+  std::vector<Object> objects;
+  for (size_t i = 0; i < node.json().size(); ++i) {
+    objects.push_back(readObject(node.element(i), baseDir, materials));
+  }
+  return objects;
+}
+
+}  // namespace phongvk::scenejson

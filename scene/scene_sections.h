@@ -1,0 +1,104 @@
+// scene_sections.h — the readers of the scene file's sections, each in a file of its own
+// (scene_camera.cpp, scene_lighting.cpp, scene_objects.cpp), the value readers they share
+// (scene_values.cpp), and the material table objects and the file's "materials" fill together.
+// scene.cpp reads the whole file with them. Every reader throws SceneError at the failing node.
+#pragma once
+
+#include "scene/scene.h"
+#include "scene/scene_json.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace phongvk::scenejson {
+
+// ---- values shared by several sections (scene_values.cpp) ----
+float nonNegativeFloat(const Node& node);
+// Vector elements are read as doubles; these hold values a float represents exactly.
+double floatComponent(const Node& node);
+double nonNegativeComponent(const Node& node);
+double unitComponent(const Node& node);
+glm::vec3 color(const Node& node);      // components >= 0
+glm::vec3 unitColor(const Node& node);  // components in [0, 1]
+// Positions and sizes stay within MAX_COORDINATE metres, so that every offset, distance and
+// squared distance the renderers take in float stays finite (a 1e300 m centre would become an
+// infinite eye offset and NaN vertices).
+double coordinate(const Node& node);
+glm::dvec3 point(const Node& node);
+double length(const Node& node);  // > 0 and <= MAX_COORDINATE
+// A direction the camera basis can normalize: length neither zero nor overflowing.
+glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction);
+// Why `path` cannot be read as a regular file, or nothing if it can. Checks the type before
+// opening: opening a FIFO for reading would block.
+std::optional<std::string> unreadableReason(const std::string& path);
+
+// ---- sections ----
+CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
+std::vector<Light> readLights(const Node& node);  // scene_lighting.cpp
+Material readMaterial(const Node& node);          // scene_lighting.cpp
+
+// SceneSpec::materials as it is built: the named materials first, in file order, then one entry per
+// inline material, and one shared default for objects that name none.
+class MaterialTable {
+ public:
+  void readNamed(const Node& node) {
+    requireObject(node);
+    for (const auto& [name, value] : node.json().items()) {
+      materials_.push_back(readMaterial(node.child(name)));
+      names_.push_back(name);
+    }
+  }
+
+  // The index for an object's "material": absent, a name, or an inline material object.
+  int forObject(const std::optional<Node>& node) {
+    if (!node) return defaultIndex();
+    if (node->json().is_string()) return named(*node);
+    if (!node->json().is_object()) {
+      node->fail(std::string("must be a material name or a material object, got ") +
+                 node->json().type_name());
+    }
+    return add(readMaterial(*node));
+  }
+
+  std::vector<Material> take() { return std::move(materials_); }
+
+ private:
+  int add(const Material& material) {
+    materials_.push_back(material);
+    return int(materials_.size()) - 1;
+  }
+
+  int defaultIndex() {
+    if (!defaultIndex_) defaultIndex_ = add(Material{});
+    return *defaultIndex_;
+  }
+
+  int named(const Node& node) const {
+    std::string name = string(node);
+    for (size_t i = 0; i < names_.size(); ++i) {
+      if (names_[i] == name) return int(i);
+    }
+    node.fail("unknown material '" + name + "' (" + describeNames() + ")");
+  }
+
+  std::string describeNames() const {
+    if (names_.empty()) return "no named materials are defined";
+    std::string text = "known: ";
+    for (size_t i = 0; i < names_.size(); ++i) text += (i ? ", " : "") + names_[i];
+    return text;
+  }
+
+  std::vector<Material> materials_;
+  std::vector<std::string> names_;  // names_[i] names materials_[i]
+  std::optional<int> defaultIndex_;
+};
+
+// The whole scene file without its "animate" block (scene.cpp). `root` names the file (or the frame
+// of a sequence) in messages, `path` is SceneSpec::path and relative files resolve against baseDir.
+SceneSpec readScene(const Node& root, const std::string& path, const std::string& baseDir);
+
+// The "objects" array (scene_objects.cpp); each object's material goes through `materials`.
+std::vector<Object> readObjects(const Node& node, const std::string& baseDir, MaterialTable& materials);
+
+}  // namespace phongvk::scenejson

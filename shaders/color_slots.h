@@ -1,0 +1,34 @@
+// color_slots.h — how the GPU renderer hands colours over: a resolved pixel's colour kept in its
+// 64-bit key slot, and the RGB bytes of the colour buffer built a word at a time (not part of the
+// contract: the reference writes its image directly).
+#ifndef PHONGVK_COLOR_SLOTS_H
+#define PHONGVK_COLOR_SLOTS_H
+
+#include "glsl_cpp.h"
+#include "shared.h"
+
+SHARED_BEGIN
+
+// A resolved pixel's final colour kept in its key slot (RESOLVE_OUTPUT_KEY_SLOTS): this tag above,
+// the packed RGBA8 below. The tag's upper word is a NaN's bits, so no depth key reaches it: every
+// slot at or above the tag (KEY_CLEAR included) holds no key, and a pass skips it.
+PHONGVK_CONST uint64_t KEY_COLOR_TAG = 0xFFFFFFFE00000000ul;
+
+FN uint64_t colorSlot(uint color) { return KEY_COLOR_TAG | uint64_t(color); }
+
+// Word w (bytes 4w..4w+3) of an image's RGB bytes, pixel k at bytes 3k..3k+2, from the packed
+// colours (r in the low byte) of pixel 4w / 3, the first it reaches into, and the pixel after it:
+// byte 4w + j is channel (4w + j) % 3 of pixel (4w + j) / 3.
+FN uint rgbWord(uint w, uint first, uint next) {
+  uint word = 0u;
+  for (uint j = 0u; j < 4u; ++j) {
+    uint k = 4u * w + j;
+    uint color = k / 3u == 4u * w / 3u ? first : next;
+    word |= ((color >> (8u * (k % 3u))) & 0xFFu) << (8u * j);
+  }
+  return word;
+}
+
+SHARED_END
+
+#endif  // PHONGVK_COLOR_SLOTS_H

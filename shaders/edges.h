@@ -1,0 +1,111 @@
+// edges.h — snapping to 1/256 pixel and the integer edge functions with the top-left rule
+// (DESIGN.md "Rasterization"): which pixel centres a snapped sub-triangle covers. Shared by the GPU
+// passes and the reference; see glsl_cpp.h for the dialect rules.
+#ifndef PHONGVK_EDGES_H
+#define PHONGVK_EDGES_H
+
+#include "glsl_cpp.h"
+#include "exact_float.h"
+#include "shared.h"
+
+SHARED_BEGIN
+
+// Screen position in 1/256 pixel units, rounded to nearest (ties up). W >= near here, and h is
+// inside the guard band, so the result is below 2^28 in magnitude: an int holds it exactly (and
+// a SIMD CPU converts to 32-bit integers natively, to 64-bit lane by lane).
+FN ivec2 snapToSubpixel(vec3 h, vec2 principal) {
+  PRECISE float sx = (divide(h.x, h.z) + principal.x) * float(SUBPIXEL_ONE) + 0.5f;
+  PRECISE float sy = (divide(h.y, h.z) + principal.y) * float(SUBPIXEL_ONE) + 0.5f;
+  return ivec2(int(floor(sx)), int(floor(sy)));
+}
+
+// Twice the signed area of a b p in subpixel units; > 0 when p is inside a clockwise-on-screen
+// (y down) oriented edge a -> b. One formula, in 64 bits for any snapped coordinates and in 32
+// bits for a small triangle's taken relative to its corner (small_triangles.h), where it is exact.
+#define PHONGVK_EDGE_FUNCTION(T, V) \
+  FN T edgeFunction(V a, V b, V p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+PHONGVK_EDGE_FUNCTION(int64_t, i64vec2)
+PHONGVK_EDGE_FUNCTION(int, ivec2)
+#undef PHONGVK_EDGE_FUNCTION
+
+// Top-left rule for triangles oriented so edge functions are positive inside (y down): a top edge
+// is horizontal with the inside below it, a left edge goes up. Pixels exactly on such an edge
+// are covered; on any other edge they are not. Returned as the bias added before the >= 0 test.
+// Snapped coordinates stay below 2^28, so their differences fit an int.
+FN int topLeftBias(ivec2 a, ivec2 b) {
+  int dx = b.x - a.x;
+  int dy = b.y - a.y;
+  return (dy == 0 && dx > 0) || dy < 0 ? 0 : -1;
+}
+
+// A snapped sub-triangle ready to rasterize: vertices relative to `origin`, oriented so that
+// inside is positive, per-edge top-left biases, and its pixel bounding box clipped to the image
+// (x0 > x1 if empty).
+struct EdgeSetup {
+  ivec2 v0;
+  ivec2 v1;
+  ivec2 v2;
+  int bias0;
+  int bias1;
+  int bias2;
+  ivec4 bbox;    // x0, y0, x1, y1 inclusive
+  ivec2 origin;  // subpixels: (0, 0) from setupEdges, the lower corner from setupSmallEdges
+};
+
+// floor(v / 256): an arithmetic shift (defined for negative v in GLSL and in C++20).
+FN int floorDiv256(int v) { return v >> 8; }
+
+// The pixels whose centres lie in the subpixel box [lo, hi] (snapped coordinates, below 2^28),
+// clipped to the image: (x0, y0, x1, y1) inclusive, empty when x0 > x1 or y0 > y1, and then
+// just outside the image. Pixel x's centre is x * 256 + 128.
+FN ivec4 pixelBounds(ivec2 lo, ivec2 hi, uint width, uint height) {
+  int x0 = max(floorDiv256(lo.x - SUBPIXEL_HALF + 255), 0);
+  int y0 = max(floorDiv256(lo.y - SUBPIXEL_HALF + 255), 0);
+  int x1 = min(floorDiv256(hi.x - SUBPIXEL_HALF), int(width) - 1);
+  int y1 = min(floorDiv256(hi.y - SUBPIXEL_HALF), int(height) - 1);
+  return ivec4(min(x0, int(width)), min(y0, int(height)), max(x1, -1), max(y1, -1));
+}
+
+FN bool isEmpty(ivec4 box) { return box.x > box.z || box.y > box.w; }
+
+// Orients sub-triangle a b c, whose doubled area has the sign `areaSign`, and sets up its edge
+// biases. frontFacing says which screen orientation the whole triangle has; a sub-triangle whose
+// snapped orientation disagrees (snapping flipped a sliver) or whose snapped area is zero covers
+// nothing and is rejected (returns false).
+FN bool orientEdges(ivec2 a, ivec2 b, ivec2 c, int areaSign, bool frontFacing, OUT(EdgeSetup) s) {
+  if (areaSign == 0 || (areaSign < 0) != frontFacing) return false;
+  s.v0 = a;
+  s.v1 = frontFacing ? c : b;  // front faces are counter-clockwise on a y-down screen: flip them
+  s.v2 = frontFacing ? b : c;
+  s.bias0 = topLeftBias(s.v1, s.v2);
+  s.bias1 = topLeftBias(s.v2, s.v0);
+  s.bias2 = topLeftBias(s.v0, s.v1);
+  return true;
+}
+
+// Sets up sub-triangle a b c (snapped coordinates) with 64-bit edge functions: orientEdges, and
+// its pixel box. False where orientEdges rejects it or it covers no pixel centre of the image.
+FN bool setupEdges(ivec2 a, ivec2 b, ivec2 c, bool frontFacing, uint width, uint height, OUT(EdgeSetup) s) {
+  int64_t area = edgeFunction(i64vec2(a), i64vec2(b), i64vec2(c));
+  if (!orientEdges(a, b, c, area > int64_t(0) ? 1 : (area < int64_t(0) ? -1 : 0), frontFacing, s)) return false;
+  s.origin = ivec2(0);
+  s.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), width, height);
+  return !isEmpty(s.bbox);
+}
+
+// The subpixel position of pixel (x, y)'s centre.
+FN i64vec2 pixelCentre(int x, int y) {
+  return i64vec2(int64_t(x) * int64_t(SUBPIXEL_ONE) + int64_t(SUBPIXEL_HALF),
+                 int64_t(y) * int64_t(SUBPIXEL_ONE) + int64_t(SUBPIXEL_HALF));
+}
+
+FN bool covers(EdgeSetup s, i64vec2 p) {
+  i64vec2 q = p - i64vec2(s.origin);
+  return edgeFunction(i64vec2(s.v1), i64vec2(s.v2), q) + int64_t(s.bias0) >= int64_t(0) &&
+         edgeFunction(i64vec2(s.v2), i64vec2(s.v0), q) + int64_t(s.bias1) >= int64_t(0) &&
+         edgeFunction(i64vec2(s.v0), i64vec2(s.v1), q) + int64_t(s.bias2) >= int64_t(0);
+}
+
+SHARED_END
+
+#endif  // PHONGVK_EDGES_H

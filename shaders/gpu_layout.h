@@ -1,0 +1,155 @@
+// gpu_layout.h — what only the GPU renderer's passes and its host side share: workgroup sizes,
+// the bin and tile grid, the large triangles' lists, the pass-control block and the frame status.
+// The reference never includes it. C++ static_asserts keep the two sides' layouts equal.
+#ifndef PHONGVK_GPU_LAYOUT_H
+#define PHONGVK_GPU_LAYOUT_H
+
+#include "shared.h"
+
+#ifdef __cplusplus
+namespace phongvk::gpu {
+#endif
+
+// ---- Workgroup sizes (threads per group; converted to group counts once, on the host) ----
+// 64 threads: a multiple of NVIDIA's 32-wide warps and of lavapipe's 8-wide AVX2 SIMD lanes.
+PHONGVK_CONST uint SHADE_GROUP_SIZE = 64;
+PHONGVK_CONST uint SETUP_GROUP_SIZE = 64;
+PHONGVK_CONST uint CLIP_GROUP_SIZE = 64;
+PHONGVK_CONST uint BIN_GROUP_SIZE = 64;
+PHONGVK_CONST uint FILL_GROUP_SIZE = 64;
+PHONGVK_CONST uint PACK_GROUP_SIZE = 64;  // pack_colors.comp: four pixels an invocation
+// The image is cut into 32x32 pixel bins. Resolve takes one touched bin per workgroup and walks
+// it as 4x4 tiles of 8x8 pixels (resolve_large.comp, resolve_small.comp): the bin's large
+// triangles are loaded once per tile for all its pixels, and a bin nothing touched is skipped whole.
+PHONGVK_CONST uint TILE_SIZE = 8;
+PHONGVK_CONST uint BIN_SIZE = 32;
+PHONGVK_CONST uint BIN_TILES = BIN_SIZE / TILE_SIZE;  // tiles per bin side
+
+// ---- Small and large triangles ----
+// A triangle whose pixel bounding box has more than this many pixels is not rasterized by its
+// own invocation: its set-up is stored and linked into the list of every bin it overlaps, and
+// resolve rasterizes it there, tile by tile, keeping the smallest key in registers (no atomics).
+// Small triangles stay one invocation each, with atomicMin on the key buffer. With the shading
+// constants stored per set-up, a 2x2 grid of spheres of ~200-pixel triangles resolves 10% faster
+// binned than one invocation each (against a threshold of 1024); 128 measured the same as 256.
+PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 256;
+// The large triangles' buffers grow with the image, not the triangle count (a large triangle
+// covers many pixels, so few fit on screen at once): room for one set-up record (160 bytes) per
+// LARGE_SETUP_PIXELS pixels and one bin entry (16 bytes) per LARGE_ENTRY_PIXELS pixels, with the
+// minimums below. When a frame needs more, the host doubles them and renders it again
+// (STATUS_LARGE_OVERFLOW); they keep that size for the frames after.
+PHONGVK_CONST uint LARGE_SETUP_PIXELS = 512;
+PHONGVK_CONST uint LARGE_SETUPS_MIN = 256;
+PHONGVK_CONST uint LARGE_ENTRY_PIXELS = 64;
+PHONGVK_CONST uint LARGE_ENTRIES_MIN = 4096;
+PHONGVK_CONST uint LIST_END = 0xFFFFFFFFu;  // the end of a bin's list of large triangles
+// Bin flags (bindings.glsl binData): bit 0, listed for resolve; bit BIN_KEYS_SHIFT + t, some key of
+// the bin's tile t (row-major, BIN_TILES x BIN_TILES) was written by atomicMin.
+PHONGVK_CONST uint BIN_LISTED = 1;
+PHONGVK_CONST uint BIN_KEYS_SHIFT = 1;
+
+// ---- Dispatch ----
+// Dispatches are capped at the smallest maxComputeWorkGroupCount[0] Vulkan allows; the shaders
+// loop (grid-stride) when there is more work than that many groups. On a CPU device (lavapipe)
+// every workgroup costs about 0.6 us of scheduling however little it does, so there the cap is
+// CPU_DISPATCH_GROUPS: a few groups per core, each looping over many items.
+PHONGVK_CONST uint MAX_DISPATCH_GROUPS = 65535;
+PHONGVK_CONST uint CPU_DISPATCH_GROUPS = 256;
+// probe_float.comp: results per probe (native a / b, sqrt, fma; the quotient and root corrected) and group size.
+PHONGVK_CONST uint FLOAT_PROBE_RESULTS = 5;
+PHONGVK_CONST uint FLOAT_PROBE_GROUP_SIZE = 64;
+
+// Where resolve leaves a pixel's colour (SPEC_RESOLVE_OUTPUT): into its key slot (color_slots.h
+// colorSlot), read from there by the host or packed into the colour buffer by pack_colors.comp; or,
+// in frames that keep their keys (diffs), into the colour buffer, the final key kept.
+PHONGVK_CONST uint RESOLVE_OUTPUT_KEY_SLOTS = 0;
+PHONGVK_CONST uint RESOLVE_OUTPUT_KEEP_KEYS = 2;
+
+// FrameStatus.flags. STATUS_LARGE_OVERFLOW: a large triangle found no room in the set-up records
+// or bin entries (the host grows them). STATUS_LOOP_LIMIT: a pass ran out of the loop iterations
+// the device allows one invocation (bindings.glsl checkLoopBudget; the host launches more
+// workgroups, each taking fewer items). Either way the host renders the frame again.
+PHONGVK_CONST uint STATUS_LARGE_OVERFLOW = 1;
+PHONGVK_CONST uint STATUS_LOOP_LIMIT = 2;
+// Iterations of the loop-budget probe (PassControl.loopProbe; a uniform value, so no compiler unrolls it).
+PHONGVK_CONST uint LOOP_PROBE_ITERATIONS = 2;
+
+// What the GPU renderer tells its passes beside the frame: work counts, list capacities, the bin
+// grid, the workgroup cap and which parts of the shade pass run. Written by the renderer alone
+// (host/gpu_frame.cpp), once per attempt at a frame.
+struct PassControl {
+  uint vertexCount;
+  uint triangleCount;
+  uint largeCapacity;       // bin entries the large list can hold
+  uint largeSetupCapacity;  // large-triangle set-up records the buffer can hold
+  uint binsX;               // bins per row: ceil(width / BIN_SIZE)
+  uint binCount;            // binsX * bins down
+  uint groupCap;            // most workgroups a pass launches; the passes grid-stride beyond it
+  uint loopProbe;           // LOOP_PROBE_ITERATIONS
+  uint shadeColors;         // 0: colours from the previous frame are still right, only transform
+  uint shadePositions;      // 0: the shaded positions of the previous frame are still right (same
+                            // view and objects); with shadeColors 0 too the shade pass is skipped
+  uint pad0;
+  uint pad1;
+};
+
+// What went wrong in a frame (STATUS_* flags); the host clears it before each submission.
+struct FrameStatus {
+  uint flags;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// Header of the touched-bin list. The bin buffer holds this header, then per bin its flags
+// (BIN_LISTED, BIN_KEYS), then per bin the first entry of its large-triangle list (LIST_END when
+// empty), then the touched bins as x | y << 16 in the order they were first touched; resolve is an
+// indirect dispatch over those. The host resets flags and heads before each frame.
+struct BinList {
+  uint count;        // bins touched
+  uint groupsX;      // indirect dispatch (min(count, control.groupCap), 1, 1)
+  uint groupsY;      // 1: every dispatch is one row of workgroups (bindings.glsl runtimeOne)
+  uint groupsZ;
+};
+
+// Header of a list of triangle ids that an indirect dispatch then walks (the clip list).
+struct IdList {
+  uint count;
+  uint groupsX;      // indirect dispatch (min(count / CLIP_GROUP_SIZE rounded up, groupCap), 1, 1)
+  uint groupsY;      // 1, as BinList's
+  uint groupsZ;
+  uint binGroupsX;   // the bin pass's indirect dispatch (WorkLayout::Gpu): the large list's
+  uint binGroupsY;   // entries over BIN_GROUP_SIZE, capped at groupCap; (0, 1, 1) without any
+  uint binGroupsZ;
+  uint pad;
+};
+
+// Header of the large triangles' bin entries (LargeEntry), which follow it in the buffer, each
+// bin's list threaded through them from its head.
+struct LargeList {
+  uint count;        // entries reserved (may exceed the capacity: the frame is then rendered again)
+  uint setups;       // set-up slots reserved (likewise)
+  uint pad0;
+  uint pad1;
+};
+
+// One large triangle in one bin's list: its set-up slot, the next entry of the bin (LIST_END: none),
+// the bin's tiles it may cover (bit j * BIN_TILES + i for tile (i, j), large_triangles.h
+// binTileMasks; resolve skips the others without reading the set-up) and those of them it owns
+// (covers every pixel centre of, never past the far plane). Before the bin pass links an entry,
+// `owned` holds the triangle's first entry (bin_large.comp).
+struct LargeEntry {
+  uint slot;
+  uint next;
+  uint tiles;
+  uint owned;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) == 32);
+static_assert(sizeof(FrameStatus) == 16);
+static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 32);
+}  // namespace phongvk::gpu
+#endif
+
+#endif  // PHONGVK_GPU_LAYOUT_H

@@ -1,0 +1,216 @@
+// large_triangles.h — the GPU renderer's large triangles, binned and rasterized by resolve a block
+// of pixels at a time: the stored set-up (LargeSetup), the tiles of a bin a triangle may cover or
+// owns, and edge values stepped across a block. Not part of the contract: the keys and colours
+// are the reference's (edges.h covers, depth.h planeKey, gouraud.h), which the tests check pixel
+// by pixel.
+#ifndef PHONGVK_LARGE_TRIANGLES_H
+#define PHONGVK_LARGE_TRIANGLES_H
+
+#include "glsl_cpp.h"
+#include "shared.h"
+#include "gpu_layout.h"
+#include "edges.h"
+#include "depth.h"
+#include "gouraud.h"
+#include "triangle_setup.h"
+
+SHARED_BEGIN
+
+// What resolve needs of a large sub-triangle, set up once by the triangle or clip pass (std430,
+// 80 bytes): its oriented vertices and edge biases (EdgeSetup in 32 bits: snapped coordinates
+// stay below 2^28), box, plane, depth range and id.
+struct LargeTriangle {
+  ivec4 bbox;
+  TrianglePlane plane;
+  ivec2 v0;
+  ivec2 v1;
+  ivec2 v2;
+  int bias0;
+  int bias1;
+  int bias2;
+  float zMin;
+  float zMax;
+  uint triangle;
+};
+
+FN LargeTriangle largeTriangle(TriangleSetup t, EdgeSetup s) {
+  LargeTriangle l;
+  l.bbox = s.bbox;
+  l.plane = t.plane;
+  l.v0 = s.origin + s.v0;  // snapped coordinates again (setupEdges' origin is 0)
+  l.v1 = s.origin + s.v1;
+  l.v2 = s.origin + s.v2;
+  l.bias0 = s.bias0;
+  l.bias1 = s.bias1;
+  l.bias2 = s.bias2;
+  l.zMin = t.zMin;
+  l.zMax = t.zMax;
+  l.triangle = t.triangle;
+  return l;
+}
+
+// The three edge functions (plus biases) at the centre of pixel `origin`, the first of a block.
+struct BlockEdges {
+  int64_t e0;
+  int64_t e1;
+  int64_t e2;
+};
+
+FN BlockEdges blockEdges(LargeTriangle t, ivec2 origin) {
+  i64vec2 p = pixelCentre(origin.x, origin.y);
+  BlockEdges e;
+  e.e0 = edgeFunction(i64vec2(t.v1), i64vec2(t.v2), p) + int64_t(t.bias0);
+  e.e1 = edgeFunction(i64vec2(t.v2), i64vec2(t.v0), p) + int64_t(t.bias1);
+  e.e2 = edgeFunction(i64vec2(t.v0), i64vec2(t.v1), p) + int64_t(t.bias2);
+  return e;
+}
+
+// Edge a -> b's function at pixel origin + (i, j), from its value e there: one pixel right adds
+// 256 (a.y - b.y), one down 256 (b.x - a.x). Exact, so it equals edgeFunction at that centre.
+FN int64_t edgeStep(ivec2 a, ivec2 b, int64_t e, int i, int j) {
+  return e + int64_t(a.y - b.y) * int64_t(SUBPIXEL_ONE * i) + int64_t(b.x - a.x) * int64_t(SUBPIXEL_ONE * j);
+}
+
+// How a block relates to a large triangle's pixel centres: none covered, some may be, all covered.
+PHONGVK_CONST int BLOCK_OUTSIDE = 0;
+PHONGVK_CONST int BLOCK_PARTIAL = 1;
+PHONGVK_CONST int BLOCK_INSIDE = 2;
+
+// One edge over the size x size block at pixel `origin`: the function is affine, so its extremes
+// are at the corner pixels, reached by stepping from e.
+FN int classifyEdge(ivec2 a, ivec2 b, int64_t e, int size) {
+  int64_t right = edgeStep(a, b, int64_t(0), size - 1, 0);
+  int64_t down = edgeStep(a, b, int64_t(0), 0, size - 1);
+  int64_t lo = e + min(right, int64_t(0)) + min(down, int64_t(0));
+  int64_t hi = e + max(right, int64_t(0)) + max(down, int64_t(0));
+  if (hi < int64_t(0)) return BLOCK_OUTSIDE;
+  return lo >= int64_t(0) ? BLOCK_INSIDE : BLOCK_PARTIAL;
+}
+
+// BLOCK_INSIDE: covers() holds at every pixel centre of the size x size block at `origin` (which
+// may reach past the image); BLOCK_OUTSIDE: at none (within the image); else test each pixel.
+FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
+  if (origin.x > t.bbox.z || origin.x + size - 1 < t.bbox.x || origin.y > t.bbox.w || origin.y + size - 1 < t.bbox.y) {
+    return BLOCK_OUTSIDE;
+  }
+  int c0 = classifyEdge(t.v1, t.v2, e.e0, size);
+  int c1 = classifyEdge(t.v2, t.v0, e.e1, size);
+  int c2 = classifyEdge(t.v0, t.v1, e.e2, size);
+  return min(c0, min(c1, c2));
+}
+
+// The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre (x): bit
+// j * BIN_TILES + i for tile (i, j) unless classifyBlock calls it outside, 0 for none; and those
+// it owns (y): every pixel centre of the tile covered (BLOCK_INSIDE) and no depth of the triangle
+// past the far plane, so wherever nothing else reaches such a tile the triangle wins each of its
+// pixels without a depth test (resolve_large.comp). Unrolled: lavapipe counts every loop
+// iteration against one invocation's budget (bindings.glsl checkLoopBudget), and 16 of them per
+// bin of a triangle across a 4K image's 8160 bins pass it.
+FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) {
+  BlockEdges e = blockEdges(t, origin);
+  uvec2 masks = uvec2(0u);
+  UNROLL for (int j = 0; j < int(BIN_TILES); ++j) {
+    UNROLL for (int i = 0; i < int(BIN_TILES); ++i) {
+      ivec2 step = ivec2(i, j) * int(TILE_SIZE);
+      BlockEdges tile;
+      tile.e0 = edgeStep(t.v1, t.v2, e.e0, step.x, step.y);
+      tile.e1 = edgeStep(t.v2, t.v0, e.e1, step.x, step.y);
+      tile.e2 = edgeStep(t.v0, t.v1, e.e2, step.x, step.y);
+      int block = classifyBlock(t, tile, origin + step, int(TILE_SIZE));
+      uint bit = 1u << uint(j * int(BIN_TILES) + i);
+      if (block != BLOCK_OUTSIDE) masks.x |= bit;
+      if (block == BLOCK_INSIDE) masks.y |= bit;
+    }
+  }
+  if (!(t.zMax <= farPlane)) masks.y = 0u;
+  return masks;
+}
+
+// The edge values walking down column i of a block: at the current row (starting at row 0), and
+// what one row down adds. Integer steps, so each row's values are exactly edgeFunction's there.
+struct ColumnEdges {
+  BlockEdges at;
+  BlockEdges down;
+};
+
+FN ColumnEdges columnEdges(LargeTriangle t, BlockEdges e, int i) {
+  ColumnEdges c;
+  c.at.e0 = edgeStep(t.v1, t.v2, e.e0, i, 0);
+  c.at.e1 = edgeStep(t.v2, t.v0, e.e1, i, 0);
+  c.at.e2 = edgeStep(t.v0, t.v1, e.e2, i, 0);
+  c.down.e0 = edgeStep(t.v1, t.v2, int64_t(0), 0, 1);
+  c.down.e1 = edgeStep(t.v2, t.v0, int64_t(0), 0, 1);
+  c.down.e2 = edgeStep(t.v0, t.v1, int64_t(0), 0, 1);
+  return c;
+}
+
+FN bool columnCovers(ColumnEdges c) {
+  return c.at.e0 >= int64_t(0) && c.at.e1 >= int64_t(0) && c.at.e2 >= int64_t(0);
+}
+
+FN ColumnEdges nextRow(ColumnEdges c) {
+  c.at.e0 += c.down.e0;
+  c.at.e1 += c.down.e1;
+  c.at.e2 += c.down.e2;
+  return c;
+}
+
+
+// A large triangle's GouraudTriangle as resolve reads it for each tile the triangle may cover:
+// stored with its set-up by the clip pass (LargeSetup) instead of the triangle's index, its three
+// vertices' positions and colours and the products above. n and det are the triangle plane's n
+// and h0n (trianglePlane: the same products of the same positions), so they are not stored; and
+// since perspective-correct interpolation reads only t0..t3, resolve reads t4 (W) only for
+// screen-space interpolation.
+struct LargeShading {
+  vec4 t0;  // u1, c0.x
+  vec4 t1;  // u2, c0.y
+  vec4 t2;  // dc1, c0.z
+  vec4 t3;  // dc2, 0
+  vec4 t4;  // w1, w2, 0, 0
+};
+
+FN LargeShading packShading(GouraudTriangle g) {
+  LargeShading s;
+  s.t0 = vec4(g.u1, g.c0.x);
+  s.t1 = vec4(g.u2, g.c0.y);
+  s.t2 = vec4(g.dc1, g.c0.z);
+  s.t3 = vec4(g.dc2, 0.0f);
+  s.t4 = vec4(g.w1, g.w2, 0.0f, 0.0f);
+  return s;
+}
+
+// The GouraudTriangle that packShading(g) kept, with n and det from g's triangle's plane: every
+// field equals g's, bit for bit (t4 may be left zero in perspective mode, which does not read W).
+// With n shared, the dot product of the pixel ray and n is the same value in depthAt and in
+// interpolateColor, computed once per pixel.
+FN GouraudTriangle unpackShading(LargeShading s, TrianglePlane plane) {
+  GouraudTriangle g;
+  g.u1 = vec3(s.t0);
+  g.u2 = vec3(s.t1);
+  g.c0 = vec3(s.t0.w, s.t1.w, s.t2.w);
+  g.n = plane.n;
+  g.det = plane.h0n;
+  g.w1 = s.t4.x;
+  g.w2 = s.t4.y;
+  g.dc1 = vec3(s.t2);
+  g.dc2 = vec3(s.t3);
+  return g;
+}
+
+// bin-entry loop reads both halves for each tile the triangle may cover (LargeEntry.tiles).
+struct LargeSetup {
+  LargeTriangle raster;
+  LargeShading shading;
+};
+
+SHARED_END
+
+#ifdef __cplusplus
+static_assert(sizeof(phongvk::gpu::LargeSetup) == 160 && offsetof(phongvk::gpu::LargeSetup, shading) == 80);
+static_assert(sizeof(phongvk::gpu::LargeTriangle) == 80 && offsetof(phongvk::gpu::LargeTriangle, v0) == 32);
+static_assert(offsetof(phongvk::gpu::LargeTriangle, zMin) == 68 && offsetof(phongvk::gpu::LargeTriangle, triangle) == 76);
+static_assert(offsetof(phongvk::gpu::LargeTriangle, bias0) == 56 && offsetof(phongvk::gpu::LargeTriangle, bias2) == 64);
+#endif
+
+#endif  // PHONGVK_LARGE_TRIANGLES_H
