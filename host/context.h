@@ -1,4 +1,5 @@
-// context.h — the Vulkan instance, the chosen device and its compute queue (volk-loaded, headless).
+// context.h — the Vulkan instance, the chosen device and its compute queue (volk-loaded, headless);
+// built in instance.cpp (loader, instance, validation), device.cpp (choice, device) and context.cpp.
 //
 // phongvk needs Vulkan 1.2, shaderInt64 and shaderBufferInt64Atomics (the renderer resolves
 // visibility with 64-bit atomicMin on a storage buffer), storageBuffer8BitAccess (resolve writes
