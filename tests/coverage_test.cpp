@@ -3,13 +3,8 @@
 // images. Here raster.h's own setup and coverage functions are called directly and every pixel
 // centre's coverage is counted: meshes that tile a region with shared edges must cover every
 // pixel centre inside it exactly once, at every subpixel offset, in every orientation.
-#include "shaders/color_slots.h"
-#include "shaders/gouraud.h"
-#include "shaders/large_triangles.h"
-#include "shaders/row_spans.h"
-#include "shaders/small_triangles.h"
-#include "shaders/triangle_setup.h"
 
+#include "shaders/triangle_setup.h"
 #include "stress_geometry.h"
 
 #include <gtest/gtest.h>

@@ -3,17 +3,12 @@
 // committed scenes are the agreement measured on lavapipe with a margin (at most a few
 // silhouette pixels differ by more than one level). Flat colours, the background, culling and
 // repeatability are asserted exactly. Every test runs with validation on and fails on a message.
+#include "shaders/gouraud.h"
 #include "host/context.h"
 #include "reference/render_reference.h"
 #include "host/graphics_renderer.h"
 #include "scene/camera.h"
 #include "phongvk/compare.h"
-#include "shaders/color_slots.h"
-#include "shaders/gouraud.h"
-#include "shaders/large_triangles.h"
-#include "shaders/row_spans.h"
-#include "shaders/small_triangles.h"
-#include "shaders/triangle_setup.h"
 #include "test_util.h"
 
 #include <gtest/gtest.h>

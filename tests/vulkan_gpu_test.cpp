@@ -63,11 +63,11 @@ class VulkanTest : public ::testing::Test {
   std::shared_ptr<ValidationLog> log;
 };
 
-TEST(VkCheck, MessageNamesFileLineCallAndResult) {
-  auto failingCall = [] { return VK_ERROR_OUT_OF_DEVICE_MEMORY; };
-  std::string message = thrownMessage<VulkanError>([&] { VK_CHECK(failingCall()); });
-  EXPECT_NE(message.find("vulkan_gpu_test.cpp:"), std::string::npos) << message;
-  EXPECT_NE(message.find(": failingCall() failed: VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << message;
+// Fills `count` bytes with a pattern whose every byte depends on its position.
+std::vector<uint8_t> pattern(size_t count, uint8_t seed) {
+  std::vector<uint8_t> bytes(count);
+  for (size_t i = 0; i < count; ++i) bytes[i] = static_cast<uint8_t>(i * 31 + seed);
+  return bytes;
 }
 
 TEST_F(VulkanTest, ContextHasASuitableDeviceWithComputeQueue) {
@@ -102,57 +102,6 @@ TEST_F(VulkanTest, OutOfRangeDeviceIndexIsNamedInTheError) {
   std::string message = thrownMessage<NoDeviceError>([] { createContext({.deviceIndex = 99, .validate = true}); });
   EXPECT_NE(message.find("Vulkan device index 99 is out of range"), std::string::npos) << message;
   EXPECT_NE(message.find("usable"), std::string::npos) << "the message lists the devices: " << message;
-}
-
-TEST(DeviceList, FormatSaysWhyADeviceIsRejected) {
-  DeviceInfo report{3, "Old GPU", "discrete GPU", "1.1.0", false, {"Vulkan 1.2", "shaderBufferInt64Atomics"}};
-  EXPECT_EQ(formatDeviceList({report}),
-            "[3] Old GPU \u2014 discrete GPU, Vulkan 1.1.0 \u2014 rejected: missing Vulkan 1.2, "
-            "shaderBufferInt64Atomics\n");
-}
-
-DeviceInfo fakeDevice(uint32_t index, std::string type, std::vector<std::string> missing) {
-  return {index, "Device" + std::to_string(index), std::move(type), "1.3.0", missing.empty(), std::move(missing)};
-}
-
-TEST(ChooseDevice, PrefersADiscreteGpuOverAnEarlierCpu) {
-  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "integrated GPU", {}),
-                                       fakeDevice(2, "discrete GPU", {}), fakeDevice(3, "discrete GPU", {})};
-  EXPECT_EQ(chooseDevice(devices, -1), 2u);  // the first of equal rank
-  EXPECT_EQ(chooseDevice(devices, 0), 0u);   // an explicit index wins over rank
-}
-
-TEST(ChooseDevice, SkipsUnsuitableDevicesWhateverTheirRank) {
-  std::vector<DeviceInfo> devices = {fakeDevice(0, "discrete GPU", {"shaderBufferInt64Atomics"}),
-                                       fakeDevice(1, "CPU", {})};
-  EXPECT_EQ(chooseDevice(devices, -1), 1u);
-}
-
-TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
-  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {"shaderBufferInt64Atomics"}),
-                                       fakeDevice(1, "discrete GPU", {"Vulkan 1.2", "a compute queue"})};
-  EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, -1); }),
-            "no usable Vulkan device (phongvk needs Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, "
-            "storageBuffer8BitAccess and a compute queue): [0] Device0 (missing shaderBufferInt64Atomics); "
-            "[1] Device1 (missing Vulkan 1.2, a compute queue)");
-}
-
-TEST(ChooseDevice, RequestedUnsuitableDeviceSaysWhatItLacks) {
-  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "discrete GPU", {"shaderInt64"})};
-  EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, 1); }),
-            "Vulkan device 1 (Device1) is not usable: missing shaderInt64");
-}
-
-TEST(ChooseDevice, NoDevicesAtAll) {
-  std::string message = thrownMessage<NoDeviceError>([] { chooseDevice({}, -1); });
-  EXPECT_NE(message.find("install mesa-vulkan-drivers"), std::string::npos) << message;
-}
-
-// Fills `count` bytes with a pattern whose every byte depends on its position.
-std::vector<uint8_t> pattern(size_t count, uint8_t seed) {
-  std::vector<uint8_t> bytes(count);
-  for (size_t i = 0; i < count; ++i) bytes[i] = static_cast<uint8_t>(i * 31 + seed);
-  return bytes;
 }
 
 TEST_F(VulkanTest, HostVisibleBufferRoundTripsAndIsMapped) {
@@ -299,14 +248,6 @@ TEST(ValidationLog, MissingBarrierIsReportedAsASyncHazard) {
   EXPECT_TRUE(std::any_of(messages.begin(), messages.end(),
                           [](const std::string& m) { return m.find("SYNC-HAZARD-") != std::string::npos; }))
       << messages.size() << " messages";
-}
-
-TEST(GroupCount, RoundsUpWithoutOverflow) {
-  EXPECT_EQ(groupCount(0, 64), 0u);
-  EXPECT_EQ(groupCount(1, 64), 1u);
-  EXPECT_EQ(groupCount(64, 64), 1u);
-  EXPECT_EQ(groupCount(65, 64), 2u);
-  EXPECT_EQ(groupCount(UINT32_MAX, 64), 67108864u);  // (2^32 - 1 + 63) / 64 would overflow
 }
 
 TEST_F(VulkanTest, TimestampsMeasureNonNegativeMilliseconds) {

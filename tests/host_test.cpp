@@ -1,0 +1,87 @@
+// host_test.cpp — the Vulkan side's logic that needs no device: the device choice and its messages,
+// the list `phongvk devices` prints, VK_CHECK's message, workgroup counts.
+#include "host/context.h"
+#include "host/pipelines.h"
+#include "host/vk_check.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace phongvk {
+namespace {
+
+// The message of the exception `call` throws as E, or a failure if it throws nothing.
+template <typename E, typename F>
+std::string thrownMessage(F&& call) {
+  try {
+    call();
+  } catch (const E& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "nothing was thrown";
+  return "";
+}
+
+TEST(VkCheck, MessageNamesFileLineCallAndResult) {
+  auto failingCall = [] { return VK_ERROR_OUT_OF_DEVICE_MEMORY; };
+  std::string message = thrownMessage<VulkanError>([&] { VK_CHECK(failingCall()); });
+  EXPECT_NE(message.find("tests/host_test.cpp:29:"), std::string::npos) << message;
+  EXPECT_NE(message.find(": failingCall() failed: VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << message;
+}
+
+TEST(DeviceList, FormatSaysWhyADeviceIsRejected) {
+  DeviceInfo report{3, "Old GPU", "discrete GPU", "1.1.0", false, {"Vulkan 1.2", "shaderBufferInt64Atomics"}};
+  EXPECT_EQ(formatDeviceList({report}),
+            "[3] Old GPU \u2014 discrete GPU, Vulkan 1.1.0 \u2014 rejected: missing Vulkan 1.2, "
+            "shaderBufferInt64Atomics\n");
+}
+
+DeviceInfo fakeDevice(uint32_t index, std::string type, std::vector<std::string> missing) {
+  return {index, "Device" + std::to_string(index), std::move(type), "1.3.0", missing.empty(), std::move(missing)};
+}
+
+TEST(ChooseDevice, PrefersADiscreteGpuOverAnEarlierCpu) {
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "integrated GPU", {}),
+                                       fakeDevice(2, "discrete GPU", {}), fakeDevice(3, "discrete GPU", {})};
+  EXPECT_EQ(chooseDevice(devices, -1), 2u);  // the first of equal rank
+  EXPECT_EQ(chooseDevice(devices, 0), 0u);   // an explicit index wins over rank
+}
+
+TEST(ChooseDevice, SkipsUnsuitableDevicesWhateverTheirRank) {
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "discrete GPU", {"shaderBufferInt64Atomics"}),
+                                       fakeDevice(1, "CPU", {})};
+  EXPECT_EQ(chooseDevice(devices, -1), 1u);
+}
+
+TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {"shaderBufferInt64Atomics"}),
+                                       fakeDevice(1, "discrete GPU", {"Vulkan 1.2", "a compute queue"})};
+  EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, -1); }),
+            "no usable Vulkan device (phongvk needs Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, "
+            "storageBuffer8BitAccess and a compute queue): [0] Device0 (missing shaderBufferInt64Atomics); "
+            "[1] Device1 (missing Vulkan 1.2, a compute queue)");
+}
+
+TEST(ChooseDevice, RequestedUnsuitableDeviceSaysWhatItLacks) {
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "discrete GPU", {"shaderInt64"})};
+  EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, 1); }),
+            "Vulkan device 1 (Device1) is not usable: missing shaderInt64");
+}
+
+TEST(ChooseDevice, NoDevicesAtAll) {
+  std::string message = thrownMessage<NoDeviceError>([] { chooseDevice({}, -1); });
+  EXPECT_NE(message.find("install mesa-vulkan-drivers"), std::string::npos) << message;
+}
+
+TEST(GroupCount, RoundsUpWithoutOverflow) {
+  EXPECT_EQ(groupCount(0, 64), 0u);
+  EXPECT_EQ(groupCount(1, 64), 1u);
+  EXPECT_EQ(groupCount(64, 64), 1u);
+  EXPECT_EQ(groupCount(65, 64), 2u);
+  EXPECT_EQ(groupCount(UINT32_MAX, 64), 67108864u);  // (2^32 - 1 + 63) / 64 would overflow
+}
+
+}  // namespace
+}  // namespace phongvk

@@ -1,0 +1,110 @@
+// obj_import_test.cpp — `mesh` objects from OBJ files (obj_import.h): normals kept or computed,
+// subdivision, numbers in every form, and errors naming the JSON path, the file and the line.
+#include "scene/mesh.h"
+#include "tests/mesh_checks.h"
+#include "tests/test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace phongvk {
+namespace {
+
+using namespace test;
+
+Object objObject(const std::string& file) {
+  Object object = makeObject(Shape::Mesh);
+  object.jsonPath = "objects[6]";
+  object.file = file;
+  object.closed = false;
+  return object;
+}
+
+TEST(ObjMesh, FileNormalsAreKept) {
+  Object object = objObject(test::sourcePath("tests/data/meshes/tetrahedron_normals.obj"));
+  object.scale = 2;
+  object.translate = {5, 6, 7};
+  ObjectMesh m = buildObjectMesh(object);
+  EXPECT_EQ(m.origin, glm::dvec3(5, 6, 7));
+  EXPECT_FALSE(m.closed);  // passed through from the object
+  EXPECT_EQ(m.mesh.triangles.size(), 4u);
+  EXPECT_EQ(m.mesh.positions.size(), 12u);  // 4 corners x 3 faces, one normal each
+  expectClosedConvexShape(m.mesh, {0.5, 0.5, 0.5});
+  for (const glm::uvec3& t : m.mesh.triangles) {  // flat: the file's face normals, normalised
+    const glm::dvec3 n = glm::normalize(faceCross(m.mesh, t));
+    for (uint32_t v : {t.x, t.y, t.z})
+      EXPECT_NEAR(glm::length(glm::dvec3(m.mesh.normals[v]) - n), 0.0, 1e-6);
+  }
+  float largest = 0;
+  for (const glm::vec3& p : m.mesh.positions) largest = std::max({largest, p.x, p.y, p.z});
+  EXPECT_EQ(largest, 2.0f);  // scaled, local to the translation
+}
+
+TEST(ObjMesh, MissingNormalsAreComputedOnSharedVertices) {
+  Object object = objObject(test::sourcePath("tests/data/meshes/cube_quads.obj"));
+  object.closed = true;
+  ObjectMesh m = buildObjectMesh(object);
+  EXPECT_TRUE(m.closed);
+  EXPECT_EQ(m.mesh.triangles.size(), 12u);  // 6 quads, triangulated
+  EXPECT_EQ(m.mesh.positions.size(), 8u);   // welded by the file's position index
+  expectClosedConvexShape(m.mesh, {0.5, 0.5, 0.5});
+}
+
+TEST(ObjMesh, SubdividesFlat) {
+  Object object = objObject(test::sourcePath("tests/data/meshes/cube_quads.obj"));
+  object.subdivide = 2;
+  ObjectMesh m = buildObjectMesh(object);
+  EXPECT_EQ(m.mesh.triangles.size(), 12u * 16);
+  EXPECT_TRUE(isWatertight(m.mesh));
+  EXPECT_TRUE(normalsPointOut(m.mesh, {0.5, 0.5, 0.5}));
+  for (const glm::vec3& p : m.mesh.positions)  // still on the cube's surface
+    EXPECT_TRUE(p.x == 0 || p.x == 1 || p.y == 0 || p.y == 1 || p.z == 0 || p.z == 1);
+}
+
+void expectObjError(const std::string& text, const std::string& why) {
+  const std::string path = test::makeTempDir() + "/bad.obj";
+  test::writeFile(path, text);
+  EXPECT_EQ(buildError(objObject(path)), "objects[6].file: " + path + ": " + why);
+}
+
+TEST(ObjMesh, BadFilesNameTheJsonPathAndTheFile) {
+  expectObjError("this is not\nan OBJ file \x01\x02\n", "no triangles (no 'f' lines)");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+                 "a face's vertex index is out of range (the file has 3 vertices)");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -7\n",
+                 "a face's vertex index is out of range (the file has 3 vertices)");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 9\n",
+                 "a face's vertex index is out of range");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n",
+                 "every triangle is degenerate (zero area)");
+  // tinyobjloader reads these as 0; they must not become a vertex at the origin.
+  expectObjError("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: 'nan' in a 'v' line is not a number");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n", "line 3: '-inf' in a 'v' line is not a number");
+  expectObjError("v 0 0 0\nv 0x1p3 0 0\nv 0 1 0\nf 1 2 3\n", "line 2: '0x1p3' in a 'v' line is not a number");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1e\nf 1//1 2//1 3//1\n",
+                 "line 4: '1e' in a 'vn' line is not a number");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt . 0\nf 1 2 3\n", "line 4: '.' in a 'vt' line is not a number");
+}
+
+TEST(ObjMesh, PlainNumbersInEveryFormAreRead) {
+  // Signs, no digits before or after the point, exponents.
+  const std::string path = test::makeTempDir() + "/numbers.obj";
+  test::writeFile(path, "v +0 -0. .0\nv 1.5E+0 0 0\nv 0 2e-0 0\nf 1 2 3\n");
+  ObjectMesh m = buildObjectMesh(objObject(path));
+  ASSERT_EQ(m.mesh.triangles.size(), 1u);
+  EXPECT_EQ(m.mesh.positions[1].x - m.mesh.positions[0].x, 1.5f);
+  EXPECT_EQ(m.mesh.positions[2].y - m.mesh.positions[0].y, 2.0f);
+}
+
+TEST(ObjMesh, MissingFileIsAnError) {
+  const std::string path = test::makeTempDir() + "/missing.obj";
+  EXPECT_EQ(buildError(objObject(path)), "objects[6].file: " + path + ": cannot open the file");
+}
+
+}  // namespace
+}  // namespace phongvk
