@@ -15,5 +15,8 @@ configure_package_config_file(cmake/phongvkConfig.cmake.in ${PROJECT_BINARY_DIR}
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/phongvkConfigVersion.cmake COMPATIBILITY SameMajorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/phongvkConfig.cmake ${PROJECT_BINARY_DIR}/phongvkConfigVersion.cmake
         DESTINATION ${PHONGVK_CMAKE_DIR})
+# Relocatable: the prefix is found from the .pc file's own folder, so `cmake --install --prefix`
+# anywhere gives a working file.
+file(RELATIVE_PATH PHONGVK_PC_TO_PREFIX ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
 configure_file(cmake/phongvk.pc.in ${PROJECT_BINARY_DIR}/phongvk.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/phongvk.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

@@ -1,0 +1,126 @@
+// api_gpu_test.cpp — the public API (include/phongvk) through libphongvk.so alone, as an outside
+// project links it: scenes and sequences, both renderers giving the same bytes and keys, a renderer
+// keeping its meshes across scenes of the same geometry, diff, and the error types.
+#include <phongvk/phongvk.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace phongvk {
+namespace {
+
+std::string source(const std::string& relative) { return std::string(PHONGVK_SOURCE_DIR) + "/" + relative; }
+
+RendererOptions validatedGpu() { return {Backend::Gpu, -1, true}; }
+
+TEST(Api, BothBackendsGiveTheSameBytesAndKeys) {
+  const Scene scene = loadScene(source("scenes/paper/fig1_cube.json"));
+  EXPECT_EQ(scene.width(), 1385);
+  EXPECT_EQ(scene.height(), 923);
+  EXPECT_EQ(scene.objectCount(), 2u);
+  Renderer gpu(validatedGpu());
+  Renderer cpu(Backend::Cpu);
+  const RenderOutput a = gpu.renderWithKeys(scene);
+  const RenderOutput b = cpu.renderWithKeys(scene);
+  ASSERT_EQ(a.image.width, 1385);
+  ASSERT_EQ(a.image.rgb.size(), size_t(1385) * 923 * 3);
+  EXPECT_TRUE(a.image.rgb == b.image.rgb);
+  EXPECT_TRUE(a.keys == b.keys);
+  EXPECT_TRUE(gpu.render(scene).rgb == a.image.rgb);  // without keys: other resolve paths, same image
+  EXPECT_EQ(gpu.stats().validationMessages, 0u);
+}
+
+// Another size, other materials: the meshes stay; other geometry: built again.
+TEST(Api, RendererKeepsItsMeshesWhileTheGeometryStaysTheSame) {
+  const Scene scene = loadScene(source("scenes/basic.json"));
+  Renderer gpu(validatedGpu());
+  Renderer cpu(Backend::Cpu);
+  const Scene small = scene.withImageSize(96, 64);
+  const Scene relit = parseScene(R"({"camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 64, "height": 48},
+      "lights": [{"position": [1, 1, 2]}], "materials": {"m": {"ks": 0.2}},
+      "objects": [{"shape": "sphere", "material": "m"}]})");
+  const Scene recoloured = parseScene(R"({"camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 64, "height": 48},
+      "lights": [{"position": [1, 1, 2], "color": [1, 0, 0]}], "materials": {"m": {"ks": 0.9}},
+      "objects": [{"shape": "sphere", "material": "m"}]})");
+  for (const Scene* s : {&scene, &small, &relit, &recoloured}) {
+    EXPECT_TRUE(gpu.render(*s).rgb == cpu.render(*s).rgb) << s->width() << "x" << s->height();
+  }
+  EXPECT_EQ(gpu.stats().sceneBuilds, 2u);  // basic.json, then the sphere
+  EXPECT_EQ(gpu.stats().framesRendered, 4u);
+  EXPECT_EQ(cpu.stats().sceneBuilds, 2u);
+  EXPECT_EQ(gpu.stats().triangles, 960u);  // a 32-segment sphere
+}
+
+TEST(Api, BadSceneIsASceneErrorNamingTheFileAndThePath) {
+  try {
+    parseScene(R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0]},
+                   "objects": [{"shape": "sphere", "material": {"ks": -1}}]})",
+               "inline.json");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "inline.json: objects[0].material.ks: must be >= 0, got -1");
+  }
+  EXPECT_THROW(loadScene(source("scenes/no_such_scene.json")), SceneError);
+  const std::runtime_error* base = nullptr;
+  try {
+    loadScene("");
+  } catch (const SceneError& e) {
+    base = &e;  // SceneError is a std::runtime_error, as the CLI and other callers catch it
+  }
+  EXPECT_NE(base, nullptr);
+}
+
+TEST(Api, DiffComparesTheReferenceAndTheComputePort) {
+  const DiffResult result = diff(loadScene(source("scenes/two_lights.json")).withImageSize(320, 200), validatedGpu());
+  EXPECT_EQ(result.stats.pixels, 320u * 200u);
+  EXPECT_EQ(result.stats.differing, 0u);
+  EXPECT_TRUE(result.stats.keysCompared);
+  EXPECT_EQ(result.stats.triangleMismatch, 0u);
+  EXPECT_TRUE(std::isinf(result.stats.psnr));
+  EXPECT_FALSE(result.deviceName.empty());
+}
+
+TEST(Api, SequenceFramesAreScenes) {
+  const Sequence sequence = loadSequence(source("scenes/paper/fig6_orbit_red.json"));
+  EXPECT_EQ(sequence.frameCount(), 120);
+  const Scene first = sequence.frame(0).withImageSize(120, 80);
+  const Scene later = sequence.frame(30).withImageSize(120, 80);
+  Renderer cpu(Backend::Cpu);
+  EXPECT_FALSE(cpu.render(first).rgb == cpu.render(later).rgb);  // the camera moved
+  EXPECT_EQ(cpu.stats().sceneBuilds, 1u);
+  EXPECT_THROW(sequence.frame(120), std::out_of_range);
+}
+
+TEST(Api, BackendsByName) {
+  EXPECT_EQ(parseBackend("gpu"), Backend::Gpu);
+  EXPECT_EQ(parseBackend("cpu"), Backend::Cpu);
+  EXPECT_EQ(parseBackend("graphics"), Backend::Graphics);
+  EXPECT_EQ(parseBackend("raster"), Backend::Graphics);  // the graphics baseline's older name
+  EXPECT_THROW(parseBackend("opengl"), std::invalid_argument);
+  EXPECT_STREQ(backendName(Backend::Graphics), "graphics");
+  Renderer graphics(Backend::Graphics);
+  EXPECT_THROW(graphics.renderWithKeys(loadScene(source("scenes/basic.json"))), std::invalid_argument);
+}
+
+TEST(Api, VersionAndRevision) {
+  EXPECT_STREQ(version(), PHONGVK_VERSION_STRING);
+  EXPECT_GT(std::string(revision()).size(), 0u);
+}
+
+TEST(Api, TimedFramesHaveWallAndDeviceTimes) {
+  const Scene scene = loadScene(source("scenes/basic.json")).withImageSize(160, 100);
+  Renderer gpu(validatedGpu());
+  const std::vector<FrameTime> frames = gpu.timeFrames(scene, 3);
+  ASSERT_EQ(frames.size(), 3u);
+  for (const FrameTime& f : frames) {
+    EXPECT_GT(f.wallMs, 0.0);
+    EXPECT_TRUE(std::isnan(f.deviceMs) || f.deviceMs >= 0.0);
+  }
+  EXPECT_EQ(gpu.stats().framesRendered, 4u);  // one warm-up
+}
+
+}  // namespace
+}  // namespace phongvk

@@ -1,0 +1,66 @@
+# The installed package, as another project meets it (CTest `install_consumer`): `cmake --install`
+# into a fresh prefix; examples/render_scene built against it with find_package(phongvk CONFIG) and
+# the same program built with pkg-config; both render scenes/basic.json on the reference backend
+# to the same bytes as the tree's own `phongvk render --backend cpu`; the installed `phongvk`
+# runs from its prefix and reports its version.
+# Run with -DBUILD_DIR=<build tree> -DSOURCE_DIR=<repository> -DOUT_DIR=<scratch folder> -DCXX=<compiler>.
+file(REMOVE_RECURSE ${OUT_DIR})
+file(MAKE_DIRECTORY ${OUT_DIR})
+set(prefix ${OUT_DIR}/prefix)
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    string(REPLACE ";" " " command "${ARGN}")
+    message(FATAL_ERROR "${command} exited with ${status}:\n${out}\n${err}")
+  endif()
+  set(run_output "${out}" PARENT_SCOPE)
+endfunction()
+
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+foreach(installed include/phongvk/phongvk.h bin/phongvk)
+  if(NOT EXISTS ${prefix}/${installed})
+    message(FATAL_ERROR "cmake --install did not install ${installed}")
+  endif()
+endforeach()
+file(GLOB_RECURSE config ${prefix}/*/phongvkConfig.cmake)
+file(GLOB_RECURSE version_file ${prefix}/*/phongvkConfigVersion.cmake)
+file(GLOB_RECURSE pc ${prefix}/*/phongvk.pc)
+if(NOT config OR NOT version_file OR NOT pc)
+  message(FATAL_ERROR "no phongvkConfig.cmake, phongvkConfigVersion.cmake or phongvk.pc under ${prefix}")
+endif()
+
+# find_package(phongvk CONFIG REQUIRED) and the phongvk::phongvk target.
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/render_scene -B ${OUT_DIR}/example -G Ninja
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX})
+run(${CMAKE_COMMAND} --build ${OUT_DIR}/example)
+run(${OUT_DIR}/example/render_scene ${SOURCE_DIR}/scenes/basic.json ${OUT_DIR}/find_package.png cpu)
+
+# pkg-config: the same program, compiled by hand.
+get_filename_component(pc_dir ${pc} DIRECTORY)
+set(ENV{PKG_CONFIG_PATH} ${pc_dir})
+run(pkg-config --cflags --libs phongvk)
+string(STRIP "${run_output}" flags)
+separate_arguments(flags UNIX_COMMAND "${flags}")
+run(${CXX} ${SOURCE_DIR}/examples/render_scene/main.cpp ${flags} -o ${OUT_DIR}/render_scene_pc)
+get_filename_component(lib_dir ${config} DIRECTORY)
+get_filename_component(lib_dir ${lib_dir} DIRECTORY)
+get_filename_component(lib_dir ${lib_dir} DIRECTORY)
+set(ENV{LD_LIBRARY_PATH} ${lib_dir})
+run(${OUT_DIR}/render_scene_pc ${SOURCE_DIR}/scenes/basic.json ${OUT_DIR}/pkg_config.png cpu)
+unset(ENV{LD_LIBRARY_PATH})
+
+# The installed command finds its library from its own prefix.
+run(${prefix}/bin/phongvk --version)
+if(NOT run_output MATCHES "^phongvk [0-9]+\\.[0-9]+\\.[0-9]+ \\(")
+  message(FATAL_ERROR "phongvk --version printed '${run_output}'")
+endif()
+run(${prefix}/bin/phongvk render ${SOURCE_DIR}/scenes/basic.json -o ${OUT_DIR}/cli.png --backend cpu)
+
+foreach(image find_package pkg_config)
+  file(SHA256 ${OUT_DIR}/${image}.png got)
+  file(SHA256 ${OUT_DIR}/cli.png want)
+  if(NOT got STREQUAL want)
+    message(FATAL_ERROR "${image}.png differs from phongvk render's image")
+  endif()
+endforeach()
