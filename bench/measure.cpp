@@ -94,7 +94,7 @@ ComputeRun runCompute(const VulkanContext& context, const SceneData& data, const
   });
 }
 
-BackendRun runRaster(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat) {
+BackendRun runGraphics(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat) {
   return orFailure<BackendRun>([&] {
     GraphicsRenderer renderer(context, data);
     return timeRenders(frames, repeat, [&](const FrameInputs& in) { return renderer.render(in); },

@@ -51,7 +51,7 @@ BackendRun runReference(const SceneData& data, const FramePair& frames, int repe
 
 // Failures to construct the renderer (a scene past a device limit) come back in time.failure.
 ComputeRun runCompute(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat);
-BackendRun runRaster(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat);
+BackendRun runGraphics(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat);
 
 // The process's peak resident memory so far (getrusage maxrss), in bytes.
 uint64_t peakHostBytes();

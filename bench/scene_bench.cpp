@@ -34,7 +34,7 @@ void printProgress(const SceneResult& r) {
     std::printf("%s: %llu triangles, %dx%d; %s, %s, %s; compute vs reference max diff %d\n", r.name.c_str(),
                 static_cast<unsigned long long>(r.triangles), r.width, r.height,
                 describe("reference", r.reference).c_str(), describe("compute", r.compute).c_str(),
-                describe("raster", r.raster).c_str(), r.computeVsReference);
+                describe("graphics", r.graphics).c_str(), r.computeVsReference);
   }
   std::fflush(stdout);  // progress shows while the next scene runs
 }
@@ -51,12 +51,12 @@ Run medianRound(std::vector<Run> runs) {
 
 void renderAll(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat,
                SceneResult& r) {
-  std::vector<BackendRun> references, rasters;
+  std::vector<BackendRun> references, graphicsRuns;
   std::vector<ComputeRun> computes;
   for (int round = 0; round < SCENE_ROUNDS; ++round) {
     references.push_back(runReference(data, frames, repeat));
     computes.push_back(runCompute(context, data, frames, repeat));
-    rasters.push_back(runRaster(context, data, frames, repeat));
+    graphicsRuns.push_back(runGraphics(context, data, frames, repeat));
   }
   const BackendRun reference = medianRound(references);
   r.reference = reference.time;
@@ -67,9 +67,9 @@ void renderAll(const VulkanContext& context, const SceneData& data, const FrameP
   r.computeImageBytes = compute.imageBytes;
   r.shadedEveryFrame = compute.shadedEveryFrame;
   r.computeVsReference = maxDiff(compute, reference);
-  const BackendRun raster = medianRound(rasters);
-  r.raster = raster.time;
-  r.rasterVsReference = maxDiff(raster, reference);
+  const BackendRun graphics = medianRound(graphicsRuns);
+  r.graphics = graphics.time;
+  r.graphicsVsReference = maxDiff(graphics, reference);
 }
 
 }  // namespace

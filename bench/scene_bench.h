@@ -13,13 +13,13 @@ struct SceneResult {
   std::string failure;              // the scene itself could not be loaded or built
   int width = 0, height = 0;
   uint64_t triangles = 0, vertices = 0;
-  Timing reference, compute, raster;
+  Timing reference, compute, graphics;
   PassTimes passes;                 // compute, device ms per pass
   uint64_t computeSceneBytes = 0;   // device memory: geometry and per-vertex buffers
   uint64_t computeImageBytes = 0;   // device memory: per-pixel buffers
   bool shadedEveryFrame = true;
   int computeVsReference = -1;      // largest channel difference (8-bit units); -1: not compared
-  int rasterVsReference = -1;
+  int graphicsVsReference = -1;
   uint64_t hostPeakBytes = 0;       // process peak RSS after this scene (scenes run in table order)
   unsigned cpuDeviceLanes = 0;      // machine.h cpuDeviceLanes: 0 on a GPU
 

@@ -1,4 +1,4 @@
-// suite.h — the benchmark's scenes (issue 6): the paper's scenes, icosphere grids from 1k to past
+// suite.h — the benchmark's scenes: the paper's scenes, icosphere grids from 1k to past
 // the largest single storage buffer binding, large-triangle scenes, and 4K renders.
 #pragma once
 

@@ -79,8 +79,8 @@ Verdict memoryVerdict(const SceneResult& s) {
 
 // The targets a scene of this size and kind is held to.
 std::vector<Target> applicable(const SceneResult& s) {
-  std::vector<Target> targets = {Target::RasterAll};
-  if (s.smallTriangles && s.triangles >= SMALL_TRIANGLES_FROM) targets.push_back(Target::RasterSmall);
+  std::vector<Target> targets = {Target::GraphicsAll};
+  if (s.smallTriangles && s.triangles >= SMALL_TRIANGLES_FROM) targets.push_back(Target::GraphicsSmall);
   if (s.triangles >= REFERENCE_TARGET_FROM) targets.push_back(Target::Reference);
   targets.push_back(Target::Memory);
   return targets;
@@ -89,8 +89,8 @@ std::vector<Target> applicable(const SceneResult& s) {
 Verdict judge(Target target, const SceneResult& s) {
   if (!s.compute.ok()) return {target, false, s.compute.failureKind(), "the compute port " + s.compute.failure};
   switch (target) {
-    case Target::RasterAll: return speedVerdict(target, s, s.raster, "graphics pipeline", RASTER_SPEEDUP);
-    case Target::RasterSmall: return speedVerdict(target, s, s.raster, "graphics pipeline", RASTER_SPEEDUP_SMALL);
+    case Target::GraphicsAll: return speedVerdict(target, s, s.graphics, "graphics pipeline", GRAPHICS_SPEEDUP);
+    case Target::GraphicsSmall: return speedVerdict(target, s, s.graphics, "graphics pipeline", GRAPHICS_SPEEDUP_SMALL);
     case Target::Reference: {
       Verdict v = speedVerdict(target, s, s.reference, "reference", REFERENCE_SPEEDUP);
       if (!v.met) v.miss += laneBound(s, REFERENCE_SPEEDUP);
@@ -104,8 +104,8 @@ Verdict judge(Target target, const SceneResult& s) {
 // A comparison with a backend that could not run is not a verdict on the compute port.
 bool judgeable(Target target, const SceneResult& s) {
   switch (target) {
-    case Target::RasterAll:
-    case Target::RasterSmall: return s.raster.ok() || !s.compute.ok();
+    case Target::GraphicsAll:
+    case Target::GraphicsSmall: return s.graphics.ok() || !s.compute.ok();
     case Target::Reference: return s.reference.ok() || !s.compute.ok();
     case Target::Memory: return true;
   }
@@ -116,8 +116,8 @@ bool judgeable(Target target, const SceneResult& s) {
 
 std::string targetName(Target target) {
   switch (target) {
-    case Target::RasterAll: return "compute at least as fast as the graphics pipeline, every scene";
-    case Target::RasterSmall: return "compute >= 2x the graphics pipeline, scenes of 1M+ small triangles";
+    case Target::GraphicsAll: return "compute at least as fast as the graphics pipeline, every scene";
+    case Target::GraphicsSmall: return "compute >= 2x the graphics pipeline, scenes of 1M+ small triangles";
     case Target::Reference: return "compute >= 20x the single-threaded reference, scenes of 100k+ triangles";
     case Target::Memory: return "device memory <= 96 B/triangle (vertices included) + 12 B/pixel";
   }

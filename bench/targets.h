@@ -1,4 +1,4 @@
-// targets.h — issue 6's targets, judged from the measured results: per scene, whether each target
+// targets.h — the benchmark's targets, judged from the measured results: per scene, whether each target
 // that applies is met and, where not, by how much and what the frame's time or memory went to.
 #pragma once
 
@@ -10,9 +10,9 @@
 namespace phongvk::bench {
 
 // Compute at least as fast as the graphics pipeline on every scene...
-inline constexpr double RASTER_SPEEDUP = 1.0;
+inline constexpr double GRAPHICS_SPEEDUP = 1.0;
 // ...and twice as fast on scenes of 1M+ small triangles (the icosphere grids).
-inline constexpr double RASTER_SPEEDUP_SMALL = 2.0;
+inline constexpr double GRAPHICS_SPEEDUP_SMALL = 2.0;
 inline constexpr uint64_t SMALL_TRIANGLES_FROM = 1'000'000;
 // 20x the single-threaded reference on scenes of 100k+ triangles.
 inline constexpr double REFERENCE_SPEEDUP = 20.0;
@@ -27,7 +27,7 @@ inline constexpr double SETUP_TARGET_MS = 500;
 inline constexpr uint64_t SETUP_LINEAR_FROM = 100'000;
 inline constexpr double SETUP_LINEAR_SPREAD = 2.0;
 
-enum class Target { RasterAll, RasterSmall, Reference, Memory };
+enum class Target { GraphicsAll, GraphicsSmall, Reference, Memory };
 
 struct Verdict {
   Target target;

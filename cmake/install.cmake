@@ -4,10 +4,10 @@
 include(CMakePackageConfigHelpers)
 
 set(PHONGVK_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/phongvk)
-install(TARGETS phongvk EXPORT phongvkTargets
+install(TARGETS phongvk_shared EXPORT phongvkTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(TARGETS phongvk_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS phongvk RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY include/phongvk DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT phongvkTargets NAMESPACE phongvk:: DESTINATION ${PHONGVK_CMAKE_DIR})
 configure_package_config_file(cmake/phongvkConfig.cmake.in ${PROJECT_BINARY_DIR}/phongvkConfig.cmake
