@@ -4,6 +4,8 @@
 #include "host/pipelines.h"
 #include "host/vk_check.h"
 
+#include "tests/test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -12,22 +14,11 @@
 namespace phongvk {
 namespace {
 
-// The message of the exception `call` throws as E, or a failure if it throws nothing.
-template <typename E, typename F>
-std::string thrownMessage(F&& call) {
-  try {
-    call();
-  } catch (const E& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "nothing was thrown";
-  return "";
-}
-
 TEST(VkCheck, MessageNamesFileLineCallAndResult) {
   auto failingCall = [] { return VK_ERROR_OUT_OF_DEVICE_MEMORY; };
-  std::string message = thrownMessage<VulkanError>([&] { VK_CHECK(failingCall()); });
-  EXPECT_NE(message.find("tests/host_test.cpp:29:"), std::string::npos) << message;
+  const int line = __LINE__ + 1;
+  std::string message = test::thrownMessage<VulkanError>([&] { VK_CHECK(failingCall()); });
+  EXPECT_NE(message.find("tests/host_test.cpp:" + std::to_string(line) + ":"), std::string::npos) << message;
   EXPECT_NE(message.find(": failingCall() failed: VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << message;
 }
 
@@ -58,7 +49,7 @@ TEST(ChooseDevice, SkipsUnsuitableDevicesWhateverTheirRank) {
 TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
   std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {"shaderBufferInt64Atomics"}),
                                        fakeDevice(1, "discrete GPU", {"Vulkan 1.2", "a compute queue"})};
-  EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, -1); }),
+  EXPECT_EQ(test::thrownMessage<NoDeviceError>([&] { chooseDevice(devices, -1); }),
             "no usable Vulkan device (phongvk needs Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, "
             "storageBuffer8BitAccess and a compute queue): [0] Device0 (missing shaderBufferInt64Atomics); "
             "[1] Device1 (missing Vulkan 1.2, a compute queue)");
@@ -66,12 +57,12 @@ TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
 
 TEST(ChooseDevice, RequestedUnsuitableDeviceSaysWhatItLacks) {
   std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "discrete GPU", {"shaderInt64"})};
-  EXPECT_EQ(thrownMessage<NoDeviceError>([&] { chooseDevice(devices, 1); }),
+  EXPECT_EQ(test::thrownMessage<NoDeviceError>([&] { chooseDevice(devices, 1); }),
             "Vulkan device 1 (Device1) is not usable: missing shaderInt64");
 }
 
 TEST(ChooseDevice, NoDevicesAtAll) {
-  std::string message = thrownMessage<NoDeviceError>([] { chooseDevice({}, -1); });
+  std::string message = test::thrownMessage<NoDeviceError>([] { chooseDevice({}, -1); });
   EXPECT_NE(message.find("install mesa-vulkan-drivers"), std::string::npos) << message;
 }
 

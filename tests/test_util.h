@@ -3,10 +3,25 @@
 
 #include "scene/scene_data.h"
 
+#include <gtest/gtest.h>
+
 #include <functional>
 #include <string>
 
 namespace phongvk::test {
+
+// The message of the exception `call` throws as E, or a failure if it throws nothing.
+template <typename E, typename F>
+std::string thrownMessage(F&& call) {
+  try {
+    call();
+  } catch (const E& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "nothing was thrown";
+  return "";
+}
+
 
 // Absolute path of a file in the source tree, e.g. sourcePath("scenes/basic.json").
 std::string sourcePath(const std::string& relative);

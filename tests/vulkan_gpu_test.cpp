@@ -9,6 +9,8 @@
 #include <cstdint>  // the generated SPIR-V header uses uint32_t without including it
 #include "shaders/selftest_atomic64.spv.h"
 
+#include "tests/test_util.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,18 +22,6 @@
 
 namespace phongvk {
 namespace {
-
-// The message of the exception `call` throws as E, or a failure if it throws nothing.
-template <typename E, typename F>
-std::string thrownMessage(F&& call) {
-  try {
-    call();
-  } catch (const E& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "nothing was thrown";
-  return "";
-}
 
 // A context with validation on, for every test that needs a device.
 VulkanContext createTestContext() { return createContext({.deviceIndex = -1, .validate = true}); }
@@ -99,7 +89,7 @@ TEST_F(VulkanTest, ListDevicesMarksTheChosenDeviceUsable) {
 }
 
 TEST_F(VulkanTest, OutOfRangeDeviceIndexIsNamedInTheError) {
-  std::string message = thrownMessage<NoDeviceError>([] { createContext({.deviceIndex = 99, .validate = true}); });
+  std::string message = test::thrownMessage<NoDeviceError>([] { createContext({.deviceIndex = 99, .validate = true}); });
   EXPECT_NE(message.find("Vulkan device index 99 is out of range"), std::string::npos) << message;
   EXPECT_NE(message.find("usable"), std::string::npos) << "the message lists the devices: " << message;
 }
@@ -312,7 +302,7 @@ TEST(ValidationLog, EnvironmentVariableTurnsValidationOn) {
 // With no driver the loader fails vkCreateInstance; the error must say what to install.
 TEST(VulkanContextNoDriver, SaysToInstallADriver) {
   ScopedEnv noDriver("VK_DRIVER_FILES", "/nonexistent/phongvk_no_driver.json");
-  std::string message = thrownMessage<NoDeviceError>([] { createContext({}); });
+  std::string message = test::thrownMessage<NoDeviceError>([] { createContext({}); });
   EXPECT_NE(message.find("no Vulkan driver found"), std::string::npos) << message;
   EXPECT_NE(message.find("install mesa-vulkan-drivers"), std::string::npos) << message;
 }
