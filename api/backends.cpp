@@ -43,8 +43,10 @@ class CpuBackend : public Renderer::Impl {
   double lastMs_ = NOT_MEASURED;
 };
 
-// A Vulkan context for the backends that need one. The derived backend's renderer (a member) is
-// destroyed before this destructor runs, so nothing outlives the context it was made on.
+// A Vulkan context for the backends that need one. Every call into Vulkan holds a ContextLock:
+// renderers in other threads have contexts of their own, and volk's function table is the
+// process's. The derived backend's renderer is released (under the lock) in its destructor, before
+// this one destroys the context.
 class VulkanBackend : public Renderer::Impl {
  public:
   explicit VulkanBackend(const RendererOptions& options) : context_(createContext({options.device, options.validate})) {}
@@ -59,8 +61,14 @@ class VulkanBackend : public Renderer::Impl {
 class GpuBackend : public VulkanBackend {
  public:
   // The device's division and square root decide which builds of the passes it runs.
-  explicit GpuBackend(const RendererOptions& options)
-      : VulkanBackend(options), exactFloats_(probeFloatOps(context_).useExact()) {}
+  explicit GpuBackend(const RendererOptions& options) : VulkanBackend(options) {
+    const ContextLock lock(context_);
+    exactFloats_ = probeFloatOps(context_).useExact();
+  }
+  ~GpuBackend() override {
+    const ContextLock lock(context_);
+    renderer_.reset();
+  }
 
   FrameTime lastFrameTime() const override {
     const PassTimes& t = renderer_->lastPassTimes();
@@ -70,6 +78,7 @@ class GpuBackend : public VulkanBackend {
 
  protected:
   void upload(const SceneData& data) override {
+    const ContextLock lock(context_);
     if (renderer_) {
       shadedByEarlier_ += renderer_->framesShaded();
       repeatedByEarlier_ += renderer_->framesRepeated();
@@ -80,6 +89,7 @@ class GpuBackend : public VulkanBackend {
     renderer_.emplace(context_, data, options);
   }
   RenderOutput draw(const SceneData&, const FrameInputs& in, bool withKeys) override {
+    const ContextLock lock(context_);
     return renderer_->render(in, withKeys);
   }
   uint64_t framesShaded() const override { return shadedByEarlier_ + (renderer_ ? renderer_->framesShaded() : 0); }
@@ -97,6 +107,10 @@ class GpuBackend : public VulkanBackend {
 class GraphicsBackend : public VulkanBackend {
  public:
   using VulkanBackend::VulkanBackend;
+  ~GraphicsBackend() override {
+    const ContextLock lock(context_);
+    renderer_.reset();
+  }
 
   FrameTime lastFrameTime() const override {
     return {0, renderer_->lastDeviceMs(), NOT_MEASURED, NOT_MEASURED, NOT_MEASURED};
@@ -105,10 +119,12 @@ class GraphicsBackend : public VulkanBackend {
 
  protected:
   void upload(const SceneData& data) override {
+    const ContextLock lock(context_);
     renderer_.reset();
     renderer_.emplace(context_, data);
   }
   RenderOutput draw(const SceneData&, const FrameInputs& in, bool) override {
+    const ContextLock lock(context_);
     ++frames_;
     return renderer_->render(in);
   }

@@ -1,16 +1,18 @@
-// scene.cpp — the public Scene and Sequence: handles on the validated model (scene/scene.h) and
-// on the animation (scene/animate.h).
+// scene.cpp — the public Scene: a handle on the validated model (scene/scene.h) and on the file's
+// animation (scene/animate.h), which gives the other frames.
 #include "phongvk/phongvk.h"
 
 #include "scene/animate.h"
 #include "scene/camera.h"
+#include "scene/mesh_arrays.h"
 #include "scene/scene.h"
 
 #include <stdexcept>
 
 namespace phongvk {
 
-Scene::Scene(std::shared_ptr<const SceneSpec> spec) : spec_(std::move(spec)) {}
+Scene::Scene(std::shared_ptr<const SceneSpec> spec, std::shared_ptr<const SceneSequence> sequence)
+    : spec_(std::move(spec)), sequence_(std::move(sequence)) {}
 
 const std::string& Scene::path() const { return spec_->path; }
 int Scene::width() const { return makeView(spec_->camera).width; }
@@ -22,33 +24,41 @@ Scene Scene::withImageSize(int width, int height) const {
   auto resized = std::make_shared<SceneSpec>(*spec_);
   resized->camera = phongvk::withImageSize(spec_->camera, width, height);
   makeView(resized->camera);  // throws SceneError for a size out of range
-  return Scene(std::move(resized));
+  return Scene(std::move(resized), sequence_);
 }
 
-Scene loadScene(const std::string& path) { return Scene(std::make_shared<const SceneSpec>(loadSceneSpec(path))); }
-
-Scene parseScene(const std::string& json, const std::string& name, const std::string& baseDir) {
-  return Scene(std::make_shared<const SceneSpec>(parseSceneSpec(json, name, baseDir)));
+void Scene::addMesh(const MeshArrays& mesh, const std::string& material, bool closed) {
+  auto changed = std::make_shared<SceneSpec>(*spec_);
+  addMeshObject(*changed, mesh, material, closed);
+  spec_ = std::move(changed);
 }
 
-Sequence::Sequence(std::shared_ptr<const SceneSequence> sequence) : sequence_(std::move(sequence)) {}
+int Scene::frameCount() const { return sequence_ ? sequence_->frameCount() : 1; }
 
-int Sequence::frameCount() const { return sequence_->frameCount(); }
-const std::string& Sequence::path() const { return sequence_->path(); }
-Scene Sequence::frame(int index) const {
+Scene Scene::frame(int index) const {
   if (index < 0 || index >= frameCount()) {
-    throw std::out_of_range(path() + ": frame " + std::to_string(index) + " is out of range: the sequence has " +
-                            std::to_string(frameCount()) + " frames");
+    throw std::out_of_range((path().empty() ? "" : path() + ": ") + "frame " + std::to_string(index) +
+                            " is out of range: the scene has " + std::to_string(frameCount()) + " frames");
   }
-  return Scene(std::make_shared<const SceneSpec>(sequence_->frame(index)));
+  if (!sequence_) return *this;
+  return Scene(std::make_shared<const SceneSpec>(sequence_->frame(index)), sequence_);
 }
 
-Sequence loadSequence(const std::string& path) {
-  return Sequence(std::make_shared<const SceneSequence>(SceneSequence::load(path)));
+namespace {
+
+// A scene file or text as its sequence (one frame without an "animate" block) and frame 0.
+Scene firstFrame(std::shared_ptr<const SceneSequence> sequence) {
+  auto spec = std::make_shared<const SceneSpec>(sequence->frame(0));
+  return Scene(std::move(spec), std::move(sequence));
 }
 
-Sequence parseSequence(const std::string& json, const std::string& name, const std::string& baseDir) {
-  return Sequence(std::make_shared<const SceneSequence>(scenejson::parseJson(json, name), name, baseDir));
+}  // namespace
+
+Scene loadScene(const std::string& path) { return firstFrame(std::make_shared<const SceneSequence>(SceneSequence::load(path))); }
+
+Scene parseScene(const std::string& json, const std::string& name, const std::string& baseDir, bool objectsLater) {
+  return firstFrame(
+      std::make_shared<const SceneSequence>(scenejson::parseJson(json, name), name, baseDir, objectsLater));
 }
 
 }  // namespace phongvk

@@ -127,7 +127,7 @@ void printSummary(const SequenceOptions& options, const FrameRange& range, const
 
 // Every frame's scene, at the asked size, validated before any is rendered: a bad frame 17 fails
 // before frame 0 is written.
-std::vector<Scene> prepareFrames(const Sequence& sequence, const FrameRange& range, const ViewOptions& options) {
+std::vector<Scene> prepareFrames(const Scene& sequence, const FrameRange& range, const ViewOptions& options) {
   std::vector<Scene> frames;
   for (int64_t i = range.start; i < range.end; i += range.step) {  // 64-bit: a huge STEP may not overflow
     const Scene scene = sequence.frame(int(i));
@@ -183,7 +183,7 @@ std::string framePath(const std::string& dir, int index, int frameCount) {
 int runSequence(const SequenceOptions& options) {
   return guarded([&] {
     const auto start = Clock::now();
-    const Sequence sequence = loadSequence(options.scene);
+    const Scene sequence = loadScene(options.scene);
     const FrameRange range = parseFrameRange(options.frames, sequence.frameCount());
     const std::vector<Scene> frames = prepareFrames(sequence, range, options);
     prepareOutputs(options, sequence.frameCount());

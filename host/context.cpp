@@ -26,6 +26,7 @@ void createCommandPool(VulkanContext& context) {
 
 VulkanContext createContext(const ContextOptions& options) {
   initializeLoader();
+  const std::lock_guard lock(vulkanMutex());
   VulkanContext context;
   if (validationRequested(options)) context.validation = std::make_shared<ValidationLog>();
   try {
@@ -50,9 +51,10 @@ VulkanContext createContext(const ContextOptions& options) {
 void destroyContext(VulkanContext& context) {
   // Destroy through this context's own function tables (another context may be loaded now),
   // then hand volk back to the newest context still alive.
-  if (context.instance) volkLoadInstanceOnly(context.instance);
+  const std::lock_guard lock(vulkanMutex());
+  if (context.instance) loadInstanceFunctions(context.instance);
   if (context.device) {
-    volkLoadDevice(context.device);
+    loadContextFunctions(context.instance, context.device);
     // Whatever is still in flight must finish before its pool and device go. The result is
     // ignored on purpose: a lost device must still be destroyed.
     (void)vkDeviceWaitIdle(context.device);

@@ -8,9 +8,10 @@
 // errors and `phongvk devices` can say exactly why a device was rejected.
 //
 // volk keeps one global function table, loaded for the newest live context (listDevices and
-// destroyContext put it back). Several live contexts therefore work only if they share a driver
-// and a validation setting; the CLI and the renderer hold one. Create and destroy contexts on one
-// thread.
+// destroyContext put it back). Creating and destroying contexts takes one process-wide lock; code
+// that may share the process with other threads' contexts (the public Renderer) holds a
+// ContextLock while it calls Vulkan, which serializes their Vulkan work and loads its context's
+// functions first.
 #pragma once
 
 #include "host/vk_check.h"  // every user of a context checks Vulkan calls
@@ -86,6 +87,16 @@ uint32_t chooseDevice(const std::vector<DeviceInfo>& reports, int requested);
 // `validation` survives, so a caller holding it sees messages raised while tearing down
 // (e.g. objects the caller forgot to destroy).
 void destroyContext(VulkanContext& context);
+
+// Held while this thread calls Vulkan on `context` where other threads may hold contexts of their
+// own: one lock for the process (recursive), and volk's tables loaded for `context`.
+class ContextLock {
+ public:
+  explicit ContextLock(const VulkanContext& context);
+
+ private:
+  std::unique_lock<std::recursive_mutex> lock_;
+};
 
 // A context destroyed when it goes out of scope.
 class ScopedContext {

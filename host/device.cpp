@@ -176,12 +176,13 @@ void createDevice(VulkanContext& context) {
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   VK_CHECK(vkCreateDevice(context.physicalDevice, &info, nullptr, &context.device));
-  volkLoadDevice(context.device);
+  loadContextFunctions(context.instance, context.device);
   vkGetDeviceQueue(context.device, context.queueFamily, 0, &context.queue);
 }
 
 std::vector<DeviceInfo> listDevices() {
   initializeLoader();
+  const std::lock_guard lock(vulkanMutex());
   VkInstance instance = createInstance(nullptr);
   std::vector<DeviceInfo> reports;
   std::exception_ptr failure;

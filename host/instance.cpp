@@ -68,10 +68,41 @@ std::vector<LoadedContext>& liveContexts() {
 
 void rememberContext(const VulkanContext& context) { liveContexts().push_back({context.instance, context.device}); }
 
+namespace {
+
+// What volk's tables hold now.
+VkInstance loadedInstance = VK_NULL_HANDLE;
+VkDevice loadedDevice = VK_NULL_HANDLE;
+
+}  // namespace
+
+void loadInstanceFunctions(VkInstance instance) {
+  volkLoadInstanceOnly(instance);
+  loadedInstance = instance;
+  loadedDevice = VK_NULL_HANDLE;
+}
+
+void loadContextFunctions(VkInstance instance, VkDevice device) {
+  volkLoadInstanceOnly(instance);
+  volkLoadDevice(device);
+  loadedInstance = instance;
+  loadedDevice = device;
+}
+
+std::recursive_mutex& vulkanMutex() {
+  static std::recursive_mutex mutex;
+  return mutex;
+}
+
+ContextLock::ContextLock(const VulkanContext& context) : lock_(vulkanMutex()) {
+  if (loadedInstance != context.instance || loadedDevice != context.device) {
+    loadContextFunctions(context.instance, context.device);
+  }
+}
+
 void reloadNewestContext() {
   if (liveContexts().empty()) return;
-  volkLoadInstanceOnly(liveContexts().back().instance);
-  volkLoadDevice(liveContexts().back().device);
+  loadContextFunctions(liveContexts().back().instance, liveContexts().back().device);
 }
 
 void forgetContext(VkDevice device) {
@@ -186,7 +217,7 @@ VkInstance createInstance(ValidationLog* log) {
     throw NoDeviceError("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
                         "install mesa-vulkan-drivers");
   VK_CHECK(result);
-  volkLoadInstanceOnly(instance);
+  loadInstanceFunctions(instance);
   return instance;
 }
 

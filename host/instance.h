@@ -5,6 +5,7 @@
 
 #include "host/context.h"
 
+#include <mutex>
 #include <vector>
 
 namespace phongvk {
@@ -25,10 +26,16 @@ void createMessenger(VulkanContext& context);
 bool hasExtension(const std::vector<VkExtensionProperties>& extensions, const char* name);
 
 // volk's tables belong to the newest live context; a temporary instance (listDevices) or a
-// destroyed context hands them back with reloadNewestContext.
+// destroyed context hands them back with reloadNewestContext. Every load goes through these two,
+// which also record what is loaded (ContextLock reloads only when another context's is).
+void loadInstanceFunctions(VkInstance instance);
+void loadContextFunctions(VkInstance instance, VkDevice device);
 void rememberContext(const VulkanContext& context);
 void forgetContext(VkDevice device);
 void reloadNewestContext();
+
+// Held while anything loads volk's tables or calls Vulkan through them (context.h ContextLock).
+std::recursive_mutex& vulkanMutex();
 
 // ASan builds: keeps the driver and layer modules mapped for LeakSanitizer's report at exit.
 void keepVulkanModulesLoaded();

@@ -54,14 +54,24 @@ void appendBytes(void* context, void* data, int size) {
 
 }  // namespace
 
-void writePng(const std::string& path, const Image& image) {
+std::vector<uint8_t> encodePng(const Image& image) {
   // "Sub" on every row: as small as stb's per-row filter search, far faster. Set once, race-free.
   static const bool subFilter = (stbi_write_force_png_filter = 1, true);
   (void)subFilter;
   std::vector<uint8_t> encoded;
   if (!stbi_write_png_to_func(appendBytes, &encoded, image.width, image.height, 3, image.rgb.data(),
                               image.width * 3)) {
-    fail(path, "PNG encoding failed");
+    throw std::runtime_error("PNG encoding failed");
+  }
+  return encoded;
+}
+
+void writePng(const std::string& path, const Image& image) {
+  std::vector<uint8_t> encoded;
+  try {
+    encoded = encodePng(image);
+  } catch (const std::runtime_error& e) {
+    fail(path, e.what());
   }
   const std::filesystem::path target(path);
   const std::filesystem::path temp =

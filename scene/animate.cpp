@@ -1,5 +1,5 @@
 // animate.cpp — the "animate" block's rules and applying tracks at the JSON level. The scene's own
-// rules are not repeated here: each frame's JSON goes through parseSceneSpec like a file would.
+// rules are not repeated here: each frame's JSON goes through the scene file's readers.
 #include "scene/animate.h"
 
 #include "scene/expression.h"
@@ -174,8 +174,8 @@ SceneSequence SceneSequence::load(const std::string& path) {
                        std::filesystem::path(path).parent_path().string());
 }
 
-SceneSequence::SceneSequence(Json json, std::string path, std::string baseDir)
-    : base_(std::move(json)), path_(std::move(path)), baseDir_(std::move(baseDir)) {
+SceneSequence::SceneSequence(Json json, std::string path, std::string baseDir, bool objectsLater)
+    : base_(std::move(json)), path_(std::move(path)), baseDir_(std::move(baseDir)), objectsLater_(objectsLater) {
   if (!base_.is_object() || !base_.contains("animate")) return;  // one frame, checked by frame()
   const Json animate = std::move(base_["animate"]);
   base_.erase("animate");
@@ -204,7 +204,7 @@ SceneSpec SceneSequence::frame(int frame) const {
   // The frame's JSON tree is read as it is: no text in between.
   const std::string source = animated_ ? path_ + ": frame " + std::to_string(frame) : path_;
   const Json json = frameJson(frame);
-  return readScene(Node(json, "", source), path_, baseDir_);
+  return readScene(Node(json, "", source), path_, baseDir_, objectsLater_);
 }
 
 bool SceneSequence::geometryDiffers(int a, int b) const {

@@ -49,7 +49,8 @@ class SceneSequence {
   // relative files. Validates the "animate" block, evaluating every expression at every frame
   // (so a NaN at frame 17 is an error before anything is rendered), and that every track path
   // exists. Frames themselves are validated by frame(). Throws SceneError.
-  SceneSequence(scenejson::Json json, std::string path, std::string baseDir);
+  // With `objectsLater` a frame may have no objects yet (scene.h parseSceneSpec).
+  SceneSequence(scenejson::Json json, std::string path, std::string baseDir, bool objectsLater = false);
 
   int frameCount() const { return frames_; }
   const std::string& path() const { return path_; }
@@ -71,6 +72,7 @@ class SceneSequence {
   std::string baseDir_;
   int frames_ = 1;
   bool animated_ = false;  // the file has an "animate" block (its messages then name the frame)
+  bool objectsLater_ = false;
   std::vector<Track> tracks_;
 };
 

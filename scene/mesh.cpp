@@ -110,8 +110,8 @@ SurfaceMesh makeShape(const Object& object, glm::dvec3& origin) {
     case Shape::Polyhedron: origin = centroid(object.points); return makePolyhedron(object, origin);
     case Shape::Mesh: {
       origin = object.translate;
-      SurfaceMesh m;  // flat rule: imported surfaces are whatever the file says
-      m.mesh = importObj(object.file, object.scale, object.jsonPath + ".file");
+      SurfaceMesh m;  // flat rule: imported surfaces are whatever the file (or the arrays) say
+      m.mesh = object.arrays ? *object.arrays : importObj(object.file, object.scale, object.jsonPath + ".file");
       m.surfaces.assign(m.mesh.positions.size(), 0);
       return m;
     }

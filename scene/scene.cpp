@@ -37,7 +37,7 @@ Interpolation readRender(const Node& node) {
 
 namespace scenejson {
 
-SceneSpec readScene(const Node& root, const std::string& path, const std::string& baseDir) {
+SceneSpec readScene(const Node& root, const std::string& path, const std::string& baseDir, bool objectsLater) {
   requireObject(root);
   checkKeys(root, kSceneKeys);
   SceneSpec scene;
@@ -46,10 +46,9 @@ SceneSpec readScene(const Node& root, const std::string& path, const std::string
   if (auto background = root.find("background")) scene.background = unitColor(*background);
   if (auto ambient = root.find("ambient")) scene.ambient = color(*ambient);
   if (auto lights = root.find("lights")) scene.lights = readLights(*lights);
-  MaterialTable materials;
+  MaterialTable materials(scene);
   if (auto named = root.find("materials")) materials.readNamed(*named);
-  scene.objects = readObjects(root.require("objects"), baseDir, materials);
-  scene.materials = materials.take();
+  scene.objects = readObjects(root.require("objects"), baseDir, materials, objectsLater);
   if (auto render = root.find("render")) scene.interpolation = readRender(*render);
   return scene;
 }
@@ -70,11 +69,10 @@ SceneSpec loadSceneSpec(const std::string& path) {
   return parseSceneSpec(readSceneText(path), path, std::filesystem::path(path).parent_path().string());
 }
 
-SceneSpec parseSceneSpec(const std::string& text, const std::string& path, const std::string& baseDir) {
-  Json json = parseJson(text, path);
-  // The sequence validates the block and parses frame 0's JSON (which has no "animate") here.
-  if (json.is_object() && json.contains("animate")) return SceneSequence(std::move(json), path, baseDir).frame(0);
-  return readScene(Node(json, "", path), path, baseDir);
+SceneSpec parseSceneSpec(const std::string& text, const std::string& path, const std::string& baseDir,
+                         bool objectsLater) {
+  // The sequence validates an "animate" block and reads frame 0's JSON (which has none).
+  return SceneSequence(parseJson(text, path), path, baseDir, objectsLater).frame(0);
 }
 
 }  // namespace phongvk

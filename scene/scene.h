@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -56,6 +57,8 @@ struct FileVersion {
   bool operator==(const FileVersion&) const = default;
 };
 
+struct Mesh;  // mesh.h
+
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
 enum class Interpolation { Perspective, Screen };
 
@@ -71,6 +74,7 @@ struct Object {
   std::vector<glm::dvec3> points;    // polyhedron: convex hull of these
   std::string file;                  // mesh: OBJ path, already resolved against the scene folder
   FileVersion fileVersion;           // mesh: the file as it was when the scene was loaded
+  std::shared_ptr<const Mesh> arrays;  // mesh: given as arrays (mesh_arrays.h) instead of a file
   double scale = 1;                  // mesh
   glm::dvec3 translate = {0, 0, 0};  // mesh
   int material = 0;                  // index into SceneSpec::materials
@@ -85,6 +89,8 @@ struct SceneSpec {
   glm::vec3 ambient = {1, 1, 1};
   std::vector<Light> lights;
   std::vector<Material> materials;   // named ones first (in file order), then inline ones
+  std::vector<std::string> materialNames;  // materialNames[i] names materials[i], the named ones
+  std::optional<int> defaultMaterial;      // the default material's index, once an object took it
   std::vector<Object> objects;
   Interpolation interpolation = Interpolation::Perspective;
 };
@@ -93,9 +99,12 @@ struct SceneSpec {
 // A file with an "animate" block gives its frame 0 (animate.h has the other frames).
 SceneSpec loadSceneSpec(const std::string& path);
 
-// Parses scene JSON text. `path` names the source in messages; relative files resolve against
-// `baseDir`. Throws SceneError. Like loadSceneSpec, an animated scene gives its frame 0.
-SceneSpec parseSceneSpec(const std::string& text, const std::string& path, const std::string& baseDir);
+// Parses scene JSON text. `path` names the source in messages (none when empty); relative files
+// resolve against `baseDir`. With `objectsLater` the scene may have no objects yet (they come as
+// arrays, mesh_arrays.h); rendering a scene without objects is an error either way
+// (buildSceneData). Throws SceneError. Like loadSceneSpec, an animated scene gives its frame 0.
+SceneSpec parseSceneSpec(const std::string& text, const std::string& path, const std::string& baseDir,
+                         bool objectsLater = false);
 
 // A scene file's text. Throws SceneError "<path>: cannot read file: <why>".
 std::string readSceneText(const std::string& path);

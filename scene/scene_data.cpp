@@ -68,6 +68,9 @@ glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
 }  // namespace
 
 SceneData buildSceneData(const SceneSpec& scene) {
+  if (scene.objects.empty()) {
+    throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + "objects: scene has no objects");
+  }
   SceneData data;
   size_t vertices, triangles;
   std::vector<ObjectMesh> meshes = buildMeshes(scene, vertices, triangles);
@@ -110,8 +113,8 @@ namespace {
 bool sameObjectGeometry(const Object& a, const Object& b) {
   return a.shape == b.shape && a.center == b.center && a.radius == b.radius && a.size == b.size &&
          a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
-         a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.scale == b.scale &&
-         a.translate == b.translate && a.closed == b.closed;
+         a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
+         a.scale == b.scale && a.translate == b.translate && a.closed == b.closed;
 }
 
 }  // namespace

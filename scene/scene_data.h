@@ -38,11 +38,12 @@ struct FrameInputs {
   std::vector<gpu::MaterialData> materials;
 };
 
-// Builds every object's mesh and flattens the scene. Throws SceneError.
+// Builds every object's mesh and flattens the scene. Throws SceneError, also for a scene without
+// objects.
 SceneData buildSceneData(const SceneSpec& scene);
 
 // True when a and b make the same meshes: the same objects, in order, with the same shapes,
-// geometry values, mesh files (unchanged on disk) and culling. Materials, lights, the camera and
+// geometry values, mesh files (unchanged on disk) or mesh arrays (the same added mesh), and culling. Materials, lights, the camera and
 // the render options may differ: refreshShading and makeFrame take those from b.
 bool sameGeometry(const SceneSpec& a, const SceneSpec& b);
 

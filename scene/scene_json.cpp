@@ -155,7 +155,7 @@ Node::Node(const Json& value, std::string path, const std::string& file)
     : value_(&value), path_(std::move(path)), file_(&file) {}
 
 void Node::fail(const std::string& what) const {
-  throw SceneError(*file_ + ": " + (path_.empty() ? "top level" : path_) + ": " + what);
+  throw SceneError((file_->empty() ? "" : *file_ + ": ") + (path_.empty() ? "top level" : path_) + ": " + what);
 }
 
 void Node::failAt(std::string_view key, const std::string& what) const {

@@ -112,9 +112,10 @@ Object readObject(const Node& node, const std::string& baseDir, MaterialTable& m
 
 }  // namespace
 
-std::vector<Object> readObjects(const Node& node, const std::string& baseDir, MaterialTable& materials) {
+std::vector<Object> readObjects(const Node& node, const std::string& baseDir, MaterialTable& materials,
+                                bool mayBeEmpty) {
   requireArray(node);
-  if (node.json().empty()) node.fail("scene has no objects");
+  if (node.json().empty() && !mayBeEmpty) node.fail("scene has no objects");
   std::vector<Object> objects;
   for (size_t i = 0; i < node.json().size(); ++i) {
     objects.push_back(readObject(node.element(i), baseDir, materials));

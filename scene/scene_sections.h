@@ -38,15 +38,19 @@ CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
 std::vector<Light> readLights(const Node& node);  // scene_lighting.cpp
 Material readMaterial(const Node& node);          // scene_lighting.cpp
 
-// SceneSpec::materials as it is built: the named materials first, in file order, then one entry per
-// inline material, and one shared default for objects that name none.
+// A scene's materials as objects take them (SceneSpec::materials, materialNames, defaultMaterial):
+// the named materials first, in file order, then one entry per inline material, and one shared
+// default for objects that name none. Works on the scene it is given, so objects added later
+// (arrays) resolve their materials the same way.
 class MaterialTable {
  public:
+  explicit MaterialTable(SceneSpec& scene) : scene_(scene) {}
+
   void readNamed(const Node& node) {
     requireObject(node);
     for (const auto& [name, value] : node.json().items()) {
-      materials_.push_back(readMaterial(node.child(name)));
-      names_.push_back(name);
+      scene_.materials.push_back(readMaterial(node.child(name)));
+      scene_.materialNames.push_back(name);
     }
   }
 
@@ -61,44 +65,44 @@ class MaterialTable {
     return add(readMaterial(*node));
   }
 
-  std::vector<Material> take() { return std::move(materials_); }
-
  private:
   int add(const Material& material) {
-    materials_.push_back(material);
-    return int(materials_.size()) - 1;
+    scene_.materials.push_back(material);
+    return int(scene_.materials.size()) - 1;
   }
 
   int defaultIndex() {
-    if (!defaultIndex_) defaultIndex_ = add(Material{});
-    return *defaultIndex_;
+    if (!scene_.defaultMaterial) scene_.defaultMaterial = add(Material{});
+    return *scene_.defaultMaterial;
   }
 
   int named(const Node& node) const {
+    const std::vector<std::string>& names = scene_.materialNames;
     std::string name = string(node);
-    for (size_t i = 0; i < names_.size(); ++i) {
-      if (names_[i] == name) return int(i);
+    for (size_t i = 0; i < names.size(); ++i) {
+      if (names[i] == name) return int(i);
     }
     node.fail("unknown material '" + name + "' (" + describeNames() + ")");
   }
 
   std::string describeNames() const {
-    if (names_.empty()) return "no named materials are defined";
+    const std::vector<std::string>& names = scene_.materialNames;
+    if (names.empty()) return "no named materials are defined";
     std::string text = "known: ";
-    for (size_t i = 0; i < names_.size(); ++i) text += (i ? ", " : "") + names_[i];
+    for (size_t i = 0; i < names.size(); ++i) text += (i ? ", " : "") + names[i];
     return text;
   }
 
-  std::vector<Material> materials_;
-  std::vector<std::string> names_;  // names_[i] names materials_[i]
-  std::optional<int> defaultIndex_;
+  SceneSpec& scene_;
 };
 
 // The whole scene file without its "animate" block (scene.cpp). `root` names the file (or the frame
 // of a sequence) in messages, `path` is SceneSpec::path and relative files resolve against baseDir.
-SceneSpec readScene(const Node& root, const std::string& path, const std::string& baseDir);
+SceneSpec readScene(const Node& root, const std::string& path, const std::string& baseDir, bool objectsLater);
 
-// The "objects" array (scene_objects.cpp); each object's material goes through `materials`.
-std::vector<Object> readObjects(const Node& node, const std::string& baseDir, MaterialTable& materials);
+// The "objects" array (scene_objects.cpp); each object's material goes through `materials`. Empty
+// is an error unless `mayBeEmpty` (objects come later, as arrays).
+std::vector<Object> readObjects(const Node& node, const std::string& baseDir, MaterialTable& materials,
+                                bool mayBeEmpty);
 
 }  // namespace phongvk::scenejson

@@ -8,6 +8,8 @@ packages=(
   libglm-dev libstb-dev libgtest-dev googletest nlohmann-json3-dev libcli11-dev libtinyobjloader-dev zlib1g-dev
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   gnuplot-nox
+  python3 python3-dev pybind11-dev python3-numpy python3-pytest  # the Python package and its tests (python/)
+  python3-pil python3-matplotlib python3-nbconvert python3-ipykernel jupyter-core  # tests' PNG decoder, examples/python
   clang libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and the sanitizer runtimes for clang
 )
 

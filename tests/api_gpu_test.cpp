@@ -83,8 +83,8 @@ TEST(Api, DiffComparesTheReferenceAndTheComputePort) {
   EXPECT_FALSE(result.deviceName.empty());
 }
 
-TEST(Api, SequenceFramesAreScenes) {
-  const Sequence sequence = loadSequence(source("scenes/paper/fig6_orbit_red.json"));
+TEST(Api, AnimationFramesAreScenes) {
+  const Scene sequence = loadScene(source("scenes/paper/fig6_orbit_red.json"));
   EXPECT_EQ(sequence.frameCount(), 120);
   const Scene first = sequence.frame(0).withImageSize(120, 80);
   const Scene later = sequence.frame(30).withImageSize(120, 80);

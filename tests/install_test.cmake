@@ -3,6 +3,8 @@
 # the same program built with pkg-config; both render scenes/basic.json on the reference backend
 # to the same bytes as the tree's own `phongvk render --backend cpu`; the installed `phongvk`
 # runs from its prefix and reports its version.
+# With -DPYTHON=<interpreter> -DPYTHON_SITE=<site-packages under the prefix>, the Python package
+# installed there renders the same bytes too.
 # Run with -DBUILD_DIR=<build tree> -DSOURCE_DIR=<repository> -DOUT_DIR=<scratch folder> -DCXX=<compiler>.
 file(REMOVE_RECURSE ${OUT_DIR})
 file(MAKE_DIRECTORY ${OUT_DIR})
@@ -57,7 +59,18 @@ if(NOT run_output MATCHES "^phongvk [0-9]+\\.[0-9]+\\.[0-9]+ \\(")
 endif()
 run(${prefix}/bin/phongvk render ${SOURCE_DIR}/scenes/basic.json -o ${OUT_DIR}/cli.png --backend cpu)
 
-foreach(image find_package pkg_config)
+# The Python package, from the prefix's site-packages (when the build has it): the same image.
+if(PYTHON)
+  set(ENV{PYTHONPATH} ${prefix}/${PYTHON_SITE})
+  run(${PYTHON} -c "import phongvk, sys; phongvk.write_png(sys.argv[1], phongvk.Renderer('cpu').render(phongvk.load_scene(sys.argv[2])))"
+      ${OUT_DIR}/python.png ${SOURCE_DIR}/scenes/basic.json)
+  unset(ENV{PYTHONPATH})
+  set(images find_package pkg_config python)
+else()
+  set(images find_package pkg_config)
+endif()
+
+foreach(image ${images})
   file(SHA256 ${OUT_DIR}/${image}.png got)
   file(SHA256 ${OUT_DIR}/cli.png want)
   if(NOT got STREQUAL want)

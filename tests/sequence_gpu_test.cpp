@@ -39,7 +39,7 @@ Renderer validatedGpu() { return Renderer(RendererOptions{.backend = Backend::Gp
 void expectNoValidationMessages(const Renderer& gpu) { EXPECT_EQ(gpu.stats().validationMessages, 0u); }
 
 // Frames start, start + step, ... below end of `sequence`, at the tests' small size.
-std::vector<Scene> framesOf(const Sequence& sequence, int start, int end, int step) {
+std::vector<Scene> framesOf(const Scene& sequence, int start, int end, int step) {
   std::vector<Scene> frames;
   for (int i = start; i < end; i += step) frames.push_back(sequence.frame(i).withImageSize(kWidth, kHeight));
   return frames;
@@ -62,7 +62,7 @@ class PaperScene : public ::testing::TestWithParam<std::string> {};
 // About a dozen frames spread over each sequence (all of a short one) keep CI time low while
 // covering the whole sweep or orbit, and stepping exercises the reuse between frames.
 TEST_P(PaperScene, BothBackendsAgreeOnEveryFrameChecked) {
-  const Sequence sequence = loadSequence(test::sourcePath("scenes/paper/" + GetParam() + ".json"));
+  const Scene sequence = loadScene(test::sourcePath("scenes/paper/" + GetParam() + ".json"));
   const int step = std::max(1, sequence.frameCount() / 12);
   Renderer gpu = validatedGpu();
   expectBackendsAgree(framesOf(sequence, 0, sequence.frameCount(), step), gpu);
@@ -79,7 +79,7 @@ TEST(SequenceReuse, OrbitWithoutSpecularShadesOnce) {
   std::ifstream file(test::sourcePath("scenes/paper/fig7_orbit_white_red.json"));
   ordered_json json = ordered_json::parse(file);
   for (auto& [name, material] : json["materials"].items()) material["ks"] = 0;
-  const Sequence sequence = parseSequence(json.dump(), "orbit_ks0.json", test::sourcePath("scenes/paper"));
+  const Scene sequence = parseScene(json.dump(), "orbit_ks0.json", test::sourcePath("scenes/paper"));
   Renderer gpu = validatedGpu();
   expectBackendsAgree(framesOf(sequence, 0, 120, 10), gpu);
   EXPECT_EQ(gpu.stats().framesShaded, 1u);
@@ -95,7 +95,7 @@ TEST(SequenceReuse, GeometryTrackRebuildsOnlyWhenItChanges) {
   json["animate"] = {{"frames", 5},
                      {"tracks", {{{"path", "objects[0].size"}, {"values", {1, 1, 0.6, 0.6, 0.8}}},
                                  {{"path", "objects[0].material"}, {"values", materials}}}}};
-  const Sequence sequence = parseSequence(json.dump(), "resize.json", test::sourcePath("scenes/paper"));
+  const Scene sequence = parseScene(json.dump(), "resize.json", test::sourcePath("scenes/paper"));
   Renderer gpu = validatedGpu();
   expectBackendsAgree(framesOf(sequence, 0, 5, 1), gpu);
   EXPECT_EQ(gpu.stats().sceneBuilds, 3u);  // frames 0, 2 and 4

@@ -28,6 +28,23 @@ struct RenderOutput {
   std::vector<uint64_t> keys;
 };
 
+// The visibility buffer of a render with keys: per pixel, the winning triangle's index in the
+// scene (objects in order, each object's triangles in order) or NO_TRIANGLE, and the winning
+// fragment's view depth (+inf where nothing covers the pixel). Both come from the key
+// (depth32 << 32) | triangle (docs/DESIGN.md "Visibility").
+inline constexpr uint32_t NO_TRIANGLE = 0xFFFFFFFFu;
+struct Visibility {
+  int width = 0;
+  int height = 0;
+  std::vector<uint32_t> triangle;
+  std::vector<float> depth;
+};
+// Throws std::invalid_argument when `out` has no keys (one per pixel).
+PHONGVK_API Visibility visibilityOf(const RenderOutput& out);
+
+// The image as PNG bytes (zlib deflate, every row filtered "Sub").
+PHONGVK_API std::vector<uint8_t> encodePng(const Image& image);
+
 // Encodes the image as PNG and writes it atomically: a temporary file in the same folder, then a rename, so a failed or
 // interrupted write never leaves a partial file. Throws OutputError naming the path and the reason.
 PHONGVK_API void writePng(const std::string& path, const Image& image);

@@ -16,6 +16,7 @@
 #include "phongvk/errors.h"
 #include "phongvk/export.h"
 #include "phongvk/image.h"
+#include "phongvk/mesh.h"
 
 #include <cstdint>
 #include <memory>
@@ -29,7 +30,8 @@ namespace phongvk {
 PHONGVK_API const char* version();
 PHONGVK_API const char* revision();
 
-struct SceneSpec;  // the validated scene model (internal)
+struct SceneSpec;      // the validated scene model (internal)
+class SceneSequence;   // a scene file's frames (internal)
 
 // A validated scene: camera, lights, materials, objects (docs/DESIGN.md "Scene file"). Cheap to
 // copy (copies share the validated model). Meshes are built by the renderer that first renders it.
@@ -46,46 +48,36 @@ class PHONGVK_API Scene {
   // is kept and the aspect follows the new size. Throws SceneError for a size out of range.
   Scene withImageSize(int width, int height) const;
 
-  explicit Scene(std::shared_ptr<const SceneSpec> spec);
+  // Adds `mesh` as an object of this scene (not of copies made before). `material`: empty for the
+  // default material, the name of one of the scene's materials, or JSON text of material fields
+  // ({"ks": 0.2}), read like a scene file's. Throws std::invalid_argument naming the array
+  // ("vertices", "faces", "normals") and its first bad row, SceneError for a bad material; the
+  // scene is unchanged then.
+  void addMesh(const MeshArrays& mesh, const std::string& material = "", bool closed = false);
+
+  // The frames of the file's "animate" block (1 without one; this scene is frame 0), each
+  // validated like a scene file. Meshes added with addMesh are not in them. frame throws
+  // std::out_of_range outside 0..frameCount()-1, SceneError for a bad frame.
+  int frameCount() const;
+  Scene frame(int index) const;
+
+  explicit Scene(std::shared_ptr<const SceneSpec> spec, std::shared_ptr<const SceneSequence> sequence = nullptr);
   const SceneSpec& spec() const { return *spec_; }
 
  private:
   std::shared_ptr<const SceneSpec> spec_;
+  std::shared_ptr<const SceneSequence> sequence_;  // where frame() comes from
 };
 
 // Reads and validates a scene file. Throws SceneError naming the file and the JSON path (and for a
 // mesh the inner file and line). A file with an "animate" block gives its frame 0.
 PHONGVK_API Scene loadScene(const std::string& path);
 
-// The same from JSON text: `name` stands for the file in messages and relative mesh paths resolve
-// against `baseDir`.
+// The same from JSON text: `name` stands for the file in messages (none when empty) and relative
+// mesh paths resolve against `baseDir`. With `objectsLater` the scene may have no objects yet
+// ("objects": []) and get them from addMesh; rendering a scene without objects throws SceneError.
 PHONGVK_API Scene parseScene(const std::string& json, const std::string& name = "scene.json",
-                             const std::string& baseDir = ".");
-
-class SceneSequence;  // internal
-
-// The frames of a scene file's "animate" block (a file without one is a sequence of one frame).
-class PHONGVK_API Sequence {
- public:
-  int frameCount() const;
-  const std::string& path() const;
-  // Frame `index` (0 <= index < frameCount()) as a scene, validated like a file: messages name the
-  // frame, "a.json: frame 17: objects[0].material.ks: must be >= 0, got -1". Throws SceneError.
-  Scene frame(int index) const;
-
-  explicit Sequence(std::shared_ptr<const SceneSequence> sequence);
-
- private:
-  std::shared_ptr<const SceneSequence> sequence_;
-};
-
-// Reads a scene file and validates its "animate" block, evaluating every track at every frame.
-// Throws SceneError.
-PHONGVK_API Sequence loadSequence(const std::string& path);
-
-// The same from JSON text, named and resolved as parseScene does.
-PHONGVK_API Sequence parseSequence(const std::string& json, const std::string& name = "scene.json",
-                                   const std::string& baseDir = ".");
+                             const std::string& baseDir = ".", bool objectsLater = false);
 
 enum class Backend {
   Gpu,       // the Vulkan compute port (the default)

@@ -1,0 +1,375 @@
+// module.cpp — phongvk's Python extension (_phongvk), on the public C++ API (include/phongvk) alone:
+// numpy arrays in and out, the GIL released while rendering, C++ errors as Python exceptions. What
+// users import is the package around it (python/phongvk/__init__.py); the docstrings here are what
+// help() shows.
+#include <phongvk/phongvk.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace phongvk::python {
+namespace {
+
+// ---- arrays ----
+
+// A vector's bytes as an array of `shape` that owns them (no copy).
+template <typename T>
+py::array_t<T> ownedArray(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
+  auto* owned = new std::vector<T>(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>(shape, owned->data(), owner);
+}
+
+py::array_t<uint8_t> imageArray(Image&& image) {
+  const py::ssize_t h = image.height, w = image.width;
+  return ownedArray(std::move(image.rgb), {h, w, 3});
+}
+
+// An (H, W, 3) uint8 array as an Image (a copy).
+Image imageFromArray(const py::array& array) {
+  if (array.ndim() != 3 || array.shape(2) != 3 || !py::isinstance<py::array_t<uint8_t>>(array)) {
+    throw py::value_error("image: expected a uint8 array of shape (height, width, 3), got " +
+                          std::string(py::str(array.dtype())) + " of shape " +
+                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
+                              array.shape(), array.shape() + array.ndim()))))));
+  }
+  const auto contiguous = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(array);
+  Image image(int(array.shape(1)), int(array.shape(0)));
+  std::memcpy(image.rgb.data(), contiguous.data(), image.rgb.size());
+  return image;
+}
+
+std::string shapeText(const py::array& a) {
+  std::string text = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) text += (i ? ", " : "") + std::to_string(a.shape(i));
+  return text + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// `name` as an (N, 3) array of `kind` ('f': floating point, 'i': integer), flattened row-major.
+template <typename T>
+std::vector<T> rowsOf3(const py::array& a, const char* name, char kind) {
+  const char have = a.dtype().kind();
+  const bool kindOk = kind == 'f' ? have == 'f' : (have == 'i' || have == 'u');
+  if (!kindOk) {
+    throw py::value_error(std::string(name) + ": expected " + (kind == 'f' ? "a floating-point" : "an integer") +
+                          " array of shape (N, 3), got dtype " + std::string(py::str(a.dtype())));
+  }
+  if (a.ndim() != 2 || a.shape(1) != 3) {
+    throw py::value_error(std::string(name) + ": expected shape (N, 3), got " + shapeText(a));
+  }
+  const auto values = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+  return std::vector<T>(values.data(), values.data() + values.size());
+}
+
+// ---- scenes ----
+
+// Python values as JSON text: dicts, lists and tuples, strings, numbers (numpy's too, and arrays),
+// booleans, None. JSON has no NaN or infinity, so such a number is reported here, at its JSON path,
+// in the words the scene loader uses for a non-finite number.
+class JsonWriter {
+ public:
+  explicit JsonWriter(std::string name) : name_(std::move(name)) {}
+
+  std::string write(const py::handle& value) {
+    value_(value, "");
+    return out_;
+  }
+
+ private:
+  void value_(const py::handle& v, const std::string& path) {
+    if (v.is_none()) {
+      out_ += "null";
+    } else if (py::isinstance<py::bool_>(v)) {
+      out_ += v.cast<bool>() ? "true" : "false";
+    } else if (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)) {
+      number(v, path);
+    } else if (py::isinstance(v, py::module_::import("numpy").attr("generic"))) {
+      value_(v.attr("item")(), path);  // a numpy scalar as the Python value it holds
+    } else if (py::isinstance<py::str>(v)) {
+      out_ += py::module_::import("json").attr("dumps")(v).cast<std::string>();
+    } else if (py::isinstance<py::dict>(v)) {
+      object(py::reinterpret_borrow<py::dict>(v), path);
+    } else if (py::isinstance<py::array>(v)) {
+      value_(py::reinterpret_borrow<py::array>(v).attr("tolist")(), path);
+    } else if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+      array(py::reinterpret_borrow<py::sequence>(v), path);
+    } else {
+      fail(path, "must be a JSON value (dict, list, str, number, bool or None), got " +
+                     std::string(py::str(py::type::of(v).attr("__name__"))));
+    }
+  }
+
+  void number(const py::handle& v, const std::string& path) {
+    if (py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v)) {
+      out_ += std::string(py::str(v));
+      return;
+    }
+    const double x = v.cast<double>();
+    if (!std::isfinite(x)) fail(path, "must be finite, got " + std::string(std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf"));
+    out_ += std::string(py::repr(py::float_(x)));  // the shortest text that reads back as x
+  }
+
+  void object(const py::dict& d, const std::string& path) {
+    out_ += "{";
+    bool first = true;
+    for (const auto& [key, value] : d) {
+      if (!py::isinstance<py::str>(key)) fail(path, "keys must be strings, got " + std::string(py::repr(key)));
+      out_ += first ? "" : ", ";
+      first = false;
+      const std::string k = key.cast<std::string>();
+      out_ += py::module_::import("json").attr("dumps")(key).cast<std::string>() + ": ";
+      value_(value, path.empty() ? k : path + "." + k);
+    }
+    out_ += "}";
+  }
+
+  void array(const py::sequence& s, const std::string& path) {
+    out_ += "[";
+    for (size_t i = 0; i < s.size(); ++i) {
+      out_ += i ? ", " : "";
+      value_(s[i], path + "[" + std::to_string(i) + "]");
+    }
+    out_ += "]";
+  }
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw SceneError((name_.empty() ? "" : name_ + ": ") + (path.empty() ? "top level" : path) + ": " + what);
+  }
+
+  std::string name_;
+  std::string out_;
+};
+
+Scene sceneFromDict(const py::dict& d, std::optional<std::string> baseDir) {
+  const std::string json = JsonWriter("").write(d);
+  return parseScene(json, "", baseDir.value_or("."), true);
+}
+
+void addMesh(Scene& scene, const py::array& vertices, const py::array& faces, const std::optional<py::array>& normals,
+             const py::object& material, bool closed) {
+  MeshArrays mesh;
+  mesh.positions = rowsOf3<float>(vertices, "vertices", 'f');
+  mesh.triangles = rowsOf3<int64_t>(faces, "faces", 'i');
+  if (normals) {
+    mesh.normals = rowsOf3<float>(*normals, "normals", 'f');
+    if (normals->shape(0) != vertices.shape(0)) {
+      throw py::value_error("normals: expected one row per vertex (" + std::to_string(vertices.shape(0)) +
+                            "), got " + std::to_string(normals->shape(0)));
+    }
+  }
+  const std::string materialJson = material.is_none() ? "" : JsonWriter("").write(material);
+  scene.addMesh(mesh, materialJson, closed);
+}
+
+// ---- rendering ----
+
+// The scene at width x height when both are given, else as its camera says.
+Scene sized(const Scene& scene, std::optional<int> width, std::optional<int> height) {
+  if (width.has_value() != height.has_value()) throw py::value_error("width and height go together");
+  return width ? scene.withImageSize(*width, *height) : scene;
+}
+
+// `call` (a Renderer method) on `scene` at the asked size, with the GIL released meanwhile.
+template <typename Result>
+Result released(Renderer& renderer, const Scene& scene, std::optional<int> width, std::optional<int> height,
+                Result (Renderer::*call)(const Scene&)) {
+  const Scene s = sized(scene, width, height);
+  py::gil_scoped_release release;
+  return (renderer.*call)(s);
+}
+
+py::tuple visibilityArrays(RenderOutput&& out) {
+  Visibility v = visibilityOf(out);
+  const py::ssize_t h = v.height, w = v.width;
+  return py::make_tuple(imageArray(std::move(out.image)), ownedArray(std::move(v.triangle), {h, w}),
+                        ownedArray(std::move(v.depth), {h, w}));
+}
+
+py::dict statsDict(const RendererStats& s) {
+  py::dict d;
+  d["scene_builds"] = s.sceneBuilds;
+  d["frames_rendered"] = s.framesRendered;
+  d["frames_shaded"] = s.framesShaded;
+  d["frames_repeated"] = s.framesRepeated;
+  d["triangles"] = s.triangles;
+  d["build_ms"] = s.buildMs;
+  d["validation_messages"] = s.validationMessages;
+  return d;
+}
+
+py::dict diffDict(const DiffResult& r) {
+  const DiffStats& s = r.stats;
+  py::dict d;
+  d["width"] = s.width;
+  d["height"] = s.height;
+  d["pixels"] = s.pixels;
+  d["differing"] = s.differing;
+  d["max_abs"] = py::make_tuple(s.maxAbs[0], s.maxAbs[1], s.maxAbs[2]);
+  d["mean_abs"] = py::make_tuple(s.meanAbs[0], s.meanAbs[1], s.meanAbs[2]);
+  d["psnr"] = s.psnr;
+  d["triangle_mismatch"] = s.triangleMismatch;
+  d["identical_fraction"] = s.identicalFraction();
+  d["device"] = r.deviceName;
+  d["report"] = formatDiff(s);
+  return d;
+}
+
+py::dict deviceDict(const DeviceInfo& info) {
+  py::dict d;
+  d["index"] = info.index;
+  d["name"] = info.name;
+  d["type"] = info.type;
+  d["api_version"] = info.apiVersion;
+  d["usable"] = info.suitable;
+  d["missing"] = info.missing;
+  return d;
+}
+
+RendererOptions rendererOptions(const std::string& backend, std::optional<int> device, bool validate) {
+  return {parseBackend(backend), device.value_or(-1), validate};
+}
+
+}  // namespace
+}  // namespace phongvk::python
+
+PYBIND11_MODULE(_phongvk, m) {
+  using namespace phongvk;
+  using namespace phongvk::python;
+  m.doc() = "phongvk's compiled core; import phongvk, not this module.";
+
+  // C++ failures as Python exceptions: a bad scene is a ValueError, an unwritable file an OSError,
+  // a missing Vulkan device a RuntimeError. Anything else (a Vulkan call that failed, a device
+  // limit) is a RuntimeError naming the cause.
+  // (std::invalid_argument, a bad array, is a ValueError; std::out_of_range an IndexError.)
+  py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
+  py::register_exception<OutputError>(m, "OutputError", PyExc_OSError);
+  py::register_exception<NoDeviceError>(m, "NoDeviceError", PyExc_RuntimeError);
+
+  m.attr("__version__") = version();
+  m.attr("__revision__") = revision();
+
+  py::class_<Scene>(m, "Scene", R"(A validated scene: camera, lights, materials, objects.
+
+Made by load_scene(path) or scene_from_dict(d); meshes can be added as numpy arrays with
+add_mesh(). A scene file with an "animate" block is frame 0 of its sequence; frame(i) gives the
+others.)")
+      .def_property_readonly("path", &Scene::path, "The file the scene came from ('' for one made from a dict).")
+      .def_property_readonly("width", &Scene::width, "Width in pixels of the image the scene's camera renders.")
+      .def_property_readonly("height", &Scene::height, "Height in pixels of the image the scene's camera renders.")
+      .def_property_readonly("object_count", &Scene::objectCount, "How many objects the scene has.")
+      .def_property_readonly("light_count", &Scene::lightCount, "How many lights the scene has.")
+      .def_property_readonly("frame_count", &Scene::frameCount,
+                             "Frames of the scene's animation (1 for a scene without an \"animate\" block).")
+      .def("frame", &Scene::frame, py::arg("index"),
+           "Frame `index` of the scene's animation, validated like a scene file (IndexError when out of range).")
+      .def("add_mesh", &addMesh, py::arg("vertices"), py::arg("faces"), py::arg("normals") = py::none(),
+           py::arg("material") = py::none(), py::arg("closed") = false,
+           R"(Adds a triangle mesh object.
+
+vertices: (N, 3) floating-point array of world positions.
+faces: (M, 3) integer array of vertex indices, counter-clockwise seen from outside.
+normals: optional (N, 3) floating-point array of vertex normals; computed from the faces
+    (area-weighted) when not given.
+material: None (the default material), the name of one of the scene's materials, or a dict of
+    material fields ({"ks": 0.2, "color": [1, 0, 0]}), checked like a scene file's.
+closed: True if the mesh is a closed surface whose back faces may be culled.
+
+A wrong shape or dtype, a non-finite value or an index out of range raises ValueError naming the
+argument and the first bad row; a bad material raises SceneError.)")
+      .def("__repr__", [](const Scene& s) {
+        return "<phongvk.Scene " + (s.path().empty() ? std::string("(from a dict)") : s.path()) + ": " +
+               std::to_string(s.objectCount()) + " objects, " + std::to_string(s.lightCount()) + " lights, " +
+               std::to_string(s.width()) + "x" + std::to_string(s.height()) + ">";
+      });
+
+  m.def("load_scene", &loadScene, py::arg("path"),
+        "Reads and validates a scene file (the CLI's schema). Raises SceneError naming the file and the JSON path.");
+  m.def("scene_from_dict", &sceneFromDict, py::arg("d"), py::arg("base_dir") = py::none(),
+        R"(A scene from a dict with the scene file's schema, validated the same way.
+
+Relative mesh paths resolve against base_dir (the working directory when None). The dict may have
+no objects yet ("objects": []) and get them from add_mesh(); rendering a scene without objects
+raises SceneError.)");
+
+  py::class_<Renderer>(m, "Renderer", R"(Renders scenes on one backend.
+
+backend: "gpu" (the Vulkan compute port, default), "cpu" (the reference) or "graphics" (the Vulkan
+    graphics-pipeline baseline).
+device: a Vulkan device index (see devices()); None for the best usable one.
+validate: turn the Vulkan validation layers on.
+
+A renderer keeps what it uploaded: rendering a scene with the same geometry as the last one (another
+camera, size, lights or materials, another frame of an orbit) builds and uploads no mesh again
+(stats["scene_builds"] counts the builds). The GIL is released while rendering, so renderers in
+other threads go on.)")
+      .def(py::init([](const std::string& backend, std::optional<int> device, bool validate) {
+             return std::make_unique<Renderer>(rendererOptions(backend, device, validate));
+           }),
+           py::arg("backend") = "gpu", py::arg("device") = py::none(), py::arg("validate") = false)
+      .def(
+          "render",
+          [](Renderer& r, const Scene& scene, std::optional<int> width, std::optional<int> height) {
+            return imageArray(released(r, scene, width, height, &Renderer::render));
+          },
+          py::arg("scene"), py::arg("width") = py::none(), py::arg("height") = py::none(),
+          "One frame of `scene` as a C-contiguous uint8 array of shape (height, width, 3), row 0 at the top.")
+      .def(
+          "render_visibility",
+          [](Renderer& r, const Scene& scene, std::optional<int> width, std::optional<int> height) {
+            return visibilityArrays(released(r, scene, width, height, &Renderer::renderWithKeys));
+          },
+          py::arg("scene"), py::arg("width") = py::none(), py::arg("height") = py::none(),
+          R"(One frame with its visibility buffer: (image, triangle, depth).
+
+triangle: (height, width) uint32 array, the winning triangle's index in the scene (objects in order,
+    each object's triangles in order), NO_TRIANGLE where nothing covers the pixel.
+depth: (height, width) float32 array, the winning fragment's view depth, inf where nothing covers it.
+The gpu and cpu backends give the same buffers; the graphics backend has none (ValueError).)")
+      .def_property_readonly("backend", [](const Renderer& r) { return backendName(r.backend()); },
+                             "The backend's name.")
+      .def_property_readonly("device_name", &Renderer::deviceName,
+                             "The Vulkan device's name, or 'cpu (reference)'.")
+      .def_property_readonly("stats", [](const Renderer& r) { return statsDict(r.stats()); },
+                             "What the renderer has done: scene_builds, frames_rendered, frames_shaded, "
+                             "frames_repeated, triangles, build_ms, validation_messages.");
+
+  m.def(
+      "diff",
+      [](const Scene& scene, std::optional<int> device) {
+        DiffResult result;
+        {
+          py::gil_scoped_release release;
+          result = diff(scene, rendererOptions("gpu", device, false));
+        }
+        return diffDict(result);
+      },
+      py::arg("scene"), py::arg("device") = py::none(),
+      R"(Renders `scene` with the reference and the compute port and compares them, pixel by pixel and key
+by key: the numbers `phongvk diff` prints, as a dict (width, height, pixels, differing, max_abs,
+mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as "report".)");
+
+  m.def("write_png", [](const std::string& path, const py::array& image) { writePng(path, imageFromArray(image)); },
+        py::arg("path"), py::arg("image"),
+        "Writes a (height, width, 3) uint8 array as a PNG, atomically (no partial file). Raises OutputError.");
+  m.def("read_png", [](const std::string& path) { return imageArray(readPng(path)); }, py::arg("path"),
+        "Reads a PNG as a (height, width, 3) uint8 array.");
+  m.def("encode_png", [](const py::array& image) {
+    const std::vector<uint8_t> png = encodePng(imageFromArray(image));
+    return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
+  }, py::arg("image"), "A (height, width, 3) uint8 array as PNG bytes.");
+  m.def("devices", [] {
+    py::list list;
+    for (const DeviceInfo& info : listDevices()) list.append(deviceDict(info));
+    return list;
+  }, "The Vulkan devices, each a dict: index, name, type, api_version, usable, missing (what it lacks).");
+  m.attr("NO_TRIANGLE") = NO_TRIANGLE;
+}

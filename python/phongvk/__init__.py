@@ -1,0 +1,68 @@
+"""phongvk: a headless Phong/Gouraud renderer, Vulkan compute checked against a C++ reference.
+
+    import phongvk
+    scene = phongvk.load_scene("scenes/basic.json")
+    image = phongvk.Renderer("gpu").render(scene)   # uint8 array, (height, width, 3)
+    phongvk.write_png("basic.png", image)
+
+Both renderers ("gpu", the Vulkan compute port, and "cpu", the reference) give the same bytes;
+phongvk.diff(scene) compares them. Meshes come from scene files or as numpy arrays
+(Scene.add_mesh). Everything here is the C++ library's public API (include/phongvk/phongvk.h);
+this package only shapes it for Python.
+"""
+
+import numpy as _np
+
+from . import _phongvk
+from ._phongvk import (
+    NO_TRIANGLE,
+    NoDeviceError,
+    OutputError,
+    Scene,
+    SceneError,
+    __revision__,
+    __version__,
+    devices,
+    diff,
+    encode_png,
+    load_scene,
+    scene_from_dict,
+    write_png,
+)
+
+# What the compiled module defines reads as phongvk's own (phongvk.SceneError in a traceback).
+for _name in ("NoDeviceError", "OutputError", "Scene", "SceneError"):
+    getattr(_phongvk, _name).__module__ = __name__
+
+__all__ = [
+    "Image", "NO_TRIANGLE", "NoDeviceError", "OutputError", "Renderer", "Scene", "SceneError",
+    "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
+]
+
+
+class Image(_np.ndarray):
+    """An RGB image: a C-contiguous uint8 numpy array of shape (height, width, 3), row 0 at the
+    top, that shows itself as a picture in Jupyter. Everything numpy does with arrays works."""
+
+    def _repr_png_(self):
+        return encode_png(_np.asarray(self))
+
+
+class Renderer(_phongvk.Renderer):
+    __doc__ = _phongvk.Renderer.__doc__
+
+    def render(self, scene, width=None, height=None):
+        """One frame of `scene` as an Image (a uint8 array of shape (height, width, 3)); at
+        width x height pixels when both are given (the vertical field of view is kept)."""
+        return super().render(scene, width, height).view(Image)
+
+    def render_visibility(self, scene, width=None, height=None):
+        image, triangle, depth = super().render_visibility(scene, width, height)
+        return image.view(Image), triangle, depth
+
+    render_visibility.__doc__ = _phongvk.Renderer.render_visibility.__doc__
+
+
+def read_png(path):
+    """Reads a PNG as an Image (a uint8 array of shape (height, width, 3))."""
+    return _phongvk.read_png(path).view(Image)

@@ -1,0 +1,28 @@
+"""What the pytest suites share: where the repository and the phongvk command are (CTest sets
+PHONGVK_SOURCE_DIR and PHONGVK_CLI; run by hand, they default to this checkout and build/)."""
+
+import os
+import pathlib
+
+import pytest
+
+SOURCE_DIR = pathlib.Path(os.environ.get("PHONGVK_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+CLI = pathlib.Path(os.environ.get("PHONGVK_CLI", SOURCE_DIR / "build" / "phongvk"))
+
+
+def scene_path(relative):
+    return str(SOURCE_DIR / relative)
+
+
+def child_environment():
+    """This process's environment for a child process, its PYTHONPATH made absolute (the child may
+    run in another folder) so that it imports the same phongvk."""
+    env = dict(os.environ)
+    paths = [str(pathlib.Path(p).resolve()) for p in env.get("PYTHONPATH", "").split(os.pathsep) if p]
+    env["PYTHONPATH"] = os.pathsep.join(paths)
+    return env
+
+
+@pytest.fixture
+def source_dir():
+    return SOURCE_DIR

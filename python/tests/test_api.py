@@ -1,0 +1,167 @@
+"""The Python API: scenes from files and dicts, meshes from numpy arrays, the visibility buffer,
+diff, PNG files, devices, and the documented errors with their words."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import phongvk
+from conftest import scene_path
+
+CAMERA = {"position": [3, -2, 1.5], "look_at": [0, 0, 0], "width": 96, "height": 64}
+
+
+def octahedron():
+    """An octahedron as float32 vertices and int faces, counter-clockwise seen from outside."""
+    v = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=np.float32) * 0.7
+    f = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    return v + np.float32(0.1), f
+
+
+def test_load_scene_and_render():
+    scene = phongvk.load_scene(scene_path("scenes/basic.json"))
+    assert (scene.width, scene.height) == (1385, 923)
+    image = phongvk.Renderer("cpu").render(scene, width=120, height=80)
+    assert image.shape == (80, 120, 3) and image.dtype == np.uint8
+    assert isinstance(image, np.ndarray) and isinstance(image, phongvk.Image)
+
+
+def test_numpy_mesh_renders_exactly_as_the_same_obj_file(tmp_path):
+    vertices, faces = octahedron()
+    obj = tmp_path / "octahedron.obj"
+    # %.9g of a float32 reads back as the same float32.
+    obj.write_text("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in vertices.tolist()) +
+                   "".join("f %d %d %d\n" % tuple(x + 1 for x in t) for t in faces.tolist()))
+    base = {"camera": CAMERA, "lights": [{"position": [2, -3, 3]}], "materials": {"red": {"color": [1, 0.2, 0.2]}}}
+    from_file = phongvk.scene_from_dict(dict(base, objects=[{"shape": "mesh", "file": "octahedron.obj",
+                                                             "material": "red"}]), base_dir=str(tmp_path))
+    from_arrays = phongvk.scene_from_dict(dict(base, objects=[]))
+    from_arrays.add_mesh(vertices, faces, material="red")
+    for backend in ("cpu", "gpu"):
+        renderer = phongvk.Renderer(backend)
+        a, b = renderer.render(from_file), renderer.render(from_arrays)
+        assert np.array_equal(a, b)
+        assert a.any()
+
+
+def test_given_normals_and_inline_materials():
+    vertices, faces = octahedron()
+    scene = phongvk.scene_from_dict({"camera": CAMERA, "lights": [{"position": [2, -3, 3]}], "objects": []})
+    normals = vertices / np.linalg.norm(vertices, axis=1, keepdims=True)
+    scene.add_mesh(vertices, faces, normals=normals, material={"ks": 0.5, "color": [0.2, 0.4, 1.0]}, closed=True)
+    assert scene.object_count == 1
+    cpu, gpu = phongvk.Renderer("cpu").render(scene), phongvk.Renderer("gpu").render(scene)
+    assert np.array_equal(cpu, gpu)
+
+
+@pytest.mark.parametrize("args, message", [
+    (dict(vertices=np.zeros((4, 2), np.float32)), "vertices: expected shape (N, 3), got (4, 2)"),
+    (dict(vertices=np.zeros((4, 3), np.int32)), "vertices: expected a floating-point array of shape (N, 3), got dtype int32"),
+    (dict(faces=np.zeros((2, 3), np.float64)), "faces: expected an integer array of shape (N, 3), got dtype float64"),
+    (dict(faces=np.zeros((6,), np.int64)), "faces: expected shape (N, 3), got (6,)"),
+    (dict(faces=np.array([[0, 1, 2], [0, 1, 9]])), "faces: row 1 has index 9, but there are 4 vertices"),
+    (dict(faces=np.array([[0, 1, 2], [-1, 1, 2]])), "faces: row 1 has index -1, but there are 4 vertices"),
+    (dict(vertices=np.array([[0, 0, 0], [1, 0, 0], [0, np.nan, 0], [0, 0, 1]], np.float32)),
+     "vertices: row 2 is not finite: [0, nan, 0]"),
+    (dict(normals=np.ones((3, 3), np.float32)), "normals: expected one row per vertex (4), got 3"),
+    (dict(normals=np.array([[1, 0, 0], [0, 1, 0], [0, 0, 0], [0, 0, 1]], np.float32)),
+     "normals: row 2 has no direction: [0, 0, 0]"),
+])
+def test_bad_arrays_raise_value_error_naming_the_argument_and_row(args, message):
+    scene = phongvk.scene_from_dict({"camera": CAMERA, "objects": []})
+    kwargs = dict(vertices=np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], np.float32),
+                  faces=np.array([[0, 1, 2], [0, 2, 3]]))
+    kwargs.update(args)
+    with pytest.raises(ValueError) as error:
+        scene.add_mesh(**kwargs)
+    assert message in str(error.value)
+    assert scene.object_count == 0  # nothing half-added
+
+
+def test_bad_material_is_a_scene_error_at_its_path():
+    scene = phongvk.load_scene(scene_path("scenes/basic.json"))
+    vertices, faces = octahedron()
+    with pytest.raises(phongvk.SceneError, match=r"scenes/basic.json: objects\[6\].material.ks: must be >= 0, got -1"):
+        scene.add_mesh(vertices, faces, material={"ks": -1})
+    with pytest.raises(phongvk.SceneError, match=r"objects\[6\].material: unknown material 'gold' \(known: "):
+        scene.add_mesh(vertices, faces, material="gold")
+
+
+def test_bad_scenes_raise_scene_error_a_value_error():
+    assert issubclass(phongvk.SceneError, ValueError)
+    with pytest.raises(phongvk.SceneError, match=r"^objects\[0\].radius: must be > 0, got -1$"):
+        phongvk.scene_from_dict({"camera": CAMERA, "objects": [{"shape": "sphere", "radius": -1}]})
+    with pytest.raises(phongvk.SceneError, match=r"^camera.position\[1\]: must be finite, got nan$"):
+        phongvk.scene_from_dict({"camera": dict(CAMERA, position=[3, math.nan, 1]), "objects": []})
+    with pytest.raises(phongvk.SceneError, match=r"^lamps: unknown key \(allowed: camera, "):
+        phongvk.scene_from_dict({"camera": CAMERA, "objects": [], "lamps": []})
+    with pytest.raises(phongvk.SceneError, match=r"no_such\.json: cannot read file"):
+        phongvk.load_scene(scene_path("scenes/no_such.json"))
+    with pytest.raises(phongvk.SceneError, match=r"objects: scene has no objects"):
+        phongvk.Renderer("cpu").render(phongvk.scene_from_dict({"camera": CAMERA, "objects": []}))
+
+
+def test_scene_from_dict_takes_numpy_values():
+    scene = phongvk.scene_from_dict({"camera": {"position": np.array([3.0, -2.0, 1.5]), "look_at": [0, 0, 0],
+                                                "width": np.int64(64), "height": 48},
+                                     "objects": [{"shape": "cube", "size": np.float32(0.5)}]})
+    assert (scene.width, scene.height) == (64, 48)
+
+
+def test_animation_frames():
+    scene = phongvk.load_scene(scene_path("scenes/paper/fig6_orbit_red.json"))
+    assert scene.frame_count == 120
+    renderer = phongvk.Renderer("cpu")
+    first, later = renderer.render(scene.frame(0), 96, 64), renderer.render(scene.frame(30), 96, 64)
+    assert np.array_equal(first, renderer.render(scene, 96, 64))
+    assert not np.array_equal(first, later)
+    with pytest.raises(IndexError):
+        scene.frame(120)
+    assert phongvk.load_scene(scene_path("scenes/basic.json")).frame_count == 1
+
+
+def test_visibility_buffer_is_the_same_on_both_backends():
+    scene = phongvk.load_scene(scene_path("scenes/paper/fig1_cube.json"))
+    a_image, a_tri, a_depth = phongvk.Renderer("gpu").render_visibility(scene, 200, 130)
+    b_image, b_tri, b_depth = phongvk.Renderer("cpu").render_visibility(scene, 200, 130)
+    assert a_tri.shape == (130, 200) and a_tri.dtype == np.uint32 and a_depth.dtype == np.float32
+    assert np.array_equal(a_image, b_image) and np.array_equal(a_tri, b_tri)
+    assert np.array_equal(a_depth, b_depth)
+    uncovered = a_tri == phongvk.NO_TRIANGLE
+    assert uncovered.any() and (~uncovered).any()
+    assert np.all(np.isinf(a_depth[uncovered])) and np.all(a_depth[~uncovered] > 0)
+    with pytest.raises(ValueError, match="graphics backend has no visibility keys"):
+        phongvk.Renderer("graphics").render_visibility(scene)
+
+
+def test_diff_has_the_numbers_the_cli_prints():
+    result = phongvk.diff(phongvk.load_scene(scene_path("scenes/two_lights.json")))
+    assert result["pixels"] == 1385 * 923 and result["differing"] == 0 and result["triangle_mismatch"] == 0
+    assert result["max_abs"] == (0, 0, 0) and math.isinf(result["psnr"])
+    assert "pixels differing:    0" in result["report"]
+
+
+def test_png_round_trip_and_jupyter(tmp_path):
+    image = phongvk.Renderer("cpu").render(phongvk.load_scene(scene_path("scenes/basic.json")), 64, 40)
+    phongvk.write_png(str(tmp_path / "a.png"), image)
+    assert np.array_equal(phongvk.read_png(str(tmp_path / "a.png")), image)
+    assert image._repr_png_().startswith(b"\x89PNG\r\n\x1a\n")
+    with pytest.raises(phongvk.OutputError, match=r"cannot write '.*missing/a.png': No such file or directory"):
+        phongvk.write_png(str(tmp_path / "missing" / "a.png"), image)
+    with pytest.raises(ValueError, match=r"image: expected a uint8 array of shape \(height, width, 3\)"):
+        phongvk.write_png(str(tmp_path / "b.png"), image.astype(np.float32))
+
+
+def test_devices_and_version():
+    devices = phongvk.devices()
+    assert any(d["usable"] for d in devices)
+    assert set(devices[0]) == {"index", "name", "type", "api_version", "usable", "missing"}
+    assert phongvk.__version__.count(".") == 2 and phongvk.__revision__
+
+
+def test_help_reads_well():
+    doc = phongvk.Renderer.__doc__
+    assert "backend" in doc and "keeps what it uploaded" in doc
+    assert "add_mesh" in phongvk.Scene.__doc__ and "vertices: (N, 3)" in phongvk.Scene.add_mesh.__doc__

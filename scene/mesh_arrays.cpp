@@ -1,0 +1,106 @@
+#include "scene/mesh_arrays.h"
+
+#include "scene/normals.h"
+#include "scene/scene_json.h"
+#include "scene/scene_sections.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace phongvk {
+namespace {
+
+using scenejson::formatNumber;
+
+[[noreturn]] void failRow(const char* array, size_t row, const std::string& what) {
+  throw std::invalid_argument(std::string(array) + ": row " + std::to_string(row) + " " + what);
+}
+
+std::string rowText(const std::vector<float>& xyz, size_t row) {
+  return "[" + formatNumber(xyz[3 * row]) + ", " + formatNumber(xyz[3 * row + 1]) + ", " +
+         formatNumber(xyz[3 * row + 2]) + "]";
+}
+
+void checkCounts(const MeshArrays& a) {
+  if (a.positions.size() % 3 != 0 || a.triangles.size() % 3 != 0 || a.normals.size() % 3 != 0) {
+    throw std::invalid_argument("vertices, faces and normals hold 3 values a row");
+  }
+  if (a.positions.empty()) throw std::invalid_argument("vertices: the mesh has no vertices");
+  if (a.triangles.empty()) throw std::invalid_argument("faces: the mesh has no faces");
+  if (!a.normals.empty() && a.normals.size() != a.positions.size()) {
+    throw std::invalid_argument("normals: expected one row per vertex (" + std::to_string(a.positions.size() / 3) +
+                                "), got " + std::to_string(a.normals.size() / 3));
+  }
+}
+
+// Finite, and within the coordinates a scene may use (scene.h MAX_COORDINATE).
+void checkPositions(const std::vector<float>& p) {
+  for (size_t i = 0; i < p.size(); ++i) {
+    if (!std::isfinite(p[i])) failRow("vertices", i / 3, "is not finite: " + rowText(p, i / 3));
+    if (std::abs(double(p[i])) > MAX_COORDINATE) {
+      failRow("vertices", i / 3, "is beyond the " + formatNumber(MAX_COORDINATE) + " m a scene may use: " +
+                                     rowText(p, i / 3));
+    }
+  }
+}
+
+void checkIndices(const std::vector<int64_t>& t, size_t vertices) {
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (t[i] < 0 || uint64_t(t[i]) >= vertices) {
+      failRow("faces", i / 3, "has index " + std::to_string(t[i]) + ", but there are " + std::to_string(vertices) +
+                                  " vertices");
+    }
+  }
+}
+
+glm::dvec3 rowOf(const std::vector<float>& xyz, size_t row) { return {xyz[3 * row], xyz[3 * row + 1], xyz[3 * row + 2]}; }
+
+}  // namespace
+
+Mesh meshFromArrays(const MeshArrays& a) {
+  checkCounts(a);
+  checkPositions(a.positions);
+  const size_t vertices = a.positions.size() / 3;
+  checkIndices(a.triangles, vertices);
+  Mesh mesh;
+  for (size_t v = 0; v < vertices; ++v) mesh.positions.push_back(glm::vec3(rowOf(a.positions, v)));
+  for (size_t v = 0; v < a.normals.size() / 3; ++v) {
+    const glm::dvec3 n = rowOf(a.normals, v);
+    if (!std::isfinite(glm::length(n)) || glm::length(n) == 0.0) {
+      failRow("normals", v, "has no direction: " + rowText(a.normals, v));
+    }
+    mesh.normals.push_back(glm::vec3(glm::normalize(n)));
+  }
+  for (size_t k = 0; k < a.triangles.size(); k += 3) {
+    const glm::uvec3 t(uint32_t(a.triangles[k]), uint32_t(a.triangles[k + 1]), uint32_t(a.triangles[k + 2]));
+    const glm::dvec3 p0(mesh.positions[t.x]), p1(mesh.positions[t.y]), p2(mesh.positions[t.z]);
+    if (glm::cross(p1 - p0, p2 - p0) == glm::dvec3(0.0)) continue;  // zero area: draws nothing, as from a file
+    mesh.triangles.push_back(t);
+  }
+  if (mesh.triangles.empty()) throw std::invalid_argument("faces: every triangle is degenerate (zero area)");
+  if (mesh.normals.empty()) computeVertexNormals(mesh);
+  return mesh;
+}
+
+void addMeshObject(SceneSpec& scene, const MeshArrays& arrays, const std::string& material, bool closed) {
+  Object object;
+  object.shape = Shape::Mesh;
+  object.jsonPath = "objects[" + std::to_string(scene.objects.size()) + "]";
+  object.closed = closed;
+  object.arrays = std::make_shared<const Mesh>(meshFromArrays(arrays));
+  SceneSpec changed = scene;  // the material may add an entry; nothing changes if it fails
+  scenejson::MaterialTable table(changed);
+  const size_t first = material.find_first_not_of(" \t\n");
+  if (first == std::string::npos) {
+    object.material = table.forObject(std::nullopt);
+  } else {
+    // JSON text, or a bare name.
+    const bool json = material[first] == '{' || material[first] == '"';
+    const scenejson::Json value = json ? scenejson::parseJson(material, scene.path) : scenejson::Json(material);
+    object.material = table.forObject(scenejson::Node(value, object.jsonPath + ".material", scene.path));
+  }
+  changed.objects.push_back(std::move(object));
+  scene = std::move(changed);
+}
+
+}  // namespace phongvk

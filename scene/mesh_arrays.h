@@ -1,0 +1,25 @@
+// mesh_arrays.h — mesh objects given as arrays (include/phongvk/mesh.h) instead of a file: checked
+// row by row, built once, and added to a scene as a `mesh` object of its own.
+#pragma once
+
+#include "phongvk/mesh.h"
+#include "scene/mesh.h"
+#include "scene/scene.h"
+
+#include <string>
+
+namespace phongvk {
+
+// The mesh the arrays describe, as an OBJ file with the same vertices and faces would give it:
+// zero-area triangles dropped, given normals normalised, missing ones area-weighted. Throws
+// std::invalid_argument naming the array and its first bad row: a non-finite or out-of-range
+// position, an index outside the vertices, a normal without direction, a wrong count.
+Mesh meshFromArrays(const MeshArrays& arrays);
+
+// Appends the arrays as a mesh object ("objects[N]") to `scene`, with `material`: empty for the
+// default material, a material's name, or JSON text (a quoted name or an object of material
+// fields), read like a scene file's "material" (messages name "objects[N].material"). Throws std::invalid_argument for bad
+// arrays, SceneError for a bad material; `scene` is unchanged then.
+void addMeshObject(SceneSpec& scene, const MeshArrays& arrays, const std::string& material, bool closed);
+
+}  // namespace phongvk
