@@ -1,6 +1,6 @@
 // float_probe.h — does the device divide and take square roots exactly as the host does?
 //
-// The renderer's key and colour maths must give the reference's bits (DESIGN.md "Visibility"), but
+// The renderer's key and colour maths must give the reference's bits (docs/DESIGN.md "Visibility"), but
 // Vulkan lets a device's division and sqrt be off by a few ulps (shaders/exact_float.h). Whoever
 // builds a GPU renderer probes the device first: probe_float.comp runs a fixed set of inputs through
 // the device's operations and through exact_float.h's corrected ones, and the host compares every

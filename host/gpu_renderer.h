@@ -1,5 +1,5 @@
 // gpu_renderer.h — the Vulkan compute port: per-vertex Phong, 64-bit atomic-depth raster and
-// Gouraud resolve (DESIGN.md "GPU pipeline shape"). The scene is uploaded once; each frame sends
+// Gouraud resolve (docs/DESIGN.md "GPU pipeline shape"). The scene is uploaded once; each frame sends
 // only the camera-dependent data (FrameInputs).
 #pragma once
 

@@ -30,7 +30,7 @@ namespace {
 using namespace gpu;
 
 constexpr VkFormat COLOR_FORMAT = VK_FORMAT_R8G8B8A8_UNORM;  // bytes as imageFromPacked reads them
-// Reversed-Z in 32-bit float: relative depth precision is the same near and far (DESIGN.md
+// Reversed-Z in 32-bit float: relative depth precision is the same near and far (docs/DESIGN.md
 // "Visibility" asks that a 1 m object 1e5 m away not speckle).
 constexpr VkFormat DEPTH_FORMAT = VK_FORMAT_D32_SFLOAT;
 constexpr float DEPTH_CLEAR = 0.0f;  // the far plane

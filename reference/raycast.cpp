@@ -44,7 +44,7 @@ double nearerHit(const glm::dvec3& eye, const glm::dvec3& d, const glm::dvec3& c
   return std::min(t0, t1);
 }
 
-// DESIGN.md "Phong": ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), the
+// docs/DESIGN.md "Phong": ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), the
 // specular term only where N.l > 0, a light exactly at P adding nothing.
 glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& eye, const SceneSpec& scene,
                  const Material& m) {

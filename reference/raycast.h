@@ -14,7 +14,7 @@ namespace phongvk {
 // center and radius — as seen through `view` (same pixel centres, basis and focal length as the
 // rasterizers). A pixel shows the sphere where its ray's nearer hit lies between the near and far
 // planes (view-space depth, as the renderers clip); elsewhere the background. Colours follow
-// DESIGN.md's Phong formula with the scene's material, ambient and lights, clamped to [0, 1] and
+// docs/DESIGN.md's Phong formula with the scene's material, ambient and lights, clamped to [0, 1] and
 // written as round(c * 255). Throws std::invalid_argument for any other kind of scene.
 Image raycastSphere(const SceneSpec& scene, const View& view);
 

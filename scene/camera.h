@@ -1,4 +1,4 @@
-// camera.h — the camera's image size, focal length and basis (DESIGN.md "Camera").
+// camera.h — the camera's image size, focal length and basis (docs/DESIGN.md "Camera").
 #pragma once
 
 #include "scene/scene.h"

@@ -1,4 +1,4 @@
-// scene.cpp — a scene file as a whole (DESIGN.md "Scene file"): its top-level keys, the render
+// scene.cpp — a scene file as a whole (docs/DESIGN.md "Scene file"): its top-level keys, the render
 // options, and loading. Each section has its own reader (scene_sections.h); the generic checks
 // (types, ranges, paths in messages) live in scene_json.cpp.
 #include "scene/scene.h"

@@ -1,4 +1,4 @@
-// scene.h — the validated scene model and its JSON loader (DESIGN.md "Scene file").
+// scene.h — the validated scene model and its JSON loader (docs/DESIGN.md "Scene file").
 // Everything downstream reads this model; nothing downstream re-reads the JSON.
 #pragma once
 

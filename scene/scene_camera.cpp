@@ -1,4 +1,4 @@
-// scene_camera.cpp — the scene file's "camera" (DESIGN.md "Camera"): position, view direction,
+// scene_camera.cpp — the scene file's "camera" (docs/DESIGN.md "Camera"): position, view direction,
 // up, field of view, image size and depth range, checked so that every loaded camera makes a view
 // (camera.h makeView) without a NaN or an overflow.
 #include "scene/scene_sections.h"
@@ -42,7 +42,7 @@ glm::dvec3 readUp(const Node& camera, glm::dvec3 direction) {
   return up;
 }
 
-// DESIGN.md "Camera": H = floor(2·resolution·tan(fov/2)), W = floor(2·resolution·tan(fov/2)·aspect)
+// docs/DESIGN.md "Camera": H = floor(2·resolution·tan(fov/2)), W = floor(2·resolution·tan(fov/2)·aspect)
 // (the same operations as makeView, so a scene that loads also makes a view).
 void checkImageSizeFromResolution(const Node& camera, const CameraSpec& spec) {
   double planeHeight = 2 * spec.resolution * std::tan(glm::radians(spec.fov) / 2);

@@ -1,4 +1,4 @@
-// scene_lighting.cpp — the scene file's "lights" and materials (DESIGN.md "Phong, per vertex"):
+// scene_lighting.cpp — the scene file's "lights" and materials (docs/DESIGN.md "Phong, per vertex"):
 // colours, intensities, Phong coefficients and an attenuation that stays positive at every distance.
 #include "scene/scene_sections.h"
 

@@ -1,5 +1,5 @@
 // clip.h — clipping against the near plane and the guard band, and the frustum test that culls a
-// triangle off screen (DESIGN.md "Rasterization"). Shared by the GPU passes and the reference; see
+// triangle off screen (docs/DESIGN.md "Rasterization"). Shared by the GPU passes and the reference; see
 // glsl_cpp.h for the dialect rules. Positions are homogeneous pixel-space h = (X, Y, W) (phong.h).
 #ifndef PHONGVK_CLIP_H
 #define PHONGVK_CLIP_H

@@ -1,4 +1,4 @@
-// depth.h — depth and the 64-bit visibility key (DESIGN.md "Visibility"). The depth of a pixel is
+// depth.h — depth and the 64-bit visibility key (docs/DESIGN.md "Visibility"). The depth of a pixel is
 // the view depth where its centre's ray meets the triangle's plane (not the clipped polygon's):
 // with h0 h1 h2 the homogeneous pixel-space vertices and p the pixel's ray (x + 0.5 - cx,
 // y + 0.5 - cy, 1), z = dot(h0, n) / dot(p, n), n = (h1 - h0) x (h2 - h0); the same quantities

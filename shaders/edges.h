@@ -1,5 +1,5 @@
 // edges.h — snapping to 1/256 pixel and the integer edge functions with the top-left rule
-// (DESIGN.md "Rasterization"): which pixel centres a snapped sub-triangle covers. Shared by the GPU
+// (docs/DESIGN.md "Rasterization"): which pixel centres a snapped sub-triangle covers. Shared by the GPU
 // passes and the reference; see glsl_cpp.h for the dialect rules.
 #ifndef PHONGVK_EDGES_H
 #define PHONGVK_EDGES_H

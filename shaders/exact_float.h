@@ -3,7 +3,7 @@
 // The reference's float `/` and sqrt are IEEE: correctly rounded. Vulkan lets a device's be off by
 // a few ulps (OpFDiv 2.5 ulp; sqrt is built from inversesqrt), and real GPUs use that freedom
 // (NVIDIA's division is a reciprocal and a multiply). A depth one ulp off breaks the equal-depth
-// tie-break and the key equality with the reference (DESIGN.md "Visibility"), and a snapped vertex
+// tie-break and the key equality with the reference (docs/DESIGN.md "Visibility"), and a snapped vertex
 // one ulp off can move coverage. So the shared maths divides with `divide` and takes roots with
 // `squareRoot`:
 //   - C++: the plain IEEE operations;

@@ -1,5 +1,5 @@
 // gouraud.h — Gouraud interpolation of the vertex colours at a pixel, perspective-correct or
-// linear in screen space, and the 8-bit colour it becomes (DESIGN.md "Gouraud"). Shared by the GPU
+// linear in screen space, and the 8-bit colour it becomes (docs/DESIGN.md "Gouraud"). Shared by the GPU
 // passes and the reference; see glsl_cpp.h for the dialect rules.
 #ifndef PHONGVK_GOURAUD_H
 #define PHONGVK_GOURAUD_H

@@ -1,4 +1,4 @@
-// phong.h — per-vertex transform and Phong illumination (DESIGN.md "Phong, per vertex").
+// phong.h — per-vertex transform and Phong illumination (docs/DESIGN.md "Phong, per vertex").
 // Shared by shade_vertices.comp and the C++ reference; see glsl_cpp.h for the dialect rules.
 #ifndef PHONGVK_PHONG_H
 #define PHONGVK_PHONG_H
@@ -20,7 +20,7 @@ FN vec3 toHomogeneous(vec3 local, vec3 viewOffset, FrameData frame) {
   return h;
 }
 
-// Vertex colours are not clamped to [0, 1] (DESIGN.md), but every factor and product is held
+// Vertex colours are not clamped to [0, 1] (docs/DESIGN.md), but every factor and product is held
 // below COLOR_MAX: a million times brighter than saturation (a channel shows 1 at most), and
 // small enough that a product of two held values and a sum over many lights stay finite and that
 // interpolating between a held vertex and a dark one keeps float precision (also in a graphics

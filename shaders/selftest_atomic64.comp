@@ -1,5 +1,5 @@
 // selftest_atomic64.comp — proves the device's 64-bit buffer atomicMin is exact before the renderer
-// trusts it with its depth|triangle keys (DESIGN.md "Visibility").
+// trusts it with its depth|triangle keys (docs/DESIGN.md "Visibility").
 //
 // Invocation i folds key(i) = (depth(i) << 32) | i into keys[i % SLOT_COUNT] with atomicMin.
 // depth(i) keeps only the top 8 bits of a hash, so many invocations share a depth and the winner

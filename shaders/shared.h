@@ -29,7 +29,7 @@ using uvec4 = glm::uvec4;
 #extension GL_EXT_shader_8bit_storage : require
 #endif
 
-// ---- Raster rules (DESIGN.md "Rasterization") ----
+// ---- Raster rules (docs/DESIGN.md "Rasterization") ----
 PHONGVK_CONST uint SUBPIXEL_BITS = 8;        // 1/256 pixel, as Vulkan/D3D hardware
 PHONGVK_CONST int SUBPIXEL_ONE = 256;
 PHONGVK_CONST int SUBPIXEL_HALF = 128;       // pixel centres sit at (x + 0.5, y + 0.5)

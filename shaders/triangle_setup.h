@@ -1,6 +1,6 @@
 // triangle_setup.h — one triangle from its shaded vertices to what the raster loops need: culled
 // (off screen, edge-on, back face), clipped and snapped, fanned into sub-triangles, and the key it
-// offers a pixel (DESIGN.md "Rasterization", "Visibility"). Coverage uses the triangle clipped
+// offers a pixel (docs/DESIGN.md "Rasterization", "Visibility"). Coverage uses the triangle clipped
 // against the near plane and the guard band, snapped to 1/256 pixel; depth and colour use the
 // original triangle's plane. Shared by the GPU passes and the reference; see glsl_cpp.h.
 #ifndef PHONGVK_TRIANGLE_SETUP_H

@@ -1,4 +1,4 @@
-// Camera (DESIGN.md "Camera"): image size from resolution, the basis, and where points land.
+// Camera (docs/DESIGN.md "Camera"): image size from resolution, the basis, and where points land.
 #include "scene/camera.h"
 #include "scene/scene_data.h"
 #include "shaders/phong.h"

@@ -1,4 +1,4 @@
-// Per-vertex Phong (shaders/phong.h) against values computed by hand from DESIGN.md's formula:
+// Per-vertex Phong (shaders/phong.h) against values computed by hand from docs/DESIGN.md's formula:
 // color = ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), S = 1/(a + b d + c d^2).
 #include "shaders/phong.h"
 

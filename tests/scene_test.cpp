@@ -12,7 +12,7 @@ namespace {
 using namespace test;
 using nlohmann::ordered_json;
 
-// The DESIGN.md example, with the mesh pointing at a file the test creates.
+// The docs/DESIGN.md example, with the mesh pointing at a file the test creates.
 const char* kFullScene = R"({
   "camera": {"position": [-3.5, -2.45, 2.1], "look_at": [0, 0, 0], "fov": 60, "aspect": 1.5, "resolution": 800},
   "background": [0, 0, 0],
