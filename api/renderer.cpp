@@ -94,13 +94,17 @@ Backend parseBackend(const std::string& name) {
 }
 
 DiffResult diff(const Scene& scene, const RendererOptions& gpuOptions) {
-  DiffResult result;
-  result.reference = Renderer(Backend::Cpu).renderWithKeys(scene);
   RendererOptions options = gpuOptions;
   options.backend = Backend::Gpu;
   Renderer gpu(options);
-  result.gpu = gpu.renderWithKeys(scene);
-  result.deviceName = gpu.deviceName();
+  return diff(scene, gpu);
+}
+
+DiffResult diff(const Scene& scene, Renderer& renderer) {
+  DiffResult result;
+  result.reference = Renderer(Backend::Cpu).renderWithKeys(scene);
+  result.gpu = renderer.renderWithKeys(scene);
+  result.deviceName = renderer.deviceName();
   result.stats = compareImages(result.reference.image, result.gpu.image, result.reference.keys, result.gpu.keys);
   return result;
 }

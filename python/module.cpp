@@ -334,6 +334,19 @@ triangle: (height, width) uint32 array, the winning triangle's index in the scen
     each object's triangles in order), NO_TRIANGLE where nothing covers the pixel.
 depth: (height, width) float32 array, the winning fragment's view depth, inf where nothing covers it.
 The gpu and cpu backends give the same buffers; the graphics backend has none (ValueError).)")
+      .def(
+          "diff",
+          [](Renderer& r, const Scene& scene) {
+            DiffResult result;
+            {
+              py::gil_scoped_release release;
+              result = diff(scene, r);
+            }
+            return diffDict(result);
+          },
+          py::arg("scene"),
+          "`scene` rendered by the reference and by this renderer, compared as phongvk.diff() does (a dict "
+          "with the numbers `phongvk diff` prints and its text as \"report\").")
       .def_property_readonly("backend", [](const Renderer& r) { return backendName(r.backend()); },
                              "The backend's name.")
       .def_property_readonly("device_name", &Renderer::deviceName,

@@ -158,8 +158,13 @@ struct DiffResult {
   std::string deviceName;
 };
 
-// What `phongvk diff` does. Throws as Renderer does.
+// What `phongvk diff` does: the reference against a compute-port renderer made with gpuOptions.
+// Throws as Renderer does.
 PHONGVK_API DiffResult diff(const Scene& scene, const RendererOptions& gpuOptions = {});
+
+// The same against `renderer` (any backend with keys: the gpu one, or the reference against itself),
+// which keeps what it uploads as for any frame.
+PHONGVK_API DiffResult diff(const Scene& scene, Renderer& renderer);
 
 // The middle value (the mean of the two middle ones for an even count); NaN for no values.
 PHONGVK_API double median(std::vector<double> values);

@@ -141,6 +141,10 @@ def test_diff_has_the_numbers_the_cli_prints():
     assert result["pixels"] == 1385 * 923 and result["differing"] == 0 and result["triangle_mismatch"] == 0
     assert result["max_abs"] == (0, 0, 0) and math.isinf(result["psnr"])
     assert "pixels differing:    0" in result["report"]
+    renderer = phongvk.Renderer("gpu")
+    again = renderer.diff(phongvk.load_scene(scene_path("scenes/two_lights.json")))
+    assert again["differing"] == 0 and again["report"] == result["report"]
+    assert renderer.stats["frames_rendered"] == 1
 
 
 def test_png_round_trip_and_jupyter(tmp_path):
