@@ -28,7 +28,7 @@ class CpuBackend : public Renderer::Impl {
 
  protected:
   void upload(const SceneData&) override {}
-  RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys) override {
+  RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys, Image) override {
     ++frames_;
     const auto start = Clock::now();
     RenderOutput out = renderReference(data, in);
@@ -88,9 +88,9 @@ class GpuBackend : public VulkanBackend {
     options.exactFloats = exactFloats_;
     renderer_.emplace(context_, data, options);
   }
-  RenderOutput draw(const SceneData&, const FrameInputs& in, bool withKeys) override {
+  RenderOutput draw(const SceneData&, const FrameInputs& in, bool withKeys, Image storage) override {
     const ContextLock lock(context_);
-    return renderer_->render(in, withKeys);
+    return renderer_->render(in, withKeys, std::move(storage));
   }
   uint64_t framesShaded() const override { return shadedByEarlier_ + (renderer_ ? renderer_->framesShaded() : 0); }
   uint64_t framesRepeated() const override {
@@ -123,7 +123,7 @@ class GraphicsBackend : public VulkanBackend {
     renderer_.reset();
     renderer_.emplace(context_, data);
   }
-  RenderOutput draw(const SceneData&, const FrameInputs& in, bool) override {
+  RenderOutput draw(const SceneData&, const FrameInputs& in, bool, Image) override {
     const ContextLock lock(context_);
     ++frames_;
     return renderer_->render(in);

@@ -27,9 +27,9 @@ void Renderer::Impl::prepare(const Scene& scene) {
   ++sceneBuilds_;
 }
 
-RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys) {
+RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image storage) {
   prepare(scene);
-  RenderOutput out = draw(*data_, makeFrame(*data_, makeView(scene.spec().camera)), withKeys);
+  RenderOutput out = draw(*data_, makeFrame(*data_, makeView(scene.spec().camera)), withKeys, std::move(storage));
   ++framesRendered_;
   return out;
 }
@@ -54,6 +54,8 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 Image Renderer::render(const Scene& scene) { return impl_->render(scene, false).image; }
 
+void Renderer::render(const Scene& scene, Image& image) { image = impl_->render(scene, false, std::move(image)).image; }
+
 RenderOutput Renderer::renderWithKeys(const Scene& scene) {
   if (impl_->backend() == Backend::Graphics) {
     throw std::invalid_argument("the graphics backend has no visibility keys; use the gpu or cpu backend");
@@ -63,8 +65,9 @@ RenderOutput Renderer::renderWithKeys(const Scene& scene) {
 
 std::vector<FrameTime> Renderer::timeFrames(const Scene& scene, int repeat) {
   std::vector<FrameTime> frames;
+  Image storage;  // reused, as a sequence reuses its frames' images
   const FrameTimes times = phongvk::timeFrames(repeat, [&] {
-    impl_->render(scene, false);
+    storage = impl_->render(scene, false, std::move(storage)).image;
     frames.push_back(impl_->lastFrameTime());
     return frames.back().deviceMs;
   });

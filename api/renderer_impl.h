@@ -17,8 +17,9 @@ class Renderer::Impl {
   virtual ~Impl() = default;
 
   // One frame of `scene`: builds and uploads its meshes unless the last scene had the same
-  // geometry (and as many materials and lights), then renders.
-  RenderOutput render(const Scene& scene, bool withKeys);
+  // geometry (and as many materials and lights), then renders. A backend may read the image into
+  // `storage`'s pixels.
+  RenderOutput render(const Scene& scene, bool withKeys, Image storage = {});
   // The last frame's device times (NaN where not measured); wallMs is left to the caller.
   virtual FrameTime lastFrameTime() const = 0;
   virtual Backend backend() const = 0;
@@ -28,7 +29,7 @@ class Renderer::Impl {
  protected:
   // New meshes (or new material or light counts): replace whatever was uploaded.
   virtual void upload(const SceneData& data) = 0;
-  virtual RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys) = 0;
+  virtual RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys, Image storage) = 0;
   // Frames whose lighting the backend computed, and frames it rendered again (gpu).
   virtual uint64_t framesShaded() const = 0;
   virtual uint64_t framesRepeated() const { return 0; }

@@ -2,6 +2,8 @@
 // on the public API (include/phongvk) only.
 #pragma once
 
+#include "phongvk/image.h"
+
 #include <string>
 
 namespace phongvk::cli {
@@ -21,6 +23,7 @@ struct ViewOptions {
   int height = 0;
   int device = -1;      // Vulkan device index, -1 = best
   bool validate = false;
+  int pngLevel = PNG_LEVEL_DEFAULT;  // deflate level of every PNG the command writes
 };
 
 struct RenderOptions : ViewOptions {

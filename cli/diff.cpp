@@ -15,7 +15,8 @@ int runDiff(const DiffOptions& options) {
                 formatDiff(result.stats).c_str());
     if (!options.heatmap.empty()) {
       writePng(options.heatmap,
-               diffHeatmap(result.reference.image, result.gpu.image, result.reference.keys, result.gpu.keys));
+               diffHeatmap(result.reference.image, result.gpu.image, result.reference.keys, result.gpu.keys),
+               options.pngLevel);
       std::printf("heatmap:             %s\n", options.heatmap.c_str());
     }
     const bool pass = result.stats.maxChannelDiff() <= options.tolerance;

@@ -22,6 +22,10 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
   command->add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--validate", options.validate, "Enable the Vulkan validation layers");
+  command->add_option("--png-level", options.pngLevel,
+                      "PNG deflate level: 0 (stored, largest) to 12 (smallest, slowest); the same pixels at every "
+                      "level (default " + std::to_string(phongvk::PNG_LEVEL_DEFAULT) + ", the fastest)")
+      ->check(CLI::Range(phongvk::PNG_LEVEL_MIN, phongvk::PNG_LEVEL_MAX));
 }
 
 // `render` also offers the graphics-pipeline baseline ("graphics", or by its older name

@@ -50,7 +50,7 @@ int runRender(const RenderOptions& options) {
     const RendererStats stats = renderer.stats();
     // Building the meshes counts as loading the scene, as the summary has always said.
     const double renderMs = msSince(renderStart) - stats.buildMs;
-    writePng(options.output, image);
+    writePng(options.output, image, options.pngLevel);
     std::printf("rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms -> %s\n",
                 options.scene.c_str(), image.width, image.height, scene.objectCount(), stats.triangles,
                 scene.lightCount(), describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,

@@ -5,11 +5,14 @@
 #include "cli/sequence.h"
 
 #include "cli/cli_support.h"
+#include "phongvk/frame_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <unistd.h>
 #include <vector>
 
@@ -40,7 +43,7 @@ std::vector<std::string> splitColons(const std::string& text) {
 
 // Progress on stderr: a bar redrawn in place on a terminal, one line per frame otherwise (logs,
 // batch jobs), so a log shows which frame a failure happened at. A frame's time runs from the
-// previous report (or the start) and so includes writing its PNG.
+// previous report (or the start): with frames written beside rendering, the pace frames reach disk.
 class Progress {
  public:
   explicit Progress(int total) : total_(total), terminal_(isatty(fileno(stderr))) {}
@@ -48,6 +51,7 @@ class Progress {
   void frameDone(int index, const std::string& file) {
     const double ms = msSince(last_);
     last_ = Clock::now();
+    if (done_ == 0) firstDone_ = last_;
     ++done_;
     totalMs_ += ms;
     if (terminal_) {
@@ -73,34 +77,60 @@ class Progress {
   int done_ = 0;
   double totalMs_ = 0;
   Clock::time_point last_ = Clock::now();
+  Clock::time_point firstDone_;
+
+ public:
+  // Frames written per second after the first (whose time holds the pipelines' compilation):
+  // the pace of a long sequence. NaN for fewer than two frames.
+  double steadyFramesPerSecond() const {
+    if (done_ < 2) return std::numeric_limits<double>::quiet_NaN();
+    return (done_ - 1) / std::chrono::duration<double>(last_ - firstDone_).count();
+  }
 };
 
-// What becomes of each rendered frame: its PNG, its thumbnail for the sheet, a progress report.
+// What becomes of each rendered frame: its PNG, written by the FrameWriter's threads while the
+// next frames render, its thumbnail for the sheet, a progress report.
 class FrameOutputs {
  public:
   FrameOutputs(const SequenceOptions& options, int frameCount, int selected)
-      : options_(options), frameCount_(frameCount), progress_(selected) {}
+      : options_(options),
+        frameCount_(frameCount),
+        progress_(selected),
+        writer_(FrameWriter::defaultThreads(), 2 * FrameWriter::defaultThreads(), options.pngLevel,
+                [this](const FrameFile& frame) { written(frame); }) {}
 
-  void add(int index, const Image& image) {
-    const std::string file = framePath(options_.outputDir, index, frameCount_);
-    writePng(file, image);
-    if (!options_.sheet.empty()) {
-      const ThumbnailSize size = thumbnailSize(image.width, image.height, options_.thumbnailWidth);
-      thumbnails_.push_back({index, downscale(image, size.width, size.height)});
-    }
-    progress_.frameDone(index, file);
+  Image spareImage() { return writer_.spareImage(); }
+
+  void add(int index, Image image) {
+    writer_.push({index, framePath(options_.outputDir, index, frameCount_), std::move(image)});
   }
 
-  void writeSheet() const {
+  const Progress& progress() const { return progress_; }
+
+  // Waits for every frame's file, then writes the sheet.
+  void finish() {
+    writer_.finish();
     if (options_.sheet.empty()) return;
-    writePng(options_.sheet, contactSheet(thumbnails_, sheetColumns(int(thumbnails_.size()))));
+    std::sort(thumbnails_.begin(), thumbnails_.end(),
+              [](const Thumbnail& a, const Thumbnail& b) { return a.frame < b.frame; });
+    writePng(options_.sheet, contactSheet(thumbnails_, sheetColumns(int(thumbnails_.size()))), options_.pngLevel);
   }
 
  private:
+  // On a writer thread, one frame at a time.
+  void written(const FrameFile& frame) {
+    if (!options_.sheet.empty()) {
+      const ThumbnailSize size = thumbnailSize(frame.image.width, frame.image.height, options_.thumbnailWidth);
+      thumbnails_.push_back({frame.index, downscale(frame.image, size.width, size.height)});
+    }
+    progress_.frameDone(frame.index, frame.path);
+  }
+
   const SequenceOptions& options_;
   int frameCount_;
   Progress progress_;
   std::vector<Thumbnail> thumbnails_;
+  FrameWriter writer_;  // last: its threads stop before the members they report to go
 };
 
 // Creates the frames folder and checks every output before the first frame is rendered.
@@ -117,11 +147,11 @@ void prepareOutputs(const SequenceOptions& options, int frameCount) {
 }
 
 void printSummary(const SequenceOptions& options, const FrameRange& range, const Scene& first,
-                  const std::string& backend, uint64_t builds, double totalMs) {
-  std::printf("sequence %s: frames %d:%d:%d (%d), %dx%d, %s, meshes built %d time%s: %.2f s, %.1f ms/frame"
-              " -> %s%s%s\n",
+                  const std::string& backend, uint64_t builds, double totalMs, double steadyFps) {
+  std::printf("sequence %s: frames %d:%d:%d (%d), %dx%d, %s, meshes built %d time%s: %.2f s, %.1f ms/frame, "
+              "%.1f frames/s after the first -> %s%s%s\n",
               options.scene.c_str(), range.start, range.end, range.step, range.count(), first.width(), first.height(),
-              backend.c_str(), int(builds), builds == 1 ? "" : "s", totalMs / 1000, totalMs / range.count(),
+              backend.c_str(), int(builds), builds == 1 ? "" : "s", totalMs / 1000, totalMs / range.count(), steadyFps,
               options.outputDir.c_str(), options.sheet.empty() ? "" : ", sheet ", options.sheet.c_str());
 }
 
@@ -190,11 +220,13 @@ int runSequence(const SequenceOptions& options) {
     Renderer renderer(rendererOptions(options, options.backend));
     FrameOutputs outputs(options, sequence.frameCount(), range.count());
     for (size_t k = 0; k < frames.size(); ++k) {
-      outputs.add(int(range.start + int64_t(k) * range.step), renderer.render(frames[k]));
+      Image image = outputs.spareImage();
+      renderer.render(frames[k], image);
+      outputs.add(int(range.start + int64_t(k) * range.step), std::move(image));
     }
-    outputs.writeSheet();
+    outputs.finish();
     printSummary(options, range, frames[0], backendSummary(renderer, range.count()), renderer.stats().sceneBuilds,
-                 msSince(start));
+                 msSince(start), outputs.progress().steadyFramesPerSecond());
     return int(EXIT_OK);
   });
 }

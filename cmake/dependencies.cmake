@@ -3,8 +3,9 @@
 find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(tinyobjloader REQUIRED)
-find_package(ZLIB REQUIRED)  # PNG deflate (image/png.cpp)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)  # PNG deflate and CRC (image/png_write.cpp)
 set(PHONGVK_SCENE_LIBRARIES glm::glm nlohmann_json::nlohmann_json tinyobjloader::tinyobjloader)
-set(PHONGVK_IMAGE_LIBRARIES ZLIB::ZLIB)
+set(PHONGVK_IMAGE_LIBRARIES PkgConfig::LIBDEFLATE)
 # stb (Debian's libstb-dev) installs its headers under /usr/include/stb.
 set(PHONGVK_STB_INCLUDE_DIR /usr/include/stb)

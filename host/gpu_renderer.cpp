@@ -69,7 +69,7 @@ void GpuRenderer::release() {
   pipelines_.clear();
 }
 
-RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
+RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image storage) {
   withKeys_ = withKeys;
   ensureImageBuffers(in.frame.width, in.frame.height);
   const VkDeviceSize pixels = VkDeviceSize(width_) * height_;
@@ -84,7 +84,7 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys) {
   }
 
   RenderOutput out;
-  out.image = readImage();
+  out.image = readImage(std::move(storage));
   if (withKeys) {
     out.keys.resize(pixels);
     readFromBuffer(context_, keyReadback_, out.keys.data(), pixels * sizeof(uint64_t));

@@ -66,8 +66,9 @@ class GpuRenderer {
   // Renders one frame. withKeys also reads back the per-pixel visibility keys (for diffs). A frame
   // whose large triangles found no room in their lists, or whose passes ran out of the device's
   // loop iterations (lavapipe), is rendered again with larger lists or more workgroups; throws
-  // std::runtime_error, naming the limit, when neither can grow further.
-  RenderOutput render(const FrameInputs& in, bool withKeys = false);
+  // std::runtime_error, naming the limit, when neither can grow further. The image is read into
+  // `storage`'s pixels (reused when large enough, so a loop of frames allocates none).
+  RenderOutput render(const FrameInputs& in, bool withKeys = false, Image storage = {});
 
   // Frames rendered again so far (render), for tests and the benchmark.
   uint64_t framesRepeated() const { return framesRepeated_; }
@@ -118,7 +119,7 @@ class GpuRenderer {
 
   // Recording a frame's passes (gpu_recording.cpp) and reading its image (gpu_readback.cpp).
   void recordFrame(VkCommandBuffer cmd);
-  Image readImage();
+  Image readImage(Image storage);
 
   const VulkanContext& context_;
   bool exactFloats_ = false;   // the passes' _exact builds

@@ -370,15 +370,27 @@ The gpu and cpu backends give the same buffers; the graphics backend has none (V
 by key: the numbers `phongvk diff` prints, as a dict (width, height, pixels, differing, max_abs,
 mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as "report".)");
 
-  m.def("write_png", [](const std::string& path, const py::array& image) { writePng(path, imageFromArray(image)); },
-        py::arg("path"), py::arg("image"),
-        "Writes a (height, width, 3) uint8 array as a PNG, atomically (no partial file). Raises OutputError.");
+  m.def("write_png", [](const std::string& path, const py::array& image, int level) {
+    const Image pixels = imageFromArray(image);
+    const py::gil_scoped_release release;
+    writePng(path, pixels, level);
+  }, py::arg("path"), py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
+        "Writes a (height, width, 3) uint8 array as a PNG, atomically (no partial file). level: deflate level, "
+        "0 (stored) to 12 (smallest); the same pixels at every level. Raises OutputError, or ValueError for a "
+        "level out of range.");
   m.def("read_png", [](const std::string& path) { return imageArray(readPng(path)); }, py::arg("path"),
         "Reads a PNG as a (height, width, 3) uint8 array.");
-  m.def("encode_png", [](const py::array& image) {
-    const std::vector<uint8_t> png = encodePng(imageFromArray(image));
+  m.def("encode_png", [](const py::array& image, int level) {
+    const Image pixels = imageFromArray(image);
+    std::vector<uint8_t> png;
+    {
+      const py::gil_scoped_release release;
+      png = encodePng(pixels, level);
+    }
     return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
-  }, py::arg("image"), "A (height, width, 3) uint8 array as PNG bytes.");
+  }, py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
+        "A (height, width, 3) uint8 array as PNG bytes, deflated at `level` (0 to 12).");
+  m.attr("PNG_LEVEL_DEFAULT") = PNG_LEVEL_DEFAULT;
   m.def("devices", [] {
     py::list list;
     for (const DeviceInfo& info : listDevices()) list.append(deviceDict(info));

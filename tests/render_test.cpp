@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <vector>
@@ -144,6 +145,24 @@ TEST(Cli, UnwritableOutputExitsTwoBeforeRendering) {
   EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
 }
 
+TEST(Cli, PngLevelChangesTheFileNotThePixels) {
+  const std::string dir = makeTempDir();
+  const std::string scene = test::sourcePath("scenes/paper/fig3_two_lights.json");
+  std::vector<uintmax_t> sizes;
+  for (const std::string level : {"0", "1", "6", "12"}) {
+    const std::string out = dir + "/level" + level + ".png";
+    const auto r = runCli("render " + scene + " -o " + out + " --backend cpu --width 240 --height 160 --png-level " + level);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(readPng(out).rgb, readPng(dir + "/level0.png").rgb) << "level " << level;
+    sizes.push_back(std::filesystem::file_size(out));
+  }
+  EXPECT_TRUE(std::is_sorted(sizes.rbegin(), sizes.rend())) << sizes[0] << " " << sizes[1] << " " << sizes[2];
+  const auto bad = runCli("render " + scene + " -o " + dir + "/bad.png --backend cpu --png-level 13");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("--png-level"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/bad.png"));
+}
+
 TEST(Cli, UnknownOptionExitsTwo) {
   const auto r = runCli("render scenes/basic.json -o x.png --fast");
   EXPECT_EQ(r.exitCode, 2);
@@ -158,7 +177,7 @@ TEST(Cli, UnknownCommandIsNamed) {
 }
 
 TEST(Cli, HelpOnEverySubcommandExitsZero) {
-  for (const char* command : {"--help", "render --help", "diff --help", "devices --help"}) {
+  for (const char* command : {"--help", "render --help", "diff --help", "sequence --help", "devices --help"}) {
     const auto r = runCli(command);
     EXPECT_EQ(r.exitCode, 0) << command << "\n" << r.output;
     EXPECT_NE(r.output.find("Usage"), std::string::npos) << command;

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,12 +43,41 @@ struct Visibility {
 // Throws std::invalid_argument when `out` has no keys (one per pixel).
 PHONGVK_API Visibility visibilityOf(const RenderOutput& out);
 
-// The image as PNG bytes (zlib deflate, every row filtered "Sub").
-PHONGVK_API std::vector<uint8_t> encodePng(const Image& image);
+// PNG deflate levels: 0 stores the pixels uncompressed; 1, the default, codes only runs (fastest
+// on rendered frames: their filtered bytes are mostly runs of zeros); 2 to 12 are libdeflate's
+// levels, from fast to the smallest files (6 is near zlib's default size). Every level decodes to
+// the same pixels.
+inline constexpr int PNG_LEVEL_MIN = 0;
+inline constexpr int PNG_LEVEL_RUNS = 1;
+inline constexpr int PNG_LEVEL_MAX = 12;
+inline constexpr int PNG_LEVEL_DEFAULT = PNG_LEVEL_RUNS;
 
-// Encodes the image as PNG and writes it atomically: a temporary file in the same folder, then a rename, so a failed or
-// interrupted write never leaves a partial file. Throws OutputError naming the path and the reason.
-PHONGVK_API void writePng(const std::string& path, const Image& image);
+// Encodes images as PNG (every row filtered "Sub", then deflated at `level`), keeping its buffers
+// from one image to the next: one per thread for a stream of frames. Not for use by two threads
+// at once. Throws std::invalid_argument for a level outside PNG_LEVEL_MIN..PNG_LEVEL_MAX.
+class PHONGVK_API PngEncoder {
+ public:
+  explicit PngEncoder(int level = PNG_LEVEL_DEFAULT);
+  ~PngEncoder();
+  PngEncoder(PngEncoder&&) noexcept;
+  PngEncoder& operator=(PngEncoder&&) noexcept;
+
+  // The PNG bytes, valid until the next call. Throws std::invalid_argument for an image whose
+  // size and pixel count disagree.
+  const std::vector<uint8_t>& encode(const Image& image);
+  // Encodes and writes the file atomically: a temporary file in the same folder, then a rename,
+  // so a failed or interrupted write never leaves a partial file. Throws OutputError naming the
+  // path and the reason.
+  void write(const std::string& path, const Image& image);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// One image's PNG bytes, or its PNG file written atomically (PngEncoder::write).
+PHONGVK_API std::vector<uint8_t> encodePng(const Image& image, int level = PNG_LEVEL_DEFAULT);
+PHONGVK_API void writePng(const std::string& path, const Image& image, int level = PNG_LEVEL_DEFAULT);
 
 // Throws OutputError, naming the reason, when a file at `path` could not be written (its folder is
 // missing, not a folder or not writable, or the path is a folder); call it before long work. An

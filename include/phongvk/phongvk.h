@@ -15,6 +15,7 @@
 #include "phongvk/devices.h"
 #include "phongvk/errors.h"
 #include "phongvk/export.h"
+#include "phongvk/frame_writer.h"
 #include "phongvk/image.h"
 #include "phongvk/mesh.h"
 
@@ -133,6 +134,9 @@ class PHONGVK_API Renderer {
   // One frame of `scene`. Throws SceneError for a scene whose meshes cannot be built, and
   // std::runtime_error naming the device limit a scene exceeds.
   Image render(const Scene& scene);
+  // The same into `image`, whose pixel storage the gpu backend reuses when it is large enough: a
+  // loop of frames through one Image allocates nothing per frame.
+  void render(const Scene& scene, Image& image);
   // The same with the per-pixel visibility keys (for diffs; the gpu backend's keys equal the
   // reference's). The graphics backend has no keys.
   RenderOutput renderWithKeys(const Scene& scene);

@@ -16,6 +16,7 @@ import numpy as _np
 from . import _phongvk
 from ._phongvk import (
     NO_TRIANGLE,
+    PNG_LEVEL_DEFAULT,
     NoDeviceError,
     OutputError,
     Scene,
@@ -35,7 +36,7 @@ for _name in ("NoDeviceError", "OutputError", "Scene", "SceneError"):
     getattr(_phongvk, _name).__module__ = __name__
 
 __all__ = [
-    "Image", "NO_TRIANGLE", "NoDeviceError", "OutputError", "Renderer", "Scene", "SceneError",
+    "Image", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT", "NoDeviceError", "OutputError", "Renderer", "Scene", "SceneError",
     "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
 ]
 

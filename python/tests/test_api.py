@@ -158,6 +158,23 @@ def test_png_round_trip_and_jupyter(tmp_path):
         phongvk.write_png(str(tmp_path / "b.png"), image.astype(np.float32))
 
 
+def test_png_levels_change_size_not_pixels(tmp_path):
+    from PIL import Image as PilImage  # zlib's inflate, a decoder of its own
+
+    image = phongvk.Renderer("cpu").render(phongvk.load_scene(scene_path("scenes/basic.json")), 160, 100)
+    sizes = []
+    for level in (0, 1, 2, 12):
+        path = tmp_path / f"level{level}.png"
+        phongvk.write_png(str(path), image, level=level)
+        assert np.array_equal(np.asarray(PilImage.open(path).convert("RGB")), image)
+        assert phongvk.encode_png(image, level=level) == path.read_bytes()
+        sizes.append(path.stat().st_size)
+    assert sizes == sorted(sizes, reverse=True)
+    assert phongvk.encode_png(image) == phongvk.encode_png(image, level=phongvk.PNG_LEVEL_DEFAULT)
+    with pytest.raises(ValueError, match=r"PNG level 13 is out of range: 0 \(no compression\) to 12"):
+        phongvk.write_png(str(tmp_path / "bad.png"), image, level=13)
+
+
 def test_devices_and_version():
     devices = phongvk.devices()
     assert any(d["usable"] for d in devices)

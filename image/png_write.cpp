@@ -1,0 +1,183 @@
+// png_write.cpp — PNG encoding (PngEncoder) and atomic PNG files. Every row is filtered "Sub" (each
+// byte minus the same channel of the pixel to its left), which turns a frame's flat background and
+// smooth shading into runs of zeros, then the whole image is deflated in one call: at level 1 by
+// the run-only coder (deflate_runs.h), at the others by libdeflate (docs/DECISIONS.md "PNG levels").
+#include "image/deflate_runs.h"
+#include "phongvk/errors.h"
+#include "phongvk/image.h"
+
+#include <libdeflate.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace phongvk {
+
+namespace {
+
+constexpr uint8_t PNG_SIGNATURE[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+constexpr uint8_t FILTER_SUB = 1;
+constexpr size_t MAX_CHUNK_BYTES = size_t(1) << 30;  // a chunk's length must stay below 2^31
+
+void appendU32(std::vector<uint8_t>& out, uint32_t value) {
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(value >> shift));
+}
+
+// One chunk: length, type, data, and the CRC of type and data.
+void appendChunk(std::vector<uint8_t>& out, const char (&type)[5], const uint8_t* data, size_t size) {
+  appendU32(out, uint32_t(size));
+  const size_t typeAt = out.size();
+  out.insert(out.end(), type, type + 4);
+  out.insert(out.end(), data, data + size);
+  appendU32(out, uint32_t(libdeflate_crc32(0, out.data() + typeAt, size + 4)));
+}
+
+// 8-bit RGB, no interlace.
+void appendHeader(std::vector<uint8_t>& out, const Image& image) {
+  std::vector<uint8_t> header;
+  appendU32(header, uint32_t(image.width));
+  appendU32(header, uint32_t(image.height));
+  header.insert(header.end(), {8, 2, 0, 0, 0});  // bit depth, colour type RGB, deflate, adaptive filters, no interlace
+  appendChunk(out, "IHDR", header.data(), header.size());
+}
+
+// Each row as the PNG stream stores it: its filter type, then every byte minus the byte 3 before
+// (0 for the row's first pixel).
+void filterRows(const Image& image, std::vector<uint8_t>& filtered) {
+  const size_t rowBytes = size_t(image.width) * 3;
+  filtered.resize((rowBytes + 1) * size_t(image.height));
+  for (size_t y = 0; y < size_t(image.height); ++y) {
+    const uint8_t* row = image.rgb.data() + y * rowBytes;
+    uint8_t* out = filtered.data() + y * (rowBytes + 1);
+    out[0] = FILTER_SUB;
+    for (size_t i = 0; i < rowBytes && i < 3; ++i) out[1 + i] = row[i];
+    for (size_t i = 3; i < rowBytes; ++i) out[1 + i] = uint8_t(row[i] - row[i - 3]);
+  }
+}
+
+void checkImage(const Image& image) {
+  if (image.width <= 0 || image.height <= 0 || image.rgb.size() != size_t(image.width) * image.height * 3) {
+    throw std::invalid_argument("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                " image holding " + std::to_string(image.rgb.size()) + " bytes as PNG");
+  }
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& why) {
+  throw OutputError("cannot write '" + path + "': " + why);
+}
+
+// Writes `bytes` to a temporary file beside `path`, then renames it into place.
+void writeAtomically(const std::string& path, const std::vector<uint8_t>& bytes) {
+  const std::filesystem::path target(path);
+  const std::filesystem::path temp =
+      target.parent_path() / (target.filename().string() + ".tmp-" + std::to_string(getpid()));
+  FILE* file = std::fopen(temp.c_str(), "wb");
+  if (!file) fail(path, std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+  const int writeErrno = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed) {
+    std::filesystem::remove(temp);
+    fail(path, std::strerror(written ? errno : writeErrno));
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, target, ec);
+  if (ec) {
+    std::filesystem::remove(temp);
+    fail(path, ec.message());
+  }
+}
+
+}  // namespace
+
+struct PngEncoder::State {
+  libdeflate_compressor* compressor = nullptr;  // levels other than PNG_LEVEL_RUNS
+  RunDeflater runs;
+  std::vector<uint8_t> filtered;
+  std::vector<uint8_t> deflated;
+  std::vector<uint8_t> png;
+};
+
+PngEncoder::PngEncoder(int level) : state_(std::make_unique<State>()) {
+  if (level < PNG_LEVEL_MIN || level > PNG_LEVEL_MAX) {
+    throw std::invalid_argument("PNG level " + std::to_string(level) + " is out of range: " +
+                                std::to_string(PNG_LEVEL_MIN) + " (no compression) to " +
+                                std::to_string(PNG_LEVEL_MAX) + " (smallest files)");
+  }
+  if (level == PNG_LEVEL_RUNS) return;
+  state_->compressor = libdeflate_alloc_compressor(level);
+  if (state_->compressor == nullptr) throw std::bad_alloc();
+}
+
+PngEncoder::~PngEncoder() {
+  if (state_) libdeflate_free_compressor(state_->compressor);  // accepts nullptr
+}
+
+PngEncoder::PngEncoder(PngEncoder&&) noexcept = default;
+PngEncoder& PngEncoder::operator=(PngEncoder&& other) noexcept {
+  if (this != &other) {
+    if (state_) libdeflate_free_compressor(state_->compressor);
+    state_ = std::move(other.state_);
+  }
+  return *this;
+}
+
+const std::vector<uint8_t>& PngEncoder::encode(const Image& image) {
+  checkImage(image);
+  State& s = *state_;
+  filterRows(image, s.filtered);
+  size_t deflatedBytes = 0;
+  if (s.compressor == nullptr) {
+    s.deflated.clear();
+    s.runs.deflate(s.filtered.data(), s.filtered.size(), size_t(image.width) * 3 + 1, s.deflated);
+    deflatedBytes = s.deflated.size();
+  } else {
+    s.deflated.resize(libdeflate_zlib_compress_bound(s.compressor, s.filtered.size()));
+    deflatedBytes = libdeflate_zlib_compress(s.compressor, s.filtered.data(), s.filtered.size(), s.deflated.data(),
+                                             s.deflated.size());
+    if (deflatedBytes == 0) throw std::runtime_error("PNG encoding failed: deflate output exceeded its bound");
+  }
+  s.png.assign(std::begin(PNG_SIGNATURE), std::end(PNG_SIGNATURE));
+  appendHeader(s.png, image);
+  for (size_t at = 0; at < deflatedBytes; at += MAX_CHUNK_BYTES) {
+    appendChunk(s.png, "IDAT", s.deflated.data() + at, std::min(MAX_CHUNK_BYTES, deflatedBytes - at));
+  }
+  appendChunk(s.png, "IEND", nullptr, 0);
+  return s.png;
+}
+
+void PngEncoder::write(const std::string& path, const Image& image) {
+  const std::vector<uint8_t>* png = nullptr;
+  try {
+    png = &encode(image);
+  } catch (const std::exception& e) {
+    fail(path, e.what());
+  }
+  writeAtomically(path, *png);
+}
+
+std::vector<uint8_t> encodePng(const Image& image, int level) { return PngEncoder(level).encode(image); }
+
+void writePng(const std::string& path, const Image& image, int level) { PngEncoder(level).write(path, image); }
+
+void checkWritable(const std::string& path) {
+  if (path.empty()) return;
+  std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  if (std::filesystem::exists(folder) && !std::filesystem::is_directory(folder)) {
+    throw OutputError("cannot write '" + path + "': '" + folder.string() + "' is a file, not a folder");
+  }
+  if (!std::filesystem::is_directory(folder)) {
+    throw OutputError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
+  }
+  if (access(folder.c_str(), W_OK) != 0) {
+    throw OutputError("cannot write '" + path + "': folder '" + folder.string() + "' is not writable");
+  }
+  if (std::filesystem::is_directory(path)) throw OutputError("cannot write '" + path + "': it is a folder");
+}
+
+}  // namespace phongvk
