@@ -49,13 +49,19 @@ class CpuBackend : public Renderer::Impl {
 // this one destroys the context.
 class VulkanBackend : public Renderer::Impl {
  public:
-  explicit VulkanBackend(const RendererOptions& options) : context_(createContext({options.device, options.validate})) {}
+  explicit VulkanBackend(const RendererOptions& options) {
+    const auto start = Clock::now();
+    context_ = createContext({options.device, options.validate, true});
+    contextMs_ = msSince(start);
+  }
   ~VulkanBackend() override { destroyContext(context_); }
   std::string deviceName() const override { return context_.info.name; }
 
  protected:
   uint64_t validationMessages() const override { return context_.validation ? context_.validation->count() : 0; }
+  void addStartup(RendererStats& s) const override { s.contextMs = contextMs_; }
   VulkanContext context_;
+  double contextMs_ = 0;
 };
 
 class GpuBackend : public VulkanBackend {
@@ -63,7 +69,9 @@ class GpuBackend : public VulkanBackend {
   // The device's division and square root decide which builds of the passes it runs.
   explicit GpuBackend(const RendererOptions& options) : VulkanBackend(options) {
     const ContextLock lock(context_);
-    exactFloats_ = probeFloatOps(context_).useExact();
+    const auto start = Clock::now();
+    exactFloats_ = useExactFloats(context_, &probeCached_);
+    probeMs_ = probeCached_ ? 0.0 : msSince(start);
   }
   ~GpuBackend() override {
     const ContextLock lock(context_);
@@ -82,6 +90,7 @@ class GpuBackend : public VulkanBackend {
     if (renderer_) {
       shadedByEarlier_ += renderer_->framesShaded();
       repeatedByEarlier_ += renderer_->framesRepeated();
+      compileMsByEarlier_ += renderer_->compileMs();
     }
     renderer_.reset();  // the old buffers go before the new ones are allocated
     GpuRendererOptions options;
@@ -96,12 +105,21 @@ class GpuBackend : public VulkanBackend {
   uint64_t framesRepeated() const override {
     return repeatedByEarlier_ + (renderer_ ? renderer_->framesRepeated() : 0);
   }
+  void addStartup(RendererStats& s) const override {
+    VulkanBackend::addStartup(s);
+    s.probeMs = probeMs_;
+    s.probeCached = probeCached_;
+    s.pipelinesMs = compileMsByEarlier_ + (renderer_ ? renderer_->compileMs() : 0);
+  }
 
  private:
   bool exactFloats_ = false;
   std::optional<GpuRenderer> renderer_;
   uint64_t shadedByEarlier_ = 0;  // by renderers replaced after a geometry change
   uint64_t repeatedByEarlier_ = 0;
+  double compileMsByEarlier_ = 0;
+  double probeMs_ = 0;
+  bool probeCached_ = false;
 };
 
 class GraphicsBackend : public VulkanBackend {

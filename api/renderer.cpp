@@ -43,6 +43,7 @@ RendererStats Renderer::Impl::stats() const {
   s.triangles = data_ ? data_->triangles.size() : 0;
   s.buildMs = buildMs_;
   s.validationMessages = validationMessages();
+  addStartup(s);
   return s;
 }
 

@@ -34,6 +34,8 @@ class Renderer::Impl {
   virtual uint64_t framesShaded() const = 0;
   virtual uint64_t framesRepeated() const { return 0; }
   virtual uint64_t validationMessages() const { return 0; }
+  // Start-up (RendererStats::contextMs and the rest); the reference has none.
+  virtual void addStartup(RendererStats&) const {}
 
  private:
   // Makes data_ hold `scene`'s meshes and shading, building and uploading them unless the last

@@ -4,6 +4,7 @@
 
 #include "host/device.h"
 #include "host/instance.h"
+#include "host/pipeline_cache.h"
 #include "host/vk_check.h"
 
 #include <string>
@@ -39,6 +40,7 @@ VulkanContext createContext(const ContextOptions& options) {
     describeDevice(context, reports[chosen]);
     createDevice(context);
     createCommandPool(context);
+    if (options.pipelineCache) context.pipelineCache = loadPipelineCache(context);
   } catch (...) {
     destroyContext(context);  // also reloads the tables of a context that was live before
     throw;
@@ -60,6 +62,7 @@ void destroyContext(VulkanContext& context) {
     (void)vkDeviceWaitIdle(context.device);
     if (context.fence) vkDestroyFence(context.device, context.fence, nullptr);
     if (context.commandPool) vkDestroyCommandPool(context.device, context.commandPool, nullptr);
+    if (context.pipelineCache) vkDestroyPipelineCache(context.device, context.pipelineCache, nullptr);
     vkDestroyDevice(context.device, nullptr);
     forgetContext(context.device);
   }

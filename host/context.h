@@ -32,6 +32,7 @@ namespace phongvk {
 struct ContextOptions {
   int deviceIndex = -1;   // -1: the best suitable device (discrete > integrated > virtual > CPU)
   bool validate = false;  // Khronos validation + synchronization validation; also env PHONGVK_VALIDATE=1
+  bool pipelineCache = false;  // a VkPipelineCache kept across processes (pipeline_cache.h)
 };
 
 // Warnings and errors from the validation layers, collected so tests can assert there were none.
@@ -63,6 +64,7 @@ struct VulkanContext {
   uint32_t queueFamily = 0;
   VkCommandPool commandPool = VK_NULL_HANDLE;  // for one-time command buffers; not thread-safe
   VkFence fence = VK_NULL_HANDLE;              // submitAndWait's, reset before each use; likewise
+  VkPipelineCache pipelineCache = VK_NULL_HANDLE;  // ContextOptions::pipelineCache; every pipeline goes through it
   VkPhysicalDeviceProperties properties = {};
   VkPhysicalDeviceMemoryProperties memoryProperties = {};
   bool timestamps = false;          // the queue can write timestamps (see TimestampPool)

@@ -1,6 +1,7 @@
 // float_probe.cpp — probe_float.comp's inputs, its run and the comparison with the host.
 #include "host/float_probe.h"
 
+#include "host/disk_cache.h"
 #include "host/submit.h"
 #include "host/pipelines.h"
 #include "host/resources.h"
@@ -8,8 +9,11 @@
 #include "shaders/gpu_layout.h"
 
 #include <bit>
+#include <cstdio>
 #include <cmath>
+#include <optional>
 #include <random>
+#include <string>
 
 namespace phongvk {
 
@@ -141,6 +145,40 @@ FloatReport probeFloatOps(const VulkanContext& context) {
   submitAndWait(context, cmd);
   readFromBuffer(context, run.results, results.data(), results.size() * sizeof(uint32_t));
   return compareFloatProbe(inputs, results);
+}
+
+namespace {
+
+const std::string USE_EXACT = "use exact: yes\n";
+const std::string USE_NATIVE = "use exact: no\n";
+
+// The probe's file for this device: named after the device, the driver and the probe itself, so
+// a changed probe asks the device again.
+std::string probeFileName(const VulkanContext& context) {
+  const std::vector<FloatProbeInput> inputs = floatProbeInputs();
+  uint64_t probe = fnv1a(spirv_probe_float, sizeof(spirv_probe_float));
+  probe = fnv1a(inputs.data(), inputs.size() * sizeof(FloatProbeInput), probe);
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(probe));
+  return "float-probe-" + deviceCacheKey(context) + "-" + hash + ".txt";
+}
+
+}  // namespace
+
+bool useExactFloats(const VulkanContext& context, bool* cached) {
+  const std::string name = probeFileName(context);
+  if (const std::optional<std::vector<uint8_t>> saved = readCacheFile(name)) {
+    const std::string text(saved->begin(), saved->end());
+    if (text == USE_EXACT || text == USE_NATIVE) {
+      if (cached) *cached = true;
+      return text == USE_EXACT;
+    }
+  }
+  const bool exact = probeFloatOps(context).useExact();
+  const std::string& text = exact ? USE_EXACT : USE_NATIVE;
+  writeCacheFile(name, std::vector<uint8_t>(text.begin(), text.end()));
+  if (cached) *cached = false;
+  return exact;
 }
 
 }  // namespace phongvk

@@ -50,4 +50,9 @@ FloatReport compareFloatProbe(const std::vector<FloatProbeInput>& inputs, const 
 // Runs probe_float.comp on the context's device and compares.
 FloatReport probeFloatOps(const VulkanContext& context);
 
+// FloatReport::useExact for the context's device: from the disk cache (host/disk_cache.h) when
+// the same probe (its shader and inputs) ran on this device and driver before, else probed now
+// and the answer saved. `cached` (if given) says which.
+bool useExactFloats(const VulkanContext& context, bool* cached = nullptr);
+
 }  // namespace phongvk

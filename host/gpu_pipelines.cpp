@@ -19,6 +19,9 @@
 #include "shaders/shade_vertices.spv.h"
 #include "shaders/shade_vertices_exact.spv.h"
 
+#include "host/pipeline_cache.h"
+
+#include <chrono>
 #include <exception>
 #include <future>
 
@@ -72,7 +75,9 @@ std::vector<uint32_t> pipelineKey(uint32_t pass, const std::vector<SpecConstant>
 // CPU device compiles each on the calling thread: ~30-40 ms apiece for the raster, clip and
 // large-resolve passes on lavapipe), and keeps them: a sequence that toggles a feature (a ks
 // sweep through 0) compiles each variant once. Every thread is joined before any error is rethrown.
+// New pipelines go into the pipeline cache on disk (pipeline_cache.h).
 void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests) {
+  const auto start = std::chrono::steady_clock::now();
   std::vector<std::pair<std::vector<uint32_t>, std::future<ComputePipeline>>> pending;
   for (const PipelineRequest& r : requests) {
     std::vector<uint32_t> key = pipelineKey(r.pass, r.specs);
@@ -91,6 +96,9 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
     }
   }
   if (failure) std::rethrow_exception(failure);
+  if (pending.empty()) return;
+  savePipelineCache(context_);
+  compileMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // The pipeline compilePipelines made for `request`.

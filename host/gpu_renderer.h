@@ -72,6 +72,8 @@ class GpuRenderer {
 
   // Frames rendered again so far (render), for tests and the benchmark.
   uint64_t framesRepeated() const { return framesRepeated_; }
+  // Time spent compiling pipelines so far, construction included.
+  double compileMs() const { return compileMs_; }
 
   const PassTimes& lastPassTimes() const { return times_; }
 
@@ -129,6 +131,7 @@ class GpuRenderer {
   bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
   uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
   uint64_t framesRepeated_ = 0;
+  double compileMs_ = 0;
   std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
   ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
   DescriptorArena arena_;

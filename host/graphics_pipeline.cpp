@@ -237,7 +237,7 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
   pipelineInfo.layout = info.layout;
   pipelineInfo.renderPass = info.renderPass;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateGraphicsPipelines(context.device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline));
+  VK_CHECK(vkCreateGraphicsPipelines(context.device, context.pipelineCache, 1, &pipelineInfo, nullptr, &pipeline));
   return pipeline;
 }
 

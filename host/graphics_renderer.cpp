@@ -1,5 +1,6 @@
 // graphics_renderer.cpp — the graphics-pipeline baseline: one indexed draw per run of objects that
 // share a cull mode, into an RGBA8 colour and a reversed-Z float depth attachment, copied out.
+#include "host/pipeline_cache.h"
 #include "host/graphics_renderer.h"
 
 #include "image/packed_pixels.h"
@@ -270,6 +271,7 @@ VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, bool cul
   info.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   info.depthCompare = DEPTH_COMPARE;
   pipeline = createGraphicsPipeline(context, info);
+  savePipelineCache(context);
   return pipeline;
 }
 

@@ -33,7 +33,7 @@ VkPipeline createPipeline(const VulkanContext& context, VkShaderModule module, V
   info.stage.pSpecializationInfo = specialization.info();
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateComputePipelines(context.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+  VK_CHECK(vkCreateComputePipelines(context.device, context.pipelineCache, 1, &info, nullptr, &pipeline));
   return pipeline;
 }
 

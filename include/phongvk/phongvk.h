@@ -117,6 +117,13 @@ struct RendererStats {
   size_t triangles = 0;          // of the last scene rendered
   double buildMs = 0;            // time spent building meshes, in all (uploads not included)
   uint64_t validationMessages = 0;  // Vulkan validation warnings and errors (RendererOptions::validate)
+  // Start-up of the Vulkan backends (0 for the reference): the instance and device, the float
+  // probe (0 when its answer came from the disk cache), and compiling pipelines so far (first
+  // frames and new variants; the pipeline cache on disk serves drivers that keep one).
+  double contextMs = 0;
+  double probeMs = 0;
+  bool probeCached = false;
+  double pipelinesMs = 0;
 };
 
 // Renders scenes on one backend. It keeps what it built and uploaded: rendering a scene with the
