@@ -1,4 +1,5 @@
-// bench.h — the benchmark run: the suite, mesh setup, the error sweep, then the report and plot.
+// bench.h — the benchmark run: the suite, mesh setup, the error sweep, whole commands end to end,
+// then the report and plot.
 #pragma once
 
 #include <string>
@@ -14,6 +15,7 @@ struct BenchOptions {
   std::string revision;                      // shown in the report when given
   std::string only;                          // non-empty: only the suite and setup scenes whose name has it
   int device = -1;                           // Vulkan device index, -1 = best
+  std::string cli;                           // the phongvk command the end-to-end section runs
 };
 
 // Runs everything and writes the report and the plot. Throws on failure (a bad output path, no

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"phongvk_bench: reference vs Vulkan compute vs graphics pipeline, and run time against error"};
   phongvk::bench::BenchOptions options;
   options.sourceDir = PHONGVK_SOURCE_DIR;
+  options.cli = PHONGVK_CLI;
   app.add_flag("--quick", options.quick, "A few small scenes, one timed frame (the smoke test)");
   auto* repeat = app.add_option("--repeat", options.repeat, "Timed frames per measurement, after a warm-up (default 5)")
                      ->check(CLI::Range(1, 1000));
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   app.add_option("--source", options.sourceDir, "Repository root, where scenes/ is (default: this build's)");
   app.add_option("--revision", options.revision, "Source revision to show in the report");
   app.add_option("--only", options.only, "Only the suite and mesh setup scenes whose name contains this (a partial run)");
+  app.add_option("--cli", options.cli, "The phongvk command timed end to end (default: this build's)");
   app.add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")->check(CLI::NonNegativeNumber);
   try {
     app.parse(argc, argv);

@@ -66,6 +66,36 @@ std::string machine(const Report& r) {
   return s + "\n";
 }
 
+// "**yes**, all 2" or "**no**: 1 of 2", for a target judged on `judged` runs.
+std::string tallyText(int met, int judged) {
+  return met == judged ? "**yes**, all " + std::to_string(judged) : "**no**: " + std::to_string(met) + " of " + std::to_string(judged);
+}
+
+std::string endToEndTargets(const EndToEnd& e) {
+  int met = 0, judged = 0;
+  std::string misses;
+  for (const SequenceRun& x : e.sequences) {
+    ++judged;
+    const bool ok = x.failure.empty() && x.rate() >= SEQUENCE_RATE_TARGET;
+    met += ok;
+    if (!ok) misses += (misses.empty() ? "" : ", ") + x.name + " (" + (x.failure.empty() ? ratio(x.rate()) : x.failure) + ")";
+  }
+  std::string s = row({"`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
+                           "x the frame rate of `render --repeat` (paper orbits, PNGs on disk)",
+                       tallyText(met, judged), misses.empty() ? "–" : misses});
+  met = judged = 0;
+  misses.clear();
+  for (const StartupRun& x : e.startups) {
+    ++judged;
+    const bool ok = x.failure.empty() && x.ratio() <= STARTUP_RATIO_TARGET;
+    met += ok;
+    if (!ok) misses += (misses.empty() ? "" : ", ") + x.name + " (" + (x.failure.empty() ? ratio(x.ratio()) : x.failure) + ")";
+  }
+  return s + row({"one-frame `render` process on the compute port <= " + number(STARTUP_RATIO_TARGET, 1) +
+                      "x `--backend cpu`'s (paper scenes)",
+                  tallyText(met, judged), misses.empty() ? "–" : misses});
+}
+
 // Per target: on how many scenes it was met, and the scenes that miss it with their shortfall.
 std::string targetTable(const Report& r) {
   struct Tally {
@@ -90,9 +120,45 @@ std::string targetTable(const Report& r) {
   const SetupVerdict setup = judgeSetup(r.setups);
   s += row({"mesh setup linear; a 5M-triangle scene well under a second (<= 0.5 s)",
             setup.met ? "**yes**" : "**no**", setup.result});
+  s += endToEndTargets(r.endToEnd);
   s += "\nSpeed ratios are wall clock (the render call, as a user of either backend waits for it); ";
   s += "each scene's misses and what its time or memory went to are listed under the suite.\n\n";
   return s;
+}
+
+std::string endToEndSection(const Report& r) {
+  const EndToEnd& e = r.endToEnd;
+  std::string s = "## End to end\n\nWhole `phongvk` commands, as processes, each measurement the median of ";
+  s += std::to_string(r.quick ? 1 : END_TO_END_ROUNDS) + " interleaved rounds.\n\n";
+  s += "### Sequences\n\n`phongvk sequence` writing every frame as a PNG (default level) against `phongvk render "
+       "--repeat` of the scene as many times: its frames per second are 1000 / its mean frame ms (its median "
+       "is what `render` prints first). The sequence's rate is the frames written per second after the first, "
+       "as its summary prints it; the process time includes start-up.\n\n";
+  s += header({"scene", "frames", "render --repeat ms (median / mean)", "render frames/s", "sequence frames/s",
+               "sequence / render", "sequence process s"});
+  for (const SequenceRun& x : e.sequences) {
+    if (!x.failure.empty()) {
+      s += row({x.name, "–", x.failure, "–", "–", "–", "–"});
+      continue;
+    }
+    s += row({x.name, std::to_string(x.frames), number(x.renderMedianMs, 2) + " / " + number(x.renderMeanMs, 2),
+              number(1000.0 / x.renderMeanMs, 1), number(x.sequenceFps, 1), ratio(x.rate()),
+              number(x.sequenceSeconds, 2)});
+  }
+  s += "\n### Start-up\n\nA one-frame `phongvk render SCENE -o out.png` process on the compute port and with "
+       "`--backend cpu`, wall clock, with the caches as earlier runs left them (Mesa's shader cache and "
+       "phongvk's pipeline cache and float probe under `$XDG_CACHE_HOME`); where the compute port's start-up "
+       "went, as `render` reports it. The last row is the first render on a new machine: every cache empty.\n\n";
+  s += header({"scene", "compute s", "reference s", "compute / reference", "Vulkan instance + device ms",
+               "pipelines ms", "float probe ms"});
+  auto startupRow = [&](const StartupRun& x, const std::string& name) {
+    if (!x.failure.empty()) return row({name, x.failure, "–", "–", "–", "–", "–"});
+    return row({name, number(x.gpuSeconds, 3), number(x.cpuSeconds, 3), ratio(x.ratio()), number(x.vulkanMs, 1),
+                number(x.pipelinesMs, 1), x.probeMs == 0 ? "cached" : number(x.probeMs, 1)});
+  };
+  for (const StartupRun& x : e.startups) s += startupRow(x, x.name);
+  s += startupRow(e.first, e.first.name + ", new machine");
+  return s + "\n";
 }
 
 std::string speedTable(const Report& r) {
@@ -222,7 +288,7 @@ std::string method(const Report& r) {
 
 std::string formatReport(const Report& report) {
   return preamble(report) + machine(report) + targetTable(report) + suite(report) + setupSection(report) +
-         sweepSection(report) + method(report);
+         sweepSection(report) + endToEndSection(report) + method(report);
 }
 
 }  // namespace phongvk::bench

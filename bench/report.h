@@ -2,6 +2,7 @@
 // by how much not, and why), the suite, mesh setup, and the run time against error sweep.
 #pragma once
 
+#include "end_to_end.h"
 #include "error_sweep.h"
 #include "machine.h"
 #include "scene_bench.h"
@@ -21,6 +22,7 @@ struct Report {
   std::vector<SceneResult> scenes;
   std::vector<SetupResult> setups;
   SweepResult sweep;
+  EndToEnd endToEnd;
   std::string plotLink;  // the plot, relative to the report; empty when there is none
   std::string plotNote;  // why there is no plot
 };

@@ -18,8 +18,11 @@ void printRepeatTiming(const std::vector<FrameTime>& frames, Backend backend) {
     raster.push_back(f.rasterMs);
     resolve.push_back(f.resolveMs);
   }
-  std::printf("frame ms: median %.3f (device %.3f, min %.3f, max %.3f)\n", median(wall), median(device),
-              *std::min_element(wall.begin(), wall.end()), *std::max_element(wall.begin(), wall.end()));
+  double sum = 0;
+  for (double ms : wall) sum += ms;
+  std::printf("frame ms: median %.3f (device %.3f, min %.3f, max %.3f, mean %.3f)\n", median(wall), median(device),
+              *std::min_element(wall.begin(), wall.end()), *std::max_element(wall.begin(), wall.end()),
+              sum / double(wall.size()));
   if (backend != Backend::Gpu) return;
   std::printf("device ms by pass: shade %.3f, raster %.3f, resolve %.3f (medians)\n", median(shade), median(raster),
               median(resolve));

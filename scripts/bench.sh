@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 
 echo "== build (Release)"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build build --target phongvk_bench -j"$(nproc)"
+cmake --build build --target phongvk_bench phongvk -j"$(nproc)"
 
 echo "== benchmark"
 revision=$(git describe --always --dirty 2>/dev/null || echo unknown)

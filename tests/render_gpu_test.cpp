@@ -124,13 +124,14 @@ TEST(GpuRender, RepeatPrintsFrameAndPassTimes) {
                               "/x.png --repeat 3");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   // sscanf, not std::regex: GCC 12's regex warns (maybe-uninitialized) in the sanitizer build.
-  double wall = -1, device = -1, low = -1, high = -1, shade = -1, raster = -1, resolve = -1;
+  double wall = -1, device = -1, low = -1, high = -1, mean = -1, shade = -1, raster = -1, resolve = -1;
   const size_t frame = r.output.find("frame ms: ");
   ASSERT_NE(frame, std::string::npos) << r.output;
-  EXPECT_EQ(std::sscanf(r.output.c_str() + frame, "frame ms: median %lf (device %lf, min %lf, max %lf)", &wall,
-                        &device, &low, &high),
-            4)
+  EXPECT_EQ(std::sscanf(r.output.c_str() + frame, "frame ms: median %lf (device %lf, min %lf, max %lf, mean %lf)", &wall,
+                        &device, &low, &high, &mean),
+            5)
       << r.output;
+  EXPECT_TRUE(low <= mean && mean <= high) << r.output;
   const size_t passes = r.output.find("device ms by pass: ");
   ASSERT_NE(passes, std::string::npos) << r.output;
   ASSERT_EQ(std::sscanf(r.output.c_str() + passes, "device ms by pass: shade %lf, raster %lf, resolve %lf (medians)",

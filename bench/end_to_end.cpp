@@ -1,0 +1,199 @@
+// end_to_end.cpp — the CLI's commands run and timed as processes (end_to_end.h).
+#include "end_to_end.h"
+
+#include "phongvk/phongvk.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+
+namespace phongvk::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double NOT_A_NUMBER = std::numeric_limits<double>::quiet_NaN();
+
+struct Process {
+  int status = -1;
+  std::string out;  // stdout
+  double seconds = 0;
+};
+
+// Runs a shell command line, its stderr discarded, and times it.
+Process run(const std::string& command) {
+  Process p;
+  const auto start = std::chrono::steady_clock::now();
+  FILE* pipe = popen((command + " 2>/dev/null").c_str(), "r");
+  if (pipe == nullptr) throw std::runtime_error("cannot run: " + command);
+  char buffer[4096];
+  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) p.out.append(buffer, n);
+  p.status = pclose(pipe);
+  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return p;
+}
+
+std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
+// The number after `label` in `text`; NaN when it is not there.
+double after(const std::string& text, const std::string& label) {
+  const size_t at = text.find(label);
+  double value = NOT_A_NUMBER;
+  if (at == std::string::npos || std::sscanf(text.c_str() + at + label.size(), "%lf", &value) != 1) return NOT_A_NUMBER;
+  return value;
+}
+
+// The number before `label` (" frames/s after the first").
+double before(const std::string& text, const std::string& label) {
+  const size_t at = text.find(label);
+  if (at == std::string::npos) return NOT_A_NUMBER;
+  const size_t start = text.find_last_of(' ', at - 1);
+  return std::strtod(text.c_str() + (start == std::string::npos ? 0 : start + 1), nullptr);
+}
+
+struct Scratch {
+  fs::path dir;
+  Scratch() {
+    std::string pattern = (fs::temp_directory_path() / "phongvk-bench-XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder");
+    dir = pattern;
+  }
+  ~Scratch() {
+    std::error_code ignored;
+    fs::remove_all(dir, ignored);
+  }
+};
+
+struct Setup {
+  std::string cli, paper, size;  // size: " --width W --height H" in quick runs
+  int rounds = END_TO_END_ROUNDS;
+  int frames = 0;                // 0: every frame
+  Scratch scratch;
+};
+
+SequenceRun measureSequence(const Setup& s, const std::string& name) {
+  SequenceRun result;
+  result.name = name;
+  const std::string scene = quoted(s.paper + "/" + name + ".json");
+  const std::string frames = s.frames > 0 ? " --frames 0:" + std::to_string(s.frames) : "";
+  std::vector<double> mean, median, fps, seconds;
+  for (int round = 0; round < s.rounds; ++round) {
+    const fs::path out = s.scratch.dir / "frames";
+    fs::remove_all(out);
+    const Process sequence = run(s.cli + " sequence " + scene + " -o " + quoted(out.string()) + frames + s.size);
+    if (sequence.status != 0) {
+      result.failure = "phongvk sequence exited with status " + std::to_string(sequence.status);
+      return result;
+    }
+    result.frames = int(std::distance(fs::directory_iterator(out), {}));
+    const int repeat = result.frames > 0 ? result.frames : 1;
+    const Process render = run(s.cli + " render " + scene + " -o " + quoted((s.scratch.dir / "still.png").string()) +
+                               " --repeat " + std::to_string(repeat) + s.size);
+    if (render.status != 0) {
+      result.failure = "phongvk render exited with status " + std::to_string(render.status);
+      return result;
+    }
+    fps.push_back(before(sequence.out, " frames/s after the first"));
+    seconds.push_back(sequence.seconds);
+    median.push_back(after(render.out, "frame ms: median "));
+    mean.push_back(after(render.out, ", mean "));
+  }
+  result.sequenceFps = phongvk::median(fps);
+  result.sequenceSeconds = phongvk::median(seconds);
+  result.renderMedianMs = phongvk::median(median);
+  result.renderMeanMs = phongvk::median(mean);
+  return result;
+}
+
+// One `render` process of `scene` on `backend`, with `environment` assignments before it.
+Process renderOnce(const Setup& s, const std::string& scene, const std::string& backend,
+                   const std::string& environment = "") {
+  return run(environment + s.cli + " render " + quoted(scene) + " -o " + quoted((s.scratch.dir / "still.png").string()) +
+             " --backend " + backend + s.size);
+}
+
+void readStartup(const Process& gpu, std::vector<double>& vulkan, std::vector<double>& pipelines,
+                 std::vector<double>& probe) {
+  vulkan.push_back(after(gpu.out, "(start-up: Vulkan "));
+  pipelines.push_back(after(gpu.out, ", pipelines "));
+  probe.push_back(gpu.out.find("float probe cached") != std::string::npos ? 0.0 : after(gpu.out, ", float probe "));
+}
+
+StartupRun measureStartup(const Setup& s, const std::string& name, int rounds, bool fresh) {
+  StartupRun result;
+  result.name = name;
+  const std::string scene = s.paper + "/" + name + ".json";
+  std::vector<double> gpuSeconds, cpuSeconds, vulkan, pipelines, probe;
+  for (int round = 0; round < rounds; ++round) {
+    std::string environment;
+    if (fresh) {  // a new machine: Mesa's and phongvk's caches (and NVIDIA's) in an empty folder
+      const std::string empty = (s.scratch.dir / ("fresh-" + std::to_string(round))).string();
+      environment = "XDG_CACHE_HOME=" + quoted(empty) + " __GL_SHADER_DISK_CACHE_PATH=" + quoted(empty) + " ";
+      fs::create_directories(empty);
+    }
+    const Process gpu = renderOnce(s, scene, "gpu", environment);
+    const Process cpu = renderOnce(s, scene, "cpu");
+    if (gpu.status != 0 || cpu.status != 0) {
+      result.failure = "exit status " + std::to_string(gpu.status) + " / " + std::to_string(cpu.status);
+      return result;
+    }
+    gpuSeconds.push_back(gpu.seconds);
+    cpuSeconds.push_back(cpu.seconds);
+    readStartup(gpu, vulkan, pipelines, probe);
+  }
+  result.gpuSeconds = phongvk::median(gpuSeconds);
+  result.cpuSeconds = phongvk::median(cpuSeconds);
+  result.vulkanMs = phongvk::median(vulkan);
+  result.pipelinesMs = phongvk::median(pipelines);
+  result.probeMs = phongvk::median(probe);
+  return result;
+}
+
+std::vector<std::string> paperScenes(const std::string& paper) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(paper)) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace
+
+EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool quick) {
+  Setup s;
+  s.cli = quoted(cli);
+  s.paper = sourceDir + "/scenes/paper";
+  if (quick) {
+    s.size = " --width 320 --height 213";
+    s.rounds = 1;
+    s.frames = 6;
+  }
+  EndToEnd result;
+  const std::vector<std::string> orbits =
+      quick ? std::vector<std::string>{"fig7_orbit_white_red"}
+            : std::vector<std::string>{"fig6_orbit_red", "fig7_orbit_white_red"};
+  for (const std::string& name : orbits) {
+    result.sequences.push_back(measureSequence(s, name));
+    const SequenceRun& r = result.sequences.back();
+    std::printf("  sequence %-24s %6.1f frames/s, render --repeat %.2f ms/frame (%.0f%%)\n", name.c_str(),
+                r.sequenceFps, r.renderMeanMs, 100 * r.rate());
+  }
+  const std::vector<std::string> stills = quick ? std::vector<std::string>{"fig1_cube"} : paperScenes(s.paper);
+  for (const std::string& name : stills) {
+    result.startups.push_back(measureStartup(s, name, s.rounds, false));
+    const StartupRun& r = result.startups.back();
+    std::printf("  start-up %-24s gpu %.3f s, cpu %.3f s (%.2fx)\n", name.c_str(), r.gpuSeconds, r.cpuSeconds,
+                r.ratio());
+  }
+  result.first = measureStartup(s, "fig1_cube", quick ? 1 : 3, true);
+  std::printf("  first render on a new machine: %.2f s\n", result.first.gpuSeconds);
+  return result;
+}
+
+}  // namespace phongvk::bench

@@ -1,0 +1,51 @@
+// end_to_end.h — what a user waits for: whole `phongvk` commands, run as processes of the CLI.
+// Sequences: `phongvk sequence` on the paper's orbits against `phongvk render --repeat` of the same
+// scene (frames per second). Start-up: a one-frame `phongvk render` of each paper scene on the
+// compute port against `--backend cpu`, and the first render on a new machine (empty caches).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace phongvk::bench {
+
+// `phongvk sequence` at no less than this fraction of `render --repeat`'s frame rate...
+inline constexpr double SEQUENCE_RATE_TARGET = 0.8;
+// ...and a one-frame render process within this factor of the reference's.
+inline constexpr double STARTUP_RATIO_TARGET = 1.5;
+// Interleaved rounds per measurement (the medians are over these).
+inline constexpr int END_TO_END_ROUNDS = 5;
+
+struct SequenceRun {
+  std::string name;            // the scene file's name, "fig7_orbit_white_red"
+  int frames = 0;
+  double renderMeanMs = 0;     // render --repeat: mean wall ms per frame (throughput), median over rounds
+  double renderMedianMs = 0;   // and its median frame, as render prints it
+  double sequenceFps = 0;      // frames written per second after the first (the sequence's summary)
+  double sequenceSeconds = 0;  // the whole process, start-up included
+  std::string failure;
+  double rate() const { return sequenceFps * renderMeanMs / 1000.0; }  // sequence fps / render fps
+};
+
+struct StartupRun {
+  std::string name;
+  double gpuSeconds = 0;   // one-frame `render` process on the compute port, median over rounds
+  double cpuSeconds = 0;   // the same with --backend cpu
+  double vulkanMs = 0;     // the compute port's start-up as `render` reports it (median)
+  double pipelinesMs = 0;
+  double probeMs = 0;      // 0 when cached
+  std::string failure;
+  double ratio() const { return gpuSeconds / cpuSeconds; }
+};
+
+struct EndToEnd {
+  std::vector<SequenceRun> sequences;
+  std::vector<StartupRun> startups;  // warm: the caches hold what earlier runs left
+  StartupRun first;                  // the first render on a new machine: empty caches, one run
+};
+
+// Runs the commands with the CLI at `cli`; scenes from `sourceDir`/scenes/paper. `quick`: one
+// orbit of a few small frames and one scene's start-up, one round.
+EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool quick);
+
+}  // namespace phongvk::bench
