@@ -66,7 +66,7 @@ void runBench(const BenchOptions& options) {
     report.sweep = runErrorSweep(gpu.context, options.quick, options.repeat);
     report.plotNote = plotErrorSweep(report.sweep, options.plot, gpu.context.info.name);
     std::printf("end to end (%s):\n", options.cli.c_str());
-    report.endToEnd = runEndToEnd(options.cli, options.sourceDir, options.quick);
+    report.endToEnd = runEndToEnd(options.cli, options.sourceDir, options.quick, options.only);
     if (report.plotNote.empty()) {
       report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
     }

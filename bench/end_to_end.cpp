@@ -165,7 +165,8 @@ std::vector<std::string> paperScenes(const std::string& paper) {
 
 }  // namespace
 
-EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool quick) {
+EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool quick, const std::string& only) {
+  const auto selected = [&](const std::string& name) { return name.find(only) != std::string::npos; };
   Setup s;
   s.cli = quoted(cli);
   s.paper = sourceDir + "/scenes/paper";
@@ -179,6 +180,7 @@ EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool 
       quick ? std::vector<std::string>{"fig7_orbit_white_red"}
             : std::vector<std::string>{"fig6_orbit_red", "fig7_orbit_white_red"};
   for (const std::string& name : orbits) {
+    if (!selected(name)) continue;
     result.sequences.push_back(measureSequence(s, name));
     const SequenceRun& r = result.sequences.back();
     std::printf("  sequence %-24s %6.1f frames/s, render --repeat %.2f ms/frame (%.0f%%)\n", name.c_str(),
@@ -186,11 +188,13 @@ EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool 
   }
   const std::vector<std::string> stills = quick ? std::vector<std::string>{"fig1_cube"} : paperScenes(s.paper);
   for (const std::string& name : stills) {
+    if (!selected(name)) continue;
     result.startups.push_back(measureStartup(s, name, s.rounds, false));
     const StartupRun& r = result.startups.back();
     std::printf("  start-up %-24s gpu %.3f s, cpu %.3f s (%.2fx)\n", name.c_str(), r.gpuSeconds, r.cpuSeconds,
                 r.ratio());
   }
+  if (!selected("fig1_cube")) return result;
   result.first = measureStartup(s, "fig1_cube", quick ? 1 : 3, true);
   std::printf("  first render on a new machine: %.2f s\n", result.first.gpuSeconds);
   return result;

@@ -44,8 +44,9 @@ struct EndToEnd {
   StartupRun first;                  // the first render on a new machine: empty caches, one run
 };
 
-// Runs the commands with the CLI at `cli`; scenes from `sourceDir`/scenes/paper. `quick`: one
-// orbit of a few small frames and one scene's start-up, one round.
-EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool quick);
+// Runs the commands with the CLI at `cli`; scenes from `sourceDir`/scenes/paper, only those whose
+// name contains `only` (the new-machine render is fig1_cube's). `quick`: one orbit of a few small
+// frames and one scene's start-up, one round.
+EndToEnd runEndToEnd(const std::string& cli, const std::string& sourceDir, bool quick, const std::string& only = "");
 
 }  // namespace phongvk::bench

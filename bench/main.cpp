@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   app.add_option("--plot", options.plot, "Run time against error plot, PNG (default docs/bench_error.png)");
   app.add_option("--source", options.sourceDir, "Repository root, where scenes/ is (default: this build's)");
   app.add_option("--revision", options.revision, "Source revision to show in the report");
-  app.add_option("--only", options.only, "Only the suite and mesh setup scenes whose name contains this (a partial run)");
+  app.add_option("--only", options.only, "Only the suite, mesh setup and end-to-end scenes whose name contains this (a partial run)");
   app.add_option("--cli", options.cli, "The phongvk command timed end to end (default: this build's)");
   app.add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")->check(CLI::NonNegativeNumber);
   try {

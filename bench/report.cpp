@@ -68,6 +68,7 @@ std::string machine(const Report& r) {
 
 // "**yes**, all 2" or "**no**: 1 of 2", for a target judged on `judged` runs.
 std::string tallyText(int met, int judged) {
+  if (judged == 0) return "not measured in this run";
   return met == judged ? "**yes**, all " + std::to_string(judged) : "**no**: " + std::to_string(met) + " of " + std::to_string(judged);
 }
 
@@ -157,7 +158,7 @@ std::string endToEndSection(const Report& r) {
                 number(x.pipelinesMs, 1), x.probeMs == 0 ? "cached" : number(x.probeMs, 1)});
   };
   for (const StartupRun& x : e.startups) s += startupRow(x, x.name);
-  s += startupRow(e.first, e.first.name + ", new machine");
+  if (!e.first.name.empty()) s += startupRow(e.first, e.first.name + ", new machine");
   return s + "\n";
 }
 
