@@ -72,29 +72,32 @@ std::string tallyText(int met, int judged) {
   return met == judged ? "**yes**, all " + std::to_string(judged) : "**no**: " + std::to_string(met) + " of " + std::to_string(judged);
 }
 
-std::string endToEndTargets(const EndToEnd& e) {
-  int met = 0, judged = 0;
+// A target's row for runs of one kind: how many met it, and each miss with what was measured (or
+// why the run failed).
+template <typename Run>
+std::string runsTargetRow(const std::string& target, const std::vector<Run>& runs, bool (*met)(const Run&),
+                          double (*measured)(const Run&)) {
+  int hits = 0;
   std::string misses;
-  for (const SequenceRun& x : e.sequences) {
-    ++judged;
-    const bool ok = x.failure.empty() && x.rate() >= SEQUENCE_RATE_TARGET;
-    met += ok;
-    if (!ok) misses += (misses.empty() ? "" : ", ") + x.name + " (" + (x.failure.empty() ? ratio(x.rate()) : x.failure) + ")";
+  for (const Run& x : runs) {
+    const bool ok = x.failure.empty() && met(x);
+    hits += ok;
+    if (!ok) misses += (misses.empty() ? "" : ", ") + x.name + " (" + (x.failure.empty() ? ratio(measured(x)) : x.failure) + ")";
   }
-  std::string s = row({"`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
-                           "x the frame rate of `render --repeat` (paper orbits, PNGs on disk)",
-                       tallyText(met, judged), misses.empty() ? "–" : misses});
-  met = judged = 0;
-  misses.clear();
-  for (const StartupRun& x : e.startups) {
-    ++judged;
-    const bool ok = x.failure.empty() && x.ratio() <= STARTUP_RATIO_TARGET;
-    met += ok;
-    if (!ok) misses += (misses.empty() ? "" : ", ") + x.name + " (" + (x.failure.empty() ? ratio(x.ratio()) : x.failure) + ")";
-  }
-  return s + row({"one-frame `render` process on the compute port <= " + number(STARTUP_RATIO_TARGET, 1) +
-                      "x `--backend cpu`'s (paper scenes)",
-                  tallyText(met, judged), misses.empty() ? "–" : misses});
+  return row({target, tallyText(hits, int(runs.size())), misses.empty() ? "–" : misses});
+}
+
+std::string endToEndTargets(const EndToEnd& e) {
+  return runsTargetRow<SequenceRun>(
+             "`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
+                 "x the frame rate of `render --repeat` (paper orbits, PNGs on disk)",
+             e.sequences, [](const SequenceRun& x) { return x.rate() >= SEQUENCE_RATE_TARGET; },
+             [](const SequenceRun& x) { return x.rate(); }) +
+         runsTargetRow<StartupRun>(
+             "one-frame `render` process on the compute port <= " + number(STARTUP_RATIO_TARGET, 1) +
+                 "x `--backend cpu`'s (paper scenes)",
+             e.startups, [](const StartupRun& x) { return x.ratio() <= STARTUP_RATIO_TARGET; },
+             [](const StartupRun& x) { return x.ratio(); });
 }
 
 // Per target: on how many scenes it was met, and the scenes that miss it with their shortfall.
