@@ -3,6 +3,7 @@
 
 #include "api/timing.h"
 #include "scene/camera.h"
+#include "scene/camera_fit.h"
 
 #include <cmath>
 #include <limits>
@@ -10,17 +11,29 @@
 
 namespace phongvk {
 
+void Renderer::Impl::frame(const SceneSpec& spec) {
+  if (!needsFraming(spec)) {
+    camera_ = spec.camera;
+    return;
+  }
+  const SceneSpec framed = framedScene(spec, *data_);
+  refreshShading(*data_, framed);
+  camera_ = framed.camera;
+}
+
 void Renderer::Impl::prepare(const Scene& scene) {
   const SceneSpec& spec = scene.spec();
   if (data_ && sameGeometry(*builtFrom_, spec)) {
     const size_t materials = data_->materials.size(), lights = data_->lights.size();
     refreshShading(*data_, spec);
+    frame(spec);
     // A backend's buffers are sized for the counts it was built with.
     if (data_->materials.size() == materials && data_->lights.size() == lights) return;
   }
   const auto start = Clock::now();
   data_.reset();  // the old meshes go before the new ones are built
   data_ = buildSceneData(spec);
+  frame(spec);
   buildMs_ += msSince(start);
   upload(*data_);
   builtFrom_ = std::make_shared<const SceneSpec>(spec);
@@ -29,7 +42,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
 
 RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image storage) {
   prepare(scene);
-  RenderOutput out = draw(*data_, makeFrame(*data_, makeView(scene.spec().camera)), withKeys, std::move(storage));
+  RenderOutput out = draw(*data_, makeFrame(*data_, makeView(camera_)), withKeys, std::move(storage));
   ++framesRendered_;
   return out;
 }

@@ -39,11 +39,14 @@ class Renderer::Impl {
 
  private:
   // Makes data_ hold `scene`'s meshes and shading, building and uploading them unless the last
-  // scene's can serve.
+  // scene's can serve, and camera_ its camera (fitted where asked, camera_fit.h).
   void prepare(const Scene& scene);
+  // Lights at the camera placed, the camera fitted, where the scene asks for it.
+  void frame(const SceneSpec& spec);
 
   std::optional<SceneData> data_;
   std::shared_ptr<const SceneSpec> builtFrom_;  // the scene data_'s meshes were built from
+  CameraSpec camera_;
   uint64_t sceneBuilds_ = 0;
   uint64_t framesRendered_ = 0;
   double buildMs_ = 0;

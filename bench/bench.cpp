@@ -67,6 +67,8 @@ void runBench(const BenchOptions& options) {
     report.plotNote = plotErrorSweep(report.sweep, options.plot, gpu.context.info.name);
     std::printf("end to end (%s):\n", options.cli.c_str());
     report.endToEnd = runEndToEnd(options.cli, options.sourceDir, options.quick, options.only);
+    std::printf("mesh files:\n");
+    report.meshLoads = runMeshLoads(options.quick);
     if (report.plotNote.empty()) {
       report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
     }

@@ -87,6 +87,23 @@ std::string runsTargetRow(const std::string& target, const std::vector<Run>& run
   return row({target, tallyText(hits, int(runs.size())), misses.empty() ? "–" : misses});
 }
 
+std::string meshLoadTarget(const std::vector<MeshLoadRun>& runs) {
+  std::string misses;
+  int judged = 0, met = 0;
+  for (const MeshLoadRun& x : runs) {
+    if (!x.judged) continue;
+    ++judged;
+    const bool ok = x.failure.empty() && x.seconds <= MESH_LOAD_TARGET_SECONDS;
+    met += ok;
+    if (!ok) misses += (misses.empty() ? "" : "; ") + x.format + " " + std::to_string(x.triangles) + " triangles: " +
+                       (x.failure.empty() ? number(x.seconds, 2) + " s" : x.failure);
+  }
+  return row({"mesh files: a 10M-triangle binary PLY and a 1M-triangle OBJ load in under " +
+                  number(MESH_LOAD_TARGET_SECONDS, 0) + " s",
+              met == judged ? "**yes**" : "**no**: " + std::to_string(met) + " of " + std::to_string(judged),
+              misses.empty() ? "–" : misses});
+}
+
 std::string endToEndTargets(const EndToEnd& e) {
   return runsTargetRow<SequenceRun>(
              "`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
@@ -125,9 +142,26 @@ std::string targetTable(const Report& r) {
   s += row({"mesh setup linear; a 5M-triangle scene well under a second (<= 0.5 s)",
             setup.met ? "**yes**" : "**no**", setup.result});
   s += endToEndTargets(r.endToEnd);
+  s += meshLoadTarget(r.meshLoads);
   s += "\nSpeed ratios are wall clock (the render call, as a user of either backend waits for it); ";
   s += "each scene's misses and what its time or memory went to are listed under the suite.\n\n";
   return s;
+}
+
+std::string meshLoadSection(const Report& r) {
+  std::string s = "## Mesh files\n\nA grid surface written by the benchmark in each format and loaded as a scene's "
+                  "`mesh` object loads it (the importer, then the object's transform, normals and checks), median of " +
+                  std::to_string(r.quick ? 1 : 3) + " loads.\n\n";
+  s += header({"format", "file", "triangles", "MB", "load s", "MB/s"});
+  for (const MeshLoadRun& x : r.meshLoads) {
+    if (!x.failure.empty()) {
+      s += row({x.format, x.file, "–", number(x.megabytes, 1), x.failure, "–"});
+      continue;
+    }
+    s += row({x.format, x.file, std::to_string(x.triangles), number(x.megabytes, 1), number(x.seconds, 3),
+              number(x.megabytesPerSecond(), 0)});
+  }
+  return s + "\n";
 }
 
 std::string endToEndSection(const Report& r) {
@@ -292,7 +326,8 @@ std::string method(const Report& r) {
 
 std::string formatReport(const Report& report) {
   return preamble(report) + machine(report) + targetTable(report) + suite(report) + setupSection(report) +
-         sweepSection(report) + endToEndSection(report) + method(report);
+         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) +
+         method(report);
 }
 
 }  // namespace phongvk::bench

@@ -5,6 +5,7 @@
 #include "end_to_end.h"
 #include "error_sweep.h"
 #include "machine.h"
+#include "mesh_load.h"
 #include "scene_bench.h"
 
 #include <string>
@@ -23,6 +24,7 @@ struct Report {
   std::vector<SetupResult> setups;
   SweepResult sweep;
   EndToEnd endToEnd;
+  std::vector<MeshLoadRun> meshLoads;
   std::string plotLink;  // the plot, relative to the report; empty when there is none
   std::string plotNote;  // why there is no plot
 };

@@ -12,7 +12,7 @@ namespace {
 using namespace phongvk::cli;
 
 void addViewOptions(CLI::App* command, ViewOptions& options) {
-  command->add_option("scene", options.scene, "Scene file (JSON)")->required();
+  command->add_option("scene", options.scene, "Scene file (JSON), or a mesh file (.obj .ply .stl .gltf .glb) to view alone")->required();
   auto* width = command->add_option("--width", options.width, "Image width in pixels (with --height)")
                     ->check(CLI::Range(1, 16384));
   auto* height = command->add_option("--height", options.height, "Image height in pixels (with --width)")

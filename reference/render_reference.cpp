@@ -16,7 +16,7 @@ std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs
   for (size_t i = 0; i < data.vertices.size(); ++i) {
     const VertexIn& v = data.vertices[i];
     const ObjectData& object = in.objects[v.object];
-    const MaterialData& m = in.materials[object.material];
+    const MaterialData m = vertexMaterial(in.materials[object.material], v.color);
     const vec3 P = lightingPosition(v.position, object.lightOffset);
     const vec3 V = toEye(P, in.frame.eye);
     vec3 color = phongAmbient(m, in.frame.ambient);

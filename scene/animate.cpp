@@ -2,6 +2,8 @@
 // rules are not repeated here: each frame's JSON goes through the scene file's readers.
 #include "scene/animate.h"
 
+#include "scene/model_scene.h"
+
 #include "scene/expression.h"
 #include "scene/scene_sections.h"
 
@@ -170,6 +172,7 @@ std::vector<PathStep> parseTrackPath(const Node& node) {
 }
 
 SceneSequence SceneSequence::load(const std::string& path) {
+  if (isModelFile(path)) return SceneSequence(modelScene(path), path, "");
   return SceneSequence(parseJson(readSceneText(path), path), path,
                        std::filesystem::path(path).parent_path().string());
 }

@@ -4,7 +4,9 @@
 #include "scene/mesh.h"
 
 #include "scene/hull.h"
-#include "scene/obj_import.h"
+#include "scene/mesh_file.h"
+#include "scene/mesh_import.h"
+#include "scene/mesh_transform.h"
 #include "scene/primitives.h"
 #include "scene/subdivide.h"
 
@@ -45,7 +47,7 @@ void checkParameters(const Object& object) {
         fail(object, "segments", "must be >= 3, got " + std::to_string(object.segments));
       [[fallthrough]];
     case Shape::Icosphere: requirePositive(object, "radius", object.radius); break;
-    case Shape::Mesh: requirePositive(object, "scale", object.scale); break;
+    case Shape::Mesh: break;
     case Shape::Polyhedron: break;
   }
 }
@@ -99,6 +101,15 @@ glm::dvec3 centroid(const std::vector<glm::dvec3>& points) {
   return points.empty() ? sum : sum / double(points.size());
 }
 
+// A mesh file, with the object's transform (before subdivision: computed normals follow the
+// transformed surface).
+Mesh importFile(const Object& object) {
+  const std::string where = object.jsonPath + ".file";
+  const MeshFormat format = meshFormat(object.file, where);
+  return finishLoadedMesh(importMeshFile(object.file, format, object.baseColors, where), objectTransform(object),
+                          where + ": " + object.file);
+}
+
 SurfaceMesh makeShape(const Object& object, glm::dvec3& origin) {
   origin = object.center;
   switch (object.shape) {
@@ -111,7 +122,7 @@ SurfaceMesh makeShape(const Object& object, glm::dvec3& origin) {
     case Shape::Mesh: {
       origin = object.translate;
       SurfaceMesh m;  // flat rule: imported surfaces are whatever the file (or the arrays) say
-      m.mesh = object.arrays ? *object.arrays : importObj(object.file, object.scale, object.jsonPath + ".file");
+      m.mesh = object.arrays ? *object.arrays : importFile(object);
       m.surfaces.assign(m.mesh.positions.size(), 0);
       return m;
     }
@@ -129,6 +140,7 @@ ObjectMesh buildObjectMesh(const Object& object) {
   checkSize(object, shape.mesh.triangles.size());
   subdivide(shape, object.subdivide);
   result.mesh = std::move(shape.mesh);
+  if (object.shape != Shape::Mesh || object.arrays) transformMesh(result.mesh, objectTransform(object), object.jsonPath + ".scale");
   result.closed = object.closed;
   return result;
 }

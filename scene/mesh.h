@@ -1,4 +1,4 @@
-// mesh.h — triangle meshes for the scene's objects: primitives, convex hull, OBJ import,
+// mesh.h — triangle meshes for the scene's objects: primitives, convex hull, mesh files,
 // 1 -> 4 subdivision and vertex normals.
 #pragma once
 
@@ -17,6 +17,9 @@ struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;    // unit length, one per position
   std::vector<glm::uvec3> triangles;
+  // One RGBA8 colour per position (red in the low byte) that multiplies the material's colour, or
+  // none: white.
+  std::vector<uint32_t> colors;
 };
 
 struct ObjectMesh {
@@ -25,7 +28,8 @@ struct ObjectMesh {
   bool closed = true;                // back faces may be culled
 };
 
-// Builds the object's mesh: primitive or hull or OBJ, then `subdivide` levels, then normals.
+// Builds the object's mesh: primitive or hull or mesh file, then `subdivide` levels, then the
+// object's transform (mesh_transform.h).
 // Throws SceneError (naming object.jsonPath) for input that cannot make a mesh.
 ObjectMesh buildObjectMesh(const Object& object);
 

@@ -109,15 +109,15 @@ void checkIndices(const ObjData& data, const std::string& path, const std::strin
   }
 }
 
-// Finite, and within the scene's coordinate range once scaled: a float position that overflowed
-// to inf would make NaN vertices.
-void checkPositions(const ObjData& data, double scale, const std::string& path, const std::string& where) {
+// Finite, and within the scene's coordinate range: a float position that overflowed to inf would
+// make NaN vertices.
+void checkPositions(const ObjData& data, const std::string& path, const std::string& where) {
   for (float x : data.positions) {
     if (!std::isfinite(x)) fail(where, path, "a vertex position is not a finite number");
-    if (std::abs(double(x) * scale) > MAX_COORDINATE)
+    if (std::abs(double(x)) > MAX_COORDINATE)
       fail(where, path,
-           "a vertex coordinate times the scale is " + scenejson::formatNumber(double(x) * scale) +
-               ", beyond the " + scenejson::formatNumber(MAX_COORDINATE) + " m a scene may use");
+           "a vertex coordinate is " + scenejson::formatNumber(double(x)) + ", beyond the " +
+               scenejson::formatNumber(MAX_COORDINATE) + " m a scene may use");
   }
 }
 
@@ -135,48 +135,33 @@ bool hasFileNormals(const ObjData& data) {
   return true;
 }
 
-// The position as the mesh stores it: scaled in double, rounded to float.
-glm::vec3 localPosition(const ObjData& data, const tinyobj::index_t& c, double scale) {
-  return glm::vec3(at(data.positions, c.vertex_index) * scale);
-}
-
-Mesh buildMesh(const ObjData& data, double scale, bool fileNormals) {
+// Vertices are the distinct (position, normal) index pairs the faces use, in the order of first use.
+Mesh buildMesh(const ObjData& data, bool fileNormals) {
   Mesh mesh;
-  std::unordered_map<uint64_t, uint32_t>
-      vertexOf;  // (position, normal) index pair -> vertex; lookups only
+  std::unordered_map<uint64_t, uint32_t> vertexOf;  // (position, normal) index pair -> vertex; lookups only
   auto vertex = [&](const tinyobj::index_t& c) {
     const int normal = fileNormals ? c.normal_index : 0;
     const uint64_t key = (uint64_t(uint32_t(c.vertex_index)) << 32) | uint32_t(normal);
     auto [it, inserted] = vertexOf.try_emplace(key, uint32_t(mesh.positions.size()));
     if (inserted) {
-      mesh.positions.push_back(localPosition(data, c, scale));
-      if (fileNormals) mesh.normals.push_back(glm::vec3(glm::normalize(at(data.normals, normal))));
+      mesh.positions.push_back(glm::vec3(at(data.positions, c.vertex_index)));
+      if (fileNormals) mesh.normals.push_back(glm::vec3(at(data.normals, normal)));
     }
     return it->second;
   };
   for (size_t k = 0; k < data.corners.size(); k += 3) {
-    const glm::dvec3 a = localPosition(data, data.corners[k], scale);
-    const glm::dvec3 b = localPosition(data, data.corners[k + 1], scale);
-    const glm::dvec3 c = localPosition(data, data.corners[k + 2], scale);
-    if (glm::cross(b - a, c - a) == glm::dvec3(0.0))
-      continue;  // zero area (as stored): draws nothing
-    mesh.triangles.push_back(
-        {vertex(data.corners[k]), vertex(data.corners[k + 1]), vertex(data.corners[k + 2])});
+    mesh.triangles.push_back({vertex(data.corners[k]), vertex(data.corners[k + 1]), vertex(data.corners[k + 2])});
   }
-  if (!fileNormals) computeVertexNormals(mesh);
   return mesh;
 }
 
 }  // namespace
 
-Mesh importObj(const std::string& path, double scale, const std::string& where) {
-  assert(scale > 0.0);
+Mesh importObj(const std::string& path, const std::string& where) {
   ObjData data = parse(path, where);
   checkIndices(data, path, where);
-  checkPositions(data, scale, path, where);
-  Mesh mesh = buildMesh(data, scale, hasFileNormals(data));
-  if (mesh.triangles.empty()) fail(where, path, "every triangle is degenerate (zero area)");
-  return mesh;
+  checkPositions(data, path, where);
+  return buildMesh(data, hasFileNormals(data));
 }
 
 }  // namespace phongvk

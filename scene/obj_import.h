@@ -7,13 +7,12 @@
 
 namespace phongvk {
 
-// Reads `path`: polygons triangulated, positions multiplied by `scale` (> 0). Normals come from the
-// file when every face vertex has one (vertices are then the file's distinct position/normal
+// Reads `path` as a loaded mesh (mesh_import.h): polygons triangulated. Normals come from the file
+// when every face vertex has a usable one (vertices are then the file's distinct position/normal
 // pairs); otherwise vertices are the file's positions (welded by index, so the surface is smooth)
-// with area-weighted normals. Zero-area triangles are dropped; unused positions are not kept.
-// Throws SceneError "<where>: <path>: <why>" (where is e.g. "objects[6].file") when the file
-// cannot be read or parsed, has no triangles, has an index out of range or a non-finite number,
-// or has only degenerate triangles.
-Mesh importObj(const std::string& path, double scale, const std::string& where);
+// and get no normals. Throws SceneError "<where>: <path>: <why>" (where is e.g. "objects[6].file")
+// when the file cannot be read or parsed, has no triangles, has an index out of range or a number
+// that is not a plain finite decimal, with the line where there is one.
+Mesh importObj(const std::string& path, const std::string& where);
 
 }  // namespace phongvk

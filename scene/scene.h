@@ -29,6 +29,7 @@ struct Light {
   glm::dvec3 position = {0, 0, 0};
   float intensity = 1.0f;
   glm::vec3 color = {1, 1, 1};
+  bool atCamera = false;             // "position": "camera": at the eye, wherever the camera is
 };
 
 struct CameraSpec {
@@ -42,6 +43,9 @@ struct CameraSpec {
   int height = 0;
   double nearPlane = 0.05;
   double farPlane = 1000;
+  // "fit": position, near and far come from the objects' bounds when the meshes are built
+  // (camera_fit.h); `direction` is the view direction.
+  bool fit = false;
 };
 
 // The largest |coordinate| and size, in metres, a scene may use (positions, centres, points,
@@ -61,6 +65,7 @@ struct Mesh;  // mesh.h
 
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
 enum class Interpolation { Perspective, Screen };
+enum class UpAxis { Z, Y };
 
 struct Object {
   Shape shape = Shape::Sphere;
@@ -72,11 +77,16 @@ struct Object {
   int rings = 1;                     // cone: rings along the side
   int subdivide = 0;                 // 1 -> 4 splits, this many times
   std::vector<glm::dvec3> points;    // polyhedron: convex hull of these
-  std::string file;                  // mesh: OBJ path, already resolved against the scene folder
+  std::string file;                  // mesh: OBJ, PLY, STL, glTF or GLB path, resolved against the scene folder
   FileVersion fileVersion;           // mesh: the file as it was when the scene was loaded
   std::shared_ptr<const Mesh> arrays;  // mesh: given as arrays (mesh_arrays.h) instead of a file
-  double scale = 1;                  // mesh
-  glm::dvec3 translate = {0, 0, 0};  // mesh
+  bool baseColors = false;           // mesh: a glTF file's base colours apply (it names no material)
+  glm::dvec3 translate = {0, 0, 0};  // mesh: the origin of its local frame
+  // The local frame's linear map (mesh_transform.h): `up` first (meshes), then `scale` per axis
+  // (non-zero; negative mirrors), then `rotation`.
+  UpAxis up = UpAxis::Z;
+  glm::dvec3 scale = {1, 1, 1};
+  glm::dmat3 rotation{1.0};
   int material = 0;                  // index into SceneSpec::materials
   bool closed = true;                // back faces culled; primitives true, meshes default false
   std::string jsonPath;              // "objects[3]", for error messages downstream

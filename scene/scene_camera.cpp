@@ -12,7 +12,10 @@ namespace phongvk::scenejson {
 namespace {
 
 const Keys kCameraKeys = {"position",   "direction", "look_at", "up",   "fov", "aspect",
-                          "resolution", "width",     "height",  "near", "far"};
+                          "resolution", "width",     "height",  "near", "far", "fit"};
+
+// The view direction of a fitted camera given none: from the front (-y), to the left and above.
+const glm::dvec3 kFitDirection = {0.5, 1.0, -0.5};
 
 // Below this |cross(f, up)| the camera's right vector is numerically meaningless.
 constexpr double kParallelTolerance = 1e-6;
@@ -31,6 +34,16 @@ glm::dvec3 readViewDirection(const Node& camera, glm::dvec3 position) {
   glm::dvec3 target = point(*lookAt);
   if (target == position) lookAt->fail("equals camera.position, so there is no view direction");
   return usableDirection(*lookAt, target - position);
+}
+
+// A fitted camera takes its position and depth range from the scene's bounds; only the direction
+// (default kFitDirection) is given.
+void readFitted(const Node& camera, CameraSpec& spec) {
+  for (std::string_view key : {"position", "look_at", "near", "far"}) {
+    if (camera.find(key)) camera.failAt(key, "cannot be given with 'fit': the scene's bounds set it");
+  }
+  spec.direction = kFitDirection;
+  if (auto direction = camera.find("direction")) spec.direction = usableDirection(*direction, vec3(*direction));
 }
 
 glm::dvec3 readUp(const Node& camera, glm::dvec3 direction) {
@@ -96,8 +109,13 @@ CameraSpec readCamera(const Node& camera) {
   requireObject(camera);
   checkKeys(camera, kCameraKeys);
   CameraSpec spec;
-  spec.position = point(camera.require("position"));
-  spec.direction = readViewDirection(camera, spec.position);
+  if (auto fit = camera.find("fit")) spec.fit = boolean(*fit);
+  if (spec.fit) {
+    readFitted(camera, spec);
+  } else {
+    spec.position = point(camera.require("position"));
+    spec.direction = readViewDirection(camera, spec.position);
+  }
   spec.up = readUp(camera, spec.direction);
   if (auto node = camera.find("fov")) spec.fov = inOpenRange(*node, 0, 180);
   if (spec.fov < kMinFov) {
@@ -105,7 +123,7 @@ CameraSpec readCamera(const Node& camera) {
                              " degrees (a narrower view overflows 32-bit floats), got " + formatNumber(spec.fov));
   }
   readImageSize(camera, spec);
-  readDepthRange(camera, spec);
+  if (!spec.fit) readDepthRange(camera, spec);
   return spec;
 }
 

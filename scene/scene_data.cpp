@@ -3,6 +3,7 @@
 #include "scene/huge_pages.h"
 #include "scene/mesh.h"
 
+#include <cmath>
 #include <algorithm>
 #include <limits>
 
@@ -30,7 +31,12 @@ std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, si
   meshes.reserve(scene.objects.size());
   vertices = triangles = 0;
   for (const Object& object : scene.objects) {
-    meshes.push_back(buildObjectMesh(object));
+    try {
+      meshes.push_back(buildObjectMesh(object));
+    } catch (const SceneError& error) {  // the object's JSON path and any inner file: the scene file first
+      if (scene.path.empty()) throw;
+      throw SceneError(scene.path + ": " + error.what());
+    }
     vertices += meshes.back().mesh.positions.size();
     triangles += meshes.back().mesh.triangles.size();
     if (vertices > std::numeric_limits<uint32_t>::max()) {
@@ -44,7 +50,11 @@ void appendObject(SceneData& data, const ObjectMesh& built, uint32_t objectIndex
   const Mesh& mesh = built.mesh;
   const uint64_t base = data.vertices.size();
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    data.vertices.push_back({mesh.positions[i], objectIndex, mesh.normals[i], 0});
+    const glm::dvec3 world = built.origin + glm::dvec3(mesh.positions[i]);
+    data.boundsMin = glm::min(data.boundsMin, world);
+    data.boundsMax = glm::max(data.boundsMax, world);
+    const uint32_t color = mesh.colors.empty() ? gpu::VERTEX_WHITE : mesh.colors[i];
+    data.vertices.push_back({mesh.positions[i], objectIndex, mesh.normals[i], color});
   }
   for (const glm::uvec3& t : mesh.triangles) {
     data.triangles.push_back(glm::uvec4(glm::uvec3(static_cast<uint32_t>(base)) + t, objectIndex));
@@ -76,6 +86,8 @@ SceneData buildSceneData(const SceneSpec& scene) {
   std::vector<ObjectMesh> meshes = buildMeshes(scene, vertices, triangles);
   reserveLarge(data.vertices, vertices);
   reserveLarge(data.triangles, triangles);
+  data.boundsMin = glm::dvec3(HUGE_VAL);
+  data.boundsMax = glm::dvec3(-HUGE_VAL);
   for (size_t i = 0; i < meshes.size(); ++i) {
     appendObject(data, meshes[i], static_cast<uint32_t>(i));
     meshes[i] = {};  // freed as soon as copied
@@ -114,7 +126,8 @@ bool sameObjectGeometry(const Object& a, const Object& b) {
   return a.shape == b.shape && a.center == b.center && a.radius == b.radius && a.size == b.size &&
          a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
          a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
-         a.scale == b.scale && a.translate == b.translate && a.closed == b.closed;
+         a.scale == b.scale && a.rotation == b.rotation && a.up == b.up && a.baseColors == b.baseColors &&
+         a.translate == b.translate && a.closed == b.closed;
 }
 
 }  // namespace

@@ -24,6 +24,7 @@ struct SceneData {
   std::vector<gpu::ObjectData> objects;     // material, flags, lightOffset; viewOffset per frame
   std::vector<gpu::MaterialData> materials;
   std::vector<gpu::LightData> lights;       // positions relative to lightingOrigin
+  glm::dvec3 boundsMin{0.0}, boundsMax{0.0};  // world box around every vertex (camera_fit.h)
   glm::vec3 background{0.0f};
   glm::vec3 ambient{1.0f};
   uint32_t interpolation = gpu::INTERP_PERSPECTIVE;

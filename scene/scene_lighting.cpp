@@ -12,7 +12,13 @@ Light readLight(const Node& node) {
   requireObject(node);
   checkKeys(node, kLightKeys);
   Light light;
-  light.position = point(node.require("position"));
+  const Node position = node.require("position");
+  if (position.json().is_string()) {
+    if (string(position) != "camera") position.fail("must be a point or \"camera\", got '" + string(position) + "'");
+    light.atCamera = true;
+  } else {
+    light.position = point(position);
+  }
   if (auto intensity = node.find("intensity")) light.intensity = nonNegativeFloat(*intensity);
   if (auto lightColor = node.find("color")) light.color = color(*lightColor);
   return light;

@@ -2,13 +2,16 @@
 // material. Meshes are only checked for a readable file here; mesh.cpp builds them.
 #include "scene/scene_sections.h"
 
+#include "scene/mesh_file.h"
+#include "scene/mesh_transform.h"
+
 #include <chrono>
 #include <filesystem>
 
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kObjectKeys = {"shape", "material", "subdivide", "closed"};  // every shape
+const Keys kObjectKeys = {"shape", "material", "subdivide", "closed", "scale", "rotate"};  // every shape
 
 struct ShapeInfo {
   Shape shape;
@@ -23,7 +26,7 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
-    {Shape::Mesh, "mesh", {"file", "scale", "translate"}},
+    {Shape::Mesh, "mesh", {"file", "translate", "up"}},
 };
 
 
@@ -58,13 +61,16 @@ std::vector<glm::dvec3> readPoints(const Node& node) {
   return points;
 }
 
-// Only checks that the file can be read: the OBJ itself is parsed by the mesh builder.
+// Only checks that the file can be read and that its content and extension agree on a format: the
+// mesh builder parses it.
 std::string resolveMeshFile(const Node& node, const std::string& baseDir) {
   std::string file = string(node);
   if (file.empty()) node.fail("must name a file, got an empty string");
   // An absolute `file` replaces baseDir here.
   std::string resolved = (std::filesystem::path(baseDir) / file).string();
   if (auto reason = unreadableReason(resolved)) node.fail("cannot read '" + file + "': " + *reason);
+  const DetectedFormat format = detectMeshFormat(resolved);
+  if (!format.format) node.fail(format.problem);
   return resolved;
 }
 
@@ -86,13 +92,64 @@ void readGeometry(const Node& node, Object& object, const std::string& baseDir) 
   if (auto height = node.find("height")) object.height = length(*height);
   if (auto segments = node.find("segments")) object.segments = integer(*segments, 3, 4096);
   if (auto rings = node.find("rings")) object.rings = integer(*rings, 1, 4096);
-  if (auto scale = node.find("scale")) object.scale = positive(*scale);
   if (auto translate = node.find("translate")) object.translate = point(*translate);
   if (object.shape == Shape::Polyhedron) object.points = readPoints(node.require("points"));
   if (object.shape == Shape::Mesh) {
     object.file = resolveMeshFile(node.require("file"), baseDir);
     object.fileVersion = fileVersion(object.file);
   }
+}
+
+// A scale factor: non-zero (a negative one mirrors), within the coordinates a scene may use.
+double scaleFactor(const Node& node) {
+  const double s = inRange(node, -MAX_COORDINATE, MAX_COORDINATE);
+  if (s == 0.0) node.fail("must not be 0");
+  return s;
+}
+
+glm::dvec3 readScale(const Node& node) {
+  if (node.json().is_number()) return glm::dvec3(length(node));
+  return vec3(node, scaleFactor);
+}
+
+double angle(const Node& node) { return inRange(node, -1e6, 1e6); }
+
+// [x, y, z] degrees (about x first, then y, then z), or {"axis": [x, y, z], "angle": degrees}.
+glm::dmat3 readRotation(const Node& node) {
+  if (!node.json().is_object()) return rotationXYZ(vec3(node, angle));
+  checkKeys(node, {"axis", "angle"});
+  const Node axis = node.require("axis");
+  return rotationAxisAngle(usableDirection(axis, vec3(axis)), angle(node.require("angle")));
+}
+
+UpAxis readUp(const Node& node) {
+  const std::string up = string(node);
+  if (up != "y" && up != "z") node.fail("must be \"y\" or \"z\", got '" + up + "'");
+  return up == "y" ? UpAxis::Y : UpAxis::Z;
+}
+
+void readTransform(const Node& node, Object& object) {
+  if (auto scale = node.find("scale")) object.scale = readScale(*scale);
+  if (auto rotate = node.find("rotate")) object.rotation = readRotation(*rotate);
+  if (auto up = node.find("up")) object.up = readUp(*up);
+}
+
+// A glTF file's base colours are its objects' colours unless the scene sets one: a named material,
+// or an inline one with a "color". The object's material is then white, for them to multiply.
+bool takesBaseColors(const Node& node, const Object& object) {
+  if (object.shape != Shape::Mesh) return false;
+  const MeshFormat format = meshFormat(object.file, object.jsonPath + ".file");
+  if (format != MeshFormat::Gltf && format != MeshFormat::Glb) return false;
+  const std::optional<Node> material = node.find("material");
+  return !material || (material->json().is_object() && !material->find("color"));
+}
+
+int objectMaterial(const Node& node, const Object& object, MaterialTable& materials) {
+  if (!object.baseColors) return materials.forObject(node.find("material"));
+  const std::optional<Node> inline_ = node.find("material");
+  Material white = inline_ ? readMaterial(*inline_) : Material{};
+  white.color = glm::vec3(1.0f);
+  return materials.add(white);
 }
 
 Object readObject(const Node& node, const std::string& baseDir, MaterialTable& materials) {
@@ -104,9 +161,11 @@ Object readObject(const Node& node, const std::string& baseDir, MaterialTable& m
   object.jsonPath = node.path();
   object.closed = info.shape != Shape::Mesh;  // imported meshes are often open or mis-wound
   readGeometry(node, object, baseDir);
+  readTransform(node, object);
   if (auto subdivide = node.find("subdivide")) object.subdivide = integer(*subdivide, 0, 10);
   if (auto closed = node.find("closed")) object.closed = boolean(*closed);
-  object.material = materials.forObject(node.find("material"));
+  object.baseColors = takesBaseColors(node, object);
+  object.material = objectMaterial(node, object, materials);
   return object;
 }
 

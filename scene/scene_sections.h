@@ -55,6 +55,11 @@ class MaterialTable {
   }
 
   // The index for an object's "material": absent, a name, or an inline material object.
+  int add(const Material& material) {
+    scene_.materials.push_back(material);
+    return int(scene_.materials.size()) - 1;
+  }
+
   int forObject(const std::optional<Node>& node) {
     if (!node) return defaultIndex();
     if (node->json().is_string()) return named(*node);
@@ -66,11 +71,6 @@ class MaterialTable {
   }
 
  private:
-  int add(const Material& material) {
-    scene_.materials.push_back(material);
-    return int(scene_.materials.size()) - 1;
-  }
-
   int defaultIndex() {
     if (!scene_.defaultMaterial) scene_.defaultMaterial = add(Material{});
     return *scene_.defaultMaterial;

@@ -21,6 +21,10 @@ SurfaceVertex flatMidpoint(const SurfaceVertex& a, const SurfaceVertex& b) {
     if (length > 0.0f) mid.normal = sum / length;  // opposite normals: keep a's, any is as good
   }
   mid.surface = a.surface == b.surface ? a.surface : 0;
+  for (int shift = 0; shift < 32; shift += 8) {
+    const uint32_t sum = ((a.color >> shift) & 255u) + ((b.color >> shift) & 255u);
+    mid.color = (mid.color & ~(255u << shift)) | (((sum + 1u) / 2u) << shift);
+  }
   return mid;
 }
 
@@ -83,7 +87,7 @@ EdgeTable buildEdgeTable(const std::vector<glm::uvec3>& triangles, size_t vertex
 }
 
 SurfaceVertex vertexAt(const SurfaceMesh& m, uint32_t i) {
-  return {m.mesh.positions[i], m.mesh.normals[i], m.surfaces[i]};
+  return {m.mesh.positions[i], m.mesh.normals[i], m.surfaces[i], m.mesh.colors.empty() ? 0xFFFFFFFFu : m.mesh.colors[i]};
 }
 
 void appendMidpoints(SurfaceMesh& m, const EdgeTable& edges) {
@@ -94,11 +98,14 @@ void appendMidpoints(SurfaceMesh& m, const EdgeTable& edges) {
   m.mesh.positions.resize(vertexCount + edgeCount);
   m.mesh.normals.resize(vertexCount + edgeCount);
   m.surfaces.resize(vertexCount + edgeCount);
+  const bool colors = !m.mesh.colors.empty();
+  if (colors) m.mesh.colors.resize(vertexCount + edgeCount);
   for (size_t e = 0; e < edgeCount; ++e) {
     SurfaceVertex mid = m.midpoint(vertexAt(m, edges.lo[e]), vertexAt(m, edges.hi[e]));
     m.mesh.positions[vertexCount + e] = mid.position;
     m.mesh.normals[vertexCount + e] = mid.normal;
     m.surfaces[vertexCount + e] = mid.surface;
+    if (colors) m.mesh.colors[vertexCount + e] = mid.color;
   }
 }
 

@@ -19,6 +19,7 @@ struct SurfaceVertex {
   glm::vec3 position{0.0f};
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   uint8_t surface = 0;
+  uint32_t color = 0xFFFFFFFFu;  // RGBA8 (Mesh::colors), white where the mesh has none
 };
 
 // Places the new vertex on edge (a, b). It must be symmetric, bit for bit (rule(a, b) equals
@@ -29,7 +30,8 @@ struct SurfaceVertex {
 using MidpointRule = std::function<SurfaceVertex(const SurfaceVertex& a, const SurfaceVertex& b)>;
 
 // The rule for planar faces and imported meshes: the plain midpoint; the normal is kept where both
-// ends agree (a flat face stays exactly flat-shaded) and averaged otherwise. Keeps a shared tag.
+// ends agree (a flat face stays exactly flat-shaded) and averaged otherwise. Keeps a shared tag;
+// colours are averaged per channel, rounded up.
 SurfaceVertex flatMidpoint(const SurfaceVertex& a, const SurfaceVertex& b);
 
 // A mesh with what subdivision needs to keep new vertices on the true surface.

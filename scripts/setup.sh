@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libglm-dev libstb-dev libgtest-dev googletest nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libdeflate-dev
+  libtinygltf-dev assimp-testmodels  # glTF (scene/gltf_import.cpp); real PLY, STL and glTF files for the tests
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   gnuplot-nox
   python3 python3-dev pybind11-dev python3-numpy python3-pytest  # the Python package and its tests (python/)

@@ -44,7 +44,7 @@ void main() {
   loadUniforms();
   VertexIn v = vertexIn(gl_VertexIndex);
   ObjectData object = objectData(v.object);
-  MaterialData m = materialData(object.material);
+  MaterialData m = vertexMaterial(materialData(object.material), v.color);
   vec3 h = toHomogeneous(v.position, object.viewOffset, frame);
   gl_Position = clipPosition(h);
   vec3 P = lightingPosition(v.position, object.lightOffset);

@@ -116,6 +116,15 @@ FN vec3 phongLight(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light) {
   return phongLightWith(P, N, V, m, light, true, false);
 }
 
+// The material as a vertex sees it: C times the vertex's colour (RGBA8, red in the low byte; alpha
+// unused). Each channel is c / 255, correctly rounded, so VERTEX_WHITE leaves C exactly as it is.
+FN MaterialData vertexMaterial(MaterialData m, uint color) {
+  PRECISE vec3 c = vec3(divide(float(color & 255u), 255.0f), divide(float((color >> 8u) & 255u), 255.0f),
+                        divide(float((color >> 16u) & 255u), 255.0f));
+  m.color = m.color * c;
+  return m;
+}
+
 // ka * C * A: the ambient term every vertex gets.
 FN vec3 phongAmbient(MaterialData m, vec3 ambient) {
   PRECISE vec3 a = held3(held3(m.ka * m.color) * ambient);

@@ -16,7 +16,7 @@ layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION 
 void shadeVertex(uint i) {
   VertexIn v = vertexIn(i);
   ObjectData object = objectData(v.object);
-  MaterialData m = materialData(object.material);
+  MaterialData m = vertexMaterial(materialData(object.material), v.color);
   // Only when the view or an object moved: a loop of 0 or 1 trips, the same for every lane (on
   // lavapipe no cheaper than an if: a loop body runs once, masked, even when no lane enters it).
   [[dont_unroll]] for (uint k = control.shadePositions; k != 0u; --k) {

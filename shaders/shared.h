@@ -101,8 +101,10 @@ struct VertexIn {
   vec3 position;
   uint object;
   vec3 normal;
-  uint pad0;
+  uint color;  // RGBA8, red in the low byte: multiplies the material's colour (phong.h vertexMaterial)
 };
+
+PHONGVK_CONST uint VERTEX_WHITE = 0xFFFFFFFFu;  // the colour of a vertex that has none
 
 // Output of the per-vertex pass: homogeneous pixel-space position and unclamped Phong colour.
 // hpos = (focal * x_view, -focal * y_view, z_view, unused): the screen position is

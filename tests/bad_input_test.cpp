@@ -196,8 +196,8 @@ class BadMesh : public ::testing::Test {
     return sceneErrorOf([&] { buildSceneData(parseSceneSpec(scene, "a.json", dir_)); });
   }
 
-  // What every OBJ error starts with.
-  std::string prefix() const { return "objects[0].file: " + dir_ + "/mesh.obj: "; }
+  // What every OBJ error starts with: the scene file, the JSON path, the OBJ file.
+  std::string prefix() const { return "a.json: objects[0].file: " + dir_ + "/mesh.obj: "; }
 
   const std::string dir_ = test::makeTempDir();
 };
@@ -216,7 +216,7 @@ TEST_F(BadMesh, NonFiniteOrOverflowingPositions) {
   EXPECT_EQ(meshError("v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), prefix() + "a vertex position is not a finite number");
   // Finite floats, but 1e10 * 1e10 m is beyond any scene (as a float it used to become inf).
   EXPECT_EQ(meshError("v 1e10 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n", 1e10),
-            prefix() + "a vertex coordinate times the scale is 1e+20, beyond the 1e+15 m a scene may use");
+            prefix() + "a vertex coordinate after the object's scale and rotation is 1e+20, beyond the 1e+15 m a scene may use");
 }
 
 TEST_F(BadMesh, NoUsableTriangles) {

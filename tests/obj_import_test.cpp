@@ -27,7 +27,7 @@ Object objObject(const std::string& file) {
 
 TEST(ObjMesh, FileNormalsAreKept) {
   Object object = objObject(test::sourcePath("tests/data/meshes/tetrahedron_normals.obj"));
-  object.scale = 2;
+  object.scale = glm::dvec3(2);
   object.translate = {5, 6, 7};
   ObjectMesh m = buildObjectMesh(object);
   EXPECT_EQ(m.origin, glm::dvec3(5, 6, 7));

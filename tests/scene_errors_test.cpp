@@ -100,7 +100,7 @@ TEST(SceneErrors, UnknownKeyAtTopLevel) {
 TEST(SceneErrors, UnknownKeyNested) {
   EXPECT_EQ(errorFor([](ordered_json& s) { s["camera"]["zoom"] = 2; }),
             "a.json: camera.zoom: unknown key (allowed: position, direction, look_at, up, fov, "
-            "aspect, resolution, width, height, near, far)");
+            "aspect, resolution, width, height, near, far, fit)");
   EXPECT_EQ(
       materialError(R"({"shininess": 3})"),
       "a.json: materials.m.shininess: unknown key (allowed: ka, kd, ks, n, attenuation, color)");
@@ -110,13 +110,13 @@ TEST(SceneErrors, UnknownKeyNested) {
             "a.json: lights[0].power: unknown key (allowed: position, intensity, color)");
   EXPECT_EQ(objectError(R"({"shape": "sphere", "radiu": 1})"),
             "a.json: objects[0].radiu: unknown key (allowed: shape, material, subdivide, closed, "
-            "center, radius, segments)");
+            "scale, rotate, center, radius, segments)");
 }
 
 TEST(SceneErrors, KeyOfAnotherShape) {
   EXPECT_EQ(objectError(R"({"shape": "cube", "radius": 1})"),
             "a.json: objects[0].radius: unknown key, not used by shape 'cube' (allowed: shape, "
-            "material, subdivide, closed, center, size)");
+            "material, subdivide, closed, scale, rotate, center, size)");
 }
 
 TEST(SceneErrors, MissingRequiredField) {

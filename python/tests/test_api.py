@@ -186,3 +186,25 @@ def test_help_reads_well():
     doc = phongvk.Renderer.__doc__
     assert "backend" in doc and "keeps what it uploaded" in doc
     assert "add_mesh" in phongvk.Scene.__doc__ and "vertices: (N, 3)" in phongvk.Scene.add_mesh.__doc__
+
+
+def test_mesh_files_load_as_scenes_and_in_scenes(tmp_path):
+    # A model file alone is a scene (fitted camera, light at the eye); PLY, STL and GLB files made by
+    # other tools (Debian's assimp-testmodels) render the same on both backends.
+    models = "/usr/share/assimp/models/"
+    for name in ["PLY/Wuson.ply", "STL/Spider_binary.stl", "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"]:
+        scene = phongvk.load_scene(models + name)
+        assert (scene.width, scene.height) == (960, 720)
+        result = phongvk.diff(scene)
+        assert result["differing"] == 0 and result["triangle_mismatch"] == 0
+    scene = phongvk.scene_from_dict({
+        "camera": {"fit": True, "direction": [0, 1, -0.3], "width": 80, "height": 60},
+        "lights": [{"position": "camera"}],
+        "objects": [{"shape": "mesh", "file": models + "PLY/Wuson.ply", "up": "y", "rotate": [0, 0, 30],
+                     "scale": [1, 1, 1.5]}]})
+    image = phongvk.Renderer("cpu").render(scene)
+    assert (image != 0).any()
+    with pytest.raises(phongvk.SceneError, match=r"objects\[0\]\.file: .*: the extension says PLY but the content is STL"):
+        bad = tmp_path / "part.ply"
+        bad.write_text("solid x\nendsolid x\n")
+        phongvk.scene_from_dict({"camera": {"fit": True}, "objects": [{"shape": "mesh", "file": str(bad)}]})

@@ -1,0 +1,19 @@
+// gltf_import.h — glTF 2.0 files (.gltf with its buffers, .glb) through tinygltf
+// (docs/DECISIONS.md "Mesh files").
+#pragma once
+
+#include "scene/mesh.h"
+
+#include <string>
+
+namespace phongvk {
+
+// Reads `path` (`binary`: a .glb) as a loaded mesh (mesh_import.h): every triangle primitive
+// (triangles, strips, fans; points and lines are skipped) of the meshes the default scene's nodes
+// place (the first scene where none is the default), with their node transforms (matrix or
+// translation, rotation, scale). Normals where every primitive has them; otherwise flat, as the
+// specification asks. COLOR_0 as 8 bits a channel; with `baseColors`, each primitive's base
+// colour factor multiplies it (or is its colour). Throws SceneError "<where>: <path>: <why>".
+Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std::string& where);
+
+}  // namespace phongvk

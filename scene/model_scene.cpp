@@ -1,0 +1,32 @@
+// model_scene.cpp — see model_scene.h.
+#include "scene/model_scene.h"
+
+#include "scene/mesh_file.h"
+
+#include <filesystem>
+
+namespace phongvk {
+
+bool isModelFile(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".obj" || extension == ".ply" || extension == ".stl" || extension == ".gltf" || extension == ".glb";
+}
+
+scenejson::Json modelScene(const std::string& path) {
+  const MeshFormat format = meshFormat(path, "model");
+  const std::string file = std::filesystem::absolute(path).string();
+  return scenejson::Json{
+      {"camera", {{"fit", true}, {"fov", 40}, {"width", 960}, {"height", 720}}},
+      {"background", {0.12, 0.12, 0.14}},
+      {"ambient", {1, 1, 1}},
+      {"lights", {{{"position", "camera"}}}},
+      {"objects",
+       {{{"shape", "mesh"},
+         {"file", file},
+         {"up", usuallyYUp(format) ? "y" : "z"},
+         {"material", {{"attenuation", {1, 0, 0}}}}}}},
+  };
+}
+
+}  // namespace phongvk

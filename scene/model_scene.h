@@ -1,0 +1,21 @@
+// model_scene.h — a mesh file rendered with no scene file (`phongvk render model.ply -o out.png`,
+// phongvk.load_scene("model.glb")): the model upright, in full view, lit from the camera.
+#pragma once
+
+#include "scene/scene_json.h"
+
+#include <string>
+
+namespace phongvk {
+
+// True when `path` names a mesh file by its extension (.obj .ply .stl .gltf .glb, any case)
+// rather than a scene file.
+bool isModelFile(const std::string& path);
+
+// The scene for a model alone: the mesh (up axis as its format usually has it, mesh_file.h
+// usuallyYUp; back faces drawn), a camera fitted from the front, left and above (960x720, 40°
+// field of view), one white light at the camera without fall-off, a dark grey background.
+// A glTF model keeps its base colours. Throws SceneError for a file that is not a mesh.
+scenejson::Json modelScene(const std::string& path);
+
+}  // namespace phongvk
