@@ -38,8 +38,23 @@ Scene sizedAsAsked(const Scene& scene, const ViewOptions& options) {
   return scene.withImageSize(options.width, options.height);
 }
 
+Scene loadEveryFrameValidated(const ViewOptions& options) {
+  const Scene scene = loadScene(options.scene);
+  for (int i = 1; i < scene.frameCount(); ++i) {
+    try {
+      sizedAsAsked(scene.frame(i), options);
+    } catch (const SceneError& error) {
+      throw SceneError(scene.path() + ": frame " + std::to_string(i) + ": " + error.what());
+    }
+  }
+  return sizedAsAsked(scene, options);
+}
+
 RendererOptions rendererOptions(const ViewOptions& options, const std::string& backend) {
-  return {parseBackend(backend), options.device, options.validate};
+  const Backend chosen = parseBackend(backend);
+  if (chosen == Backend::Cpu && options.device >= 0)
+    throw UsageError("--device " + std::to_string(options.device) + " selects a Vulkan device, and --backend cpu uses none");
+  return {chosen, options.device, options.validate};
 }
 
 }  // namespace phongvk::cli

@@ -29,7 +29,13 @@ int guarded(const std::function<int()>& command);
 // `scene` at the size the options ask for (--width/--height), or its own.
 Scene sizedAsAsked(const Scene& scene, const ViewOptions& options);
 
-// The renderer the options ask for: `backend` on options.device, validating if asked.
+// The scene the options name, at the asked size, every frame of an animated scene validated first
+// (a radius that turns negative at frame 25 fails a one-frame render as it fails the sequence).
+// Throws SceneError "<file>: frame N: ..." for a bad frame.
+Scene loadEveryFrameValidated(const ViewOptions& options);
+
+// The renderer the options ask for: `backend` on options.device, validating if asked. Throws
+// UsageError for --device with the reference, which uses no device.
 RendererOptions rendererOptions(const ViewOptions& options, const std::string& backend);
 
 }  // namespace phongvk::cli

@@ -9,7 +9,7 @@ namespace phongvk::cli {
 int runDiff(const DiffOptions& options) {
   return guarded([&] {
     checkWritable(options.heatmap);
-    const Scene scene = sizedAsAsked(loadScene(options.scene), options);
+    const Scene scene = loadEveryFrameValidated(options);
     const DiffResult result = diff(scene, rendererOptions(options, "gpu"));
     std::printf("scene:               %s\ndevice:              %s\n%s", options.scene.c_str(), result.deviceName.c_str(),
                 formatDiff(result.stats).c_str());

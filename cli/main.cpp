@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -72,6 +73,13 @@ int main(int argc, char** argv) {
   addViewOptions(diffCmd, diff);
   diffCmd->add_option("--heatmap", diff.heatmap, "Write a PNG showing where the images differ");
   diffCmd->add_option("--tolerance", diff.tolerance, "Largest allowed channel difference, in 8-bit units (default 1)")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            double value = 0;
+            const bool parsed = CLI::detail::lexical_cast(text, value);
+            return parsed && std::isfinite(value) && value >= 0 ? std::string() : "must be a finite number >= 0, got " + text;
+          },
+          "NUMBER >= 0"))
       ->check(CLI::Range(0.0, 255.0));
 
   SequenceOptions sequence;

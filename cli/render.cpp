@@ -57,7 +57,7 @@ int runRender(const RenderOptions& options) {
   return guarded([&] {
     checkWritable(options.output);
     const auto start = Clock::now();
-    const Scene scene = sizedAsAsked(loadScene(options.scene), options);
+    const Scene scene = loadEveryFrameValidated(options);
     const double loadMs = msSince(start);
     const auto renderStart = Clock::now();
     Renderer renderer(rendererOptions(options, options.backend));

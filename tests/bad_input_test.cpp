@@ -340,3 +340,39 @@ TEST_F(BadCli, BadSceneWritesNothing) {
 
 }  // namespace
 }  // namespace phongvk
+
+namespace phongvk {
+namespace {
+
+// Every frame of an animated scene is validated before anything is rendered, by render and diff
+// as by sequence: a radius that turns negative at frame 25 fails a one-frame render of frame 0.
+TEST_F(BadCli, RenderAndDiffValidateEveryFrame) {
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/shrinks.json", R"({"camera": {"position": [3, 0, 0], "look_at": [0, 0, 0], "width": 8, "height": 6},
+    "objects": [{"shape": "sphere", "radius": 1}],
+    "animate": {"frames": 30, "tracks": [{"path": "objects[0].radius", "expression": "1 - i/24.5"}]}})");
+  const std::string message = "error: " + dir + "/shrinks.json: frame 25: ";
+  expectFailure("render " + dir + "/shrinks.json --backend cpu -o " + out_ + "/x.png", 2, message);
+  expectFailure("diff " + dir + "/shrinks.json --heatmap " + out_ + "/h.png", 2, message);
+  expectFailure("sequence " + dir + "/shrinks.json --backend cpu -o " + out_, 2, message);
+}
+
+// Errors found while building meshes (a hull, a mesh file) name the scene file first, like every other.
+TEST_F(BadCli, MeshBuildingErrorsNameTheSceneFile) {
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/flat.json", sceneWith(R"("objects": [{"shape": "polyhedron",
+    "points": [[0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]]}])"));
+  expectFailure("render " + dir + "/flat.json --backend cpu -o " + out_ + "/x.png", 2,
+                "error: " + dir + "/flat.json: objects[0].points: the points are coplanar");
+}
+
+TEST_F(BadCli, OptionsThatCannotApply) {
+  const std::string one = scene("one_pixel.json");
+  expectFailure("diff " + one + " --tolerance nan", 2, "--tolerance: must be a finite number >= 0, got nan");
+  expectFailure("diff " + one + " --tolerance -1", 2, "--tolerance");
+  expectFailure("render " + one + " --backend cpu --device 0 -o " + out_ + "/x.png", 2,
+                "error: --device 0 selects a Vulkan device, and --backend cpu uses none");
+}
+
+}  // namespace
+}  // namespace phongvk
