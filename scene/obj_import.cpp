@@ -2,13 +2,19 @@
 // through unchecked (indices out of range, numbers it reads as 0, NaN) is checked here.
 #include "scene/obj_import.h"
 
+#include "scene/mapped_file.h"
 #include "scene/normals.h"
+#include "scene/polygon.h"
 #include "scene/scene_json.h"
+#include "scene/text_words.h"
 
 #include <tiny_obj_loader.h>
 
 #include <cassert>
+#include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -21,7 +27,8 @@ namespace {
 struct ObjData {
   std::vector<float> positions;           // xyz per position
   std::vector<float> normals;             // xyz per normal
-  std::vector<tinyobj::index_t> corners;  // three per triangle
+  std::vector<tinyobj::index_t> corners;  // the faces' corners, in order
+  std::vector<uint32_t> faceSizes;        // corners per face, in file order
 };
 
 [[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
@@ -58,28 +65,75 @@ bool isPlainNumber(const std::string& token) {
   return i == token.size();
 }
 
-// Every number on the file's v, vn and vt lines is a plain decimal number (up to a '#' comment).
-void checkNumbers(const std::string& path, const std::string& where) {
-  std::ifstream in(path);
-  std::string line;
-  for (size_t lineNumber = 1; std::getline(in, line); ++lineNumber) {
-    std::istringstream words(line.substr(0, line.find('#')));
-    std::string keyword, token;
-    words >> keyword;
-    if (keyword != "v" && keyword != "vn" && keyword != "vt") continue;
-    while (words >> token) {
-      if (!isPlainNumber(token))
-        fail(where, path, "line " + std::to_string(lineNumber) + ": '" + token + "' in a '" + keyword +
-                              "' line is not a number");
+// The words of one line, up to a '#' comment.
+std::vector<std::string_view> wordsOf(std::string_view line) {
+  std::vector<std::string_view> words;
+  appendWords(line.substr(0, line.find('#')), words);
+  return words;
+}
+
+// A face corner "v", "v/vt", "v//vn" or "v/vt/vn": each index an integer, not 0, within 32 bits
+// (tinyobjloader wraps 4294967299 to 3 without a word).
+bool isCorner(std::string_view corner) {
+  size_t parts = 0;
+  while (true) {
+    const size_t slash = corner.find('/');
+    const std::string_view part = corner.substr(0, slash);
+    if (!part.empty() || parts == 0) {
+      int64_t index = 0;
+      const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), index);
+      if (error != std::errc() || end != part.data() + part.size() || index == 0 || index > INT32_MAX || index < -INT32_MAX)
+        return false;
+    }
+    if (slash == std::string_view::npos) return parts < 3;
+    corner.remove_prefix(slash + 1);
+    ++parts;
+  }
+}
+
+// What tinyobjloader lets through without a word, checked line by line: every number on the v, vn
+// and vt lines is a plain decimal number, a v line has x, y and z, a face has three corners or
+// more and every corner index is one (in 32 bits); and the file is text. Returns the faces' corner
+// counts, in file order (tinyobjloader keeps only their low 8 bits).
+std::vector<uint32_t> checkLines(const std::string& path, const std::string& where) {
+  std::vector<uint32_t> faceSizes;
+  const MappedFile file(path, where);
+  const std::string_view text = file.bytes();
+  if (text.find('\0') != std::string_view::npos)
+    fail(where, path, "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
+  size_t lineNumber = 0;
+  for (size_t start = 0; start < text.size();) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    ++lineNumber;
+    const std::vector<std::string_view> words = wordsOf(text.substr(start, end - start));
+    start = end + 1;
+    if (words.empty()) continue;
+    const std::string at = "line " + std::to_string(lineNumber) + ": ";
+    const std::string_view keyword = words[0];
+    if (keyword == "v" || keyword == "vn" || keyword == "vt") {
+      for (size_t w = 1; w < words.size(); ++w) {
+        if (!isPlainNumber(std::string(words[w])))
+          fail(where, path, at + "'" + std::string(words[w]).substr(0, 40) + "' in a '" + std::string(keyword) + "' line is not a number");
+      }
+      if (keyword == "v" && words.size() < 4)
+        fail(where, path, at + "a 'v' line needs x, y and z, got " + std::to_string(words.size() - 1) + " numbers");
+    } else if (keyword == "f") {
+      if (words.size() < 4) fail(where, path, at + "a face needs 3 corners or more, got " + std::to_string(words.size() - 1));
+      faceSizes.push_back(uint32_t(words.size() - 1));
+      for (size_t w = 1; w < words.size(); ++w) {
+        if (!isCorner(words[w]))
+          fail(where, path, at + "'" + std::string(words[w]).substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
+      }
     }
   }
+  return faceSizes;
 }
 
 ObjData parse(const std::string& path, const std::string& where) {
   if (!std::ifstream(path)) fail(where, path, "cannot open the file");
-  checkNumbers(path, where);
+  const std::vector<uint32_t> faceSizes = checkLines(path, where);
   tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
+  config.triangulate = false;  // polygons are cut by ear clipping (polygon.h), not fanned
   config.vertex_color = false;
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config))
@@ -87,11 +141,21 @@ ObjData parse(const std::string& path, const std::string& where) {
   // tinyobjloader skips a quad with a bad index, with only this warning.
   if (reader.Warning().find("invalid vertex index") != std::string::npos)
     fail(where, path, "a face's vertex index is out of range");
-  ObjData data{reader.GetAttrib().vertices, reader.GetAttrib().normals, {}};
-  for (const tinyobj::shape_t& shape : reader.GetShapes())
+  ObjData data{reader.GetAttrib().vertices, reader.GetAttrib().normals, {}, faceSizes};
+  size_t faces = 0;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     data.corners.insert(data.corners.end(), shape.mesh.indices.begin(), shape.mesh.indices.end());
+    for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++faces) {
+      // tinyobjloader's count is the low 8 bits of ours (a face of 300 corners: 44): ours is kept.
+      if (faces >= faceSizes.size() || uint8_t(faceSizes[faces]) != uint8_t(shape.mesh.num_face_vertices[f]))
+        fail(where, path, "tinyobjloader read the faces differently from the file's 'f' lines");
+    }
+  }
+  size_t corners = 0;
+  for (uint32_t size : faceSizes) corners += size;
+  if (faces != faceSizes.size() || corners != data.corners.size())
+    fail(where, path, "tinyobjloader read the faces differently from the file's 'f' lines");
   if (data.corners.empty()) fail(where, path, "no triangles (no 'f' lines)");
-  assert(data.corners.size() % 3 == 0);
   return data;
 }
 
@@ -149,8 +213,13 @@ Mesh buildMesh(const ObjData& data, bool fileNormals) {
     }
     return it->second;
   };
-  for (size_t k = 0; k < data.corners.size(); k += 3) {
-    mesh.triangles.push_back({vertex(data.corners[k]), vertex(data.corners[k + 1]), vertex(data.corners[k + 2])});
+  std::vector<uint32_t> face;
+  size_t k = 0;
+  for (uint32_t size : data.faceSizes) {
+    face.clear();
+    for (unsigned int c = 0; c < size; ++c) face.push_back(vertex(data.corners[k + c]));
+    k += size;
+    triangulatePolygon(mesh.positions, face, mesh.triangles);
   }
   return mesh;
 }

@@ -6,6 +6,7 @@
 #include "scene/polygon.h"
 #include "scene/scene.h"
 #include "scene/scene_json.h"
+#include "scene/text_words.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,16 +72,22 @@ bool isInteger(Type t) { return t != Type::None && t != Type::Float32 && t != Ty
 
 Header parseHeader(std::string_view bytes, const std::string& path, const std::string& where) {
   Header header;
-  std::istringstream in(std::string(bytes.substr(0, std::min<size_t>(bytes.size(), 1 << 16))));
-  std::string line;
-  for (int lineNumber = 1; std::getline(in, line); ++lineNumber) {
+  const size_t limit = std::min<size_t>(bytes.size(), 1 << 16);
+  size_t at = 0;
+  for (int lineNumber = 1; at < limit; ++lineNumber) {
+    const size_t newline = bytes.find('\n', at);
+    if (newline == std::string_view::npos || newline >= limit) break;
+    std::string line(bytes.substr(at, newline - at));
+    at = newline + 1;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
     const auto bad = [&](const std::string& why) { fail(where, path, "header line " + std::to_string(lineNumber) + ": " + why); };
     if (keyword == "end_header") {
-      header.end = size_t(in.tellg());
+      if (line.find_last_not_of(" \t") + 1 != std::string("end_header").size() || line.rfind("end_header", 0) != 0)
+        bad("'end_header' must be alone on its line");
+      header.end = at;  // the first byte after the line's newline
       if (header.format.empty()) bad("no 'format' line");
       return header;
     }
@@ -181,7 +188,7 @@ class TextCursor {
       if (at_ >= bytes_.size()) bad("the file ends early");
       const size_t end = std::min(bytes_.find('\n', at_), bytes_.size());
       ++line_;
-      split(bytes_.substr(at_, end - at_));
+      appendWords(bytes_.substr(at_, end - at_), tokens_);
       at_ = end + 1;
     }
   }
@@ -208,16 +215,6 @@ class TextCursor {
   void skipList(const Property&, double length) { next_ += size_t(length); }
 
  private:
-  void split(std::string_view line) {
-    size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-      const size_t start = i;
-      while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-      if (i > start) tokens_.push_back(line.substr(start, i - start));
-    }
-  }
-
   [[noreturn]] void bad(const std::string& why) const {
     fail(where_, path_, "line " + std::to_string(line_) + " (element '" + element_->name + "' " + std::to_string(index_) + "): " + why);
   }

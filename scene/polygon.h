@@ -13,8 +13,11 @@ namespace phongvk {
 // Appends to `triangles` the triangles of the polygon whose corners are `corners` (indices into
 // `positions`, in order, at least three), each wound as the polygon is. Ear clipping in the plane
 // that the polygon's Newell normal faces most; where no ear is left (a self-intersecting or
-// degenerate polygon) the sharpest corner is cut, so every polygon of n corners gives n - 2
-// triangles. O(n²) for n corners.
+// degenerate polygon) a corner is cut anyway, so every polygon of n corners gives n - 2
+// triangles. A convex quad is split along its shorter diagonal, as tinyobjloader splits them; a
+// polygon that is star-shaped from its first corner (every convex one, also where rounding makes
+// neighbours collinear) gives that corner's fan, in linear time. Other polygons are cut near-linearly
+// (O(n·r) at worst, for n corners of which r are reflex).
 void triangulatePolygon(const std::vector<glm::vec3>& positions, const std::vector<uint32_t>& corners,
                         std::vector<glm::uvec3>& triangles);
 

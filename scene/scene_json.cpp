@@ -101,6 +101,8 @@ class TreeBuilder : public nlohmann::json_sax<Json> {
 
   bool open(Json container) {
     std::string path = nextPath();
+    if (containers_.size() >= MAX_JSON_DEPTH)
+      fail(path, "nested deeper than " + std::to_string(MAX_JSON_DEPTH) + " levels of objects and arrays");
     containers_.push_back(&insert(std::move(container)));
     paths_.push_back(std::move(path));
     return true;
@@ -155,7 +157,8 @@ Node::Node(const Json& value, std::string path, const std::string& file)
     : value_(&value), path_(std::move(path)), file_(&file) {}
 
 void Node::fail(const std::string& what) const {
-  throw SceneError((file_->empty() ? "" : *file_ + ": ") + (path_.empty() ? "top level" : path_) + ": " + what);
+  throw SceneError((file_->empty() ? "" : *file_ + ": ") + (path_.empty() ? "top level" : path_) + ": " +
+                   shortened(what, 1000));
 }
 
 void Node::failAt(std::string_view key, const std::string& what) const {
@@ -179,8 +182,14 @@ Node Node::element(size_t index) const {
   return Node((*value_)[index], path_ + "[" + std::to_string(index) + "]", *file_);
 }
 
+std::string shortened(std::string_view text, size_t max) {
+  if (text.size() <= max) return std::string(text);
+  return std::string(text.substr(0, max - 3)) + "...";
+}
+
 std::string childPath(const std::string& parent, std::string_view key) {
-  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+  const std::string shown = shortened(key, 64);  // a megabyte key is not echoed whole
+  return parent.empty() ? shown : parent + "." + shown;
 }
 
 void requireObject(const Node& node) {

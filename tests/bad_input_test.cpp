@@ -229,7 +229,7 @@ TEST_F(BadMesh, NoUsableTriangles) {
 TEST_F(BadMesh, BinaryGarbage) {
   std::string garbage = "\x7f" "ELF\x02\x01\x01";
   for (int i = 0; i < 256; ++i) garbage += char(i);
-  EXPECT_EQ(meshError(garbage), prefix() + "no triangles (no 'f' lines)");
+  EXPECT_EQ(meshError(garbage), prefix() + "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
 }
 
 // ---- files ----
@@ -372,6 +372,27 @@ TEST_F(BadCli, OptionsThatCannotApply) {
   expectFailure("diff " + one + " --tolerance -1", 2, "--tolerance");
   expectFailure("render " + one + " --backend cpu --device 0 -o " + out_ + "/x.png", 2,
                 "error: --device 0 selects a Vulkan device, and --backend cpu uses none");
+}
+
+}  // namespace
+}  // namespace phongvk
+
+namespace phongvk {
+namespace {
+
+// Nesting is bounded before anything is built, and messages stay short whatever the file holds: a
+// 200 KB file of 100,000 brackets cost gigabytes when every level kept its full path.
+TEST(BadInputLimits, DeepNestingAndHugeKeysGiveShortErrors) {
+  const std::string deep = R"({"camera": {"position": [1, 0, 0], "look_at": [0, 0, 0]}, "objects": )" +
+                           std::string(100000, '[') + std::string(100000, ']') + "}";
+  const std::string nested = errorFor(deep);
+  EXPECT_EQ(nested.rfind("a.json: objects[0][0][0]", 0), 0u) << nested;
+  EXPECT_NE(nested.find("nested deeper than 64 levels of objects and arrays"), std::string::npos) << nested;
+  EXPECT_LT(nested.size(), 600u);
+  const std::string key(1 << 20, 'k');
+  const std::string unknown = errorFor(sceneWith(R"("objects": [{"shape": "sphere"}], ")" + key + R"(": 1)"));
+  EXPECT_NE(unknown.find("kkk...: unknown key"), std::string::npos) << unknown.substr(0, 200);
+  EXPECT_LT(unknown.size(), 1200u);
 }
 
 }  // namespace

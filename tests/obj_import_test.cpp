@@ -79,7 +79,7 @@ TEST(ObjMesh, BadFilesNameTheJsonPathAndTheFile) {
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -7\n",
                  "a face's vertex index is out of range (the file has 3 vertices)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 9\n",
-                 "a face's vertex index is out of range");
+                 "a face's vertex index is out of range (the file has 4 vertices)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n",
                  "every triangle is degenerate (zero area)");
   // tinyobjloader reads these as 0; they must not become a vertex at the origin.
@@ -89,6 +89,41 @@ TEST(ObjMesh, BadFilesNameTheJsonPathAndTheFile) {
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1e\nf 1//1 2//1 3//1\n",
                  "line 4: '1e' in a 'vn' line is not a number");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt . 0\nf 1 2 3\n", "line 4: '.' in a 'vt' line is not a number");
+  // Silent wrong geometry once: an index that wrapped to 3 or to the last vertex, a missing z read as 0.
+  const std::string three = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expectObjError(three + "f 1 2 4294967299\n",
+                 "line 4: '4294967299' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
+  expectObjError(three + "f 1 2 99999999999999999999\n",
+                 "line 4: '99999999999999999999' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
+  expectObjError("v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", "line 2: a 'v' line needs x, y and z, got 2 numbers");
+  expectObjError(three + "f 1 2\n", "line 4: a face needs 3 corners or more, got 2");
+  expectObjError(three + "f 1 0 2\n", "line 4: '0' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
+  expectObjError(std::string("\xff\xfev\0 \0""0\0", 8), "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
+}
+
+// A thin ring as one concave polygon (as some exporters write it): ear clipping keeps the hole
+// open where a fan from the first corner would fill it.
+TEST(ObjMesh, ConcavePolygonsAreNotFanned) {
+  std::string obj;
+  const int n = 33;  // corners on each circle: outer counter-clockwise, then inner back, joined by a slit
+  for (int i = 0; i <= n; ++i) {
+    const double a = 2 * M_PI * i / n;
+    obj += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+  }
+  for (int i = n; i >= 0; --i) {
+    const double a = 2 * M_PI * i / n;
+    obj += "v " + std::to_string(0.8 * std::cos(a)) + " " + std::to_string(0.8 * std::sin(a)) + " 0\n";
+  }
+  obj += "f";
+  for (int i = 1; i <= 2 * (n + 1); ++i) obj.append(" ").append(std::to_string(i));  // not " " + ...: GCC 12 -Wrestrict
+  const std::string path = test::makeTempDir() + "/ring.obj";
+  test::writeFile(path, obj + "\n");
+  const ObjectMesh m = buildObjectMesh(objObject(path));
+  for (const glm::uvec3& t : m.mesh.triangles) {
+    const glm::vec3 c = (m.mesh.positions[t.x] + m.mesh.positions[t.y] + m.mesh.positions[t.z]) / 3.0f;
+    EXPECT_GT(glm::length(glm::vec2(c)), 0.75f) << "a triangle over the hole";
+  }
+  EXPECT_GE(m.mesh.triangles.size(), size_t(2 * n));
 }
 
 TEST(ObjMesh, PlainNumbersInEveryFormAreRead) {
