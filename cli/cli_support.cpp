@@ -22,6 +22,8 @@ int guarded(const std::function<int()>& command) {
     return command();
   } catch (const SceneError& e) {
     return report(e, EXIT_BAD_INPUT);
+  } catch (const OutputWriteError& e) {
+    return report(e, EXIT_FAILURE_OTHER);
   } catch (const OutputError& e) {
     return report(e, EXIT_BAD_INPUT);
   } catch (const UsageError& e) {

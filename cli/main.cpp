@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <string>
 
@@ -56,6 +57,9 @@ int rejectUnknownCommand(CLI::App& app, int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) then fails the write with EFBIG, which the writer reports and
+  // cleans up after, instead of killing the process and leaving a temporary file behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"phongvk: Phong illumination per vertex, Gouraud interpolation, on Vulkan compute or the CPU reference"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("phongvk ") + phongvk::version() + " (" + phongvk::revision() + ")");
@@ -63,7 +67,7 @@ int main(int argc, char** argv) {
   RenderOptions render;
   CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to PNG");
   addViewOptions(renderCmd, render);
-  renderCmd->add_option("-o,--output", render.output, "Output PNG")->required();
+  renderCmd->add_option("-o,--output", render.output, "Output PNG ('-': standard output, the summary then goes to standard error)")->required();
   addBackendOption(renderCmd, render.backend, true);
   renderCmd->add_option("--repeat", render.repeat, "Time N frames after a warm-up and print the median")
       ->check(CLI::Range(1, 100000));

@@ -9,7 +9,7 @@ namespace {
 
 // --repeat: N timed frames after one warm-up: wall clock per frame and device time, and on the
 // compute backend the median device time of each pass, so a user sees where a frame goes.
-void printRepeatTiming(const std::vector<FrameTime>& frames, Backend backend) {
+void printRepeatTiming(const std::vector<FrameTime>& frames, Backend backend, FILE* out) {
   std::vector<double> wall, device, shade, raster, resolve;
   for (const FrameTime& f : frames) {
     wall.push_back(f.wallMs);
@@ -20,11 +20,11 @@ void printRepeatTiming(const std::vector<FrameTime>& frames, Backend backend) {
   }
   double sum = 0;
   for (double ms : wall) sum += ms;
-  std::printf("frame ms: median %.3f (device %.3f, min %.3f, max %.3f, mean %.3f)\n", median(wall), median(device),
+  std::fprintf(out, "frame ms: median %.3f (device %.3f, min %.3f, max %.3f, mean %.3f)\n", median(wall), median(device),
               *std::min_element(wall.begin(), wall.end()), *std::max_element(wall.begin(), wall.end()),
               sum / double(wall.size()));
   if (backend != Backend::Gpu) return;
-  std::printf("device ms by pass: shade %.3f, raster %.3f, resolve %.3f (medians)\n", median(shade), median(raster),
+  std::fprintf(out, "device ms by pass: shade %.3f, raster %.3f, resolve %.3f (medians)\n", median(shade), median(raster),
               median(resolve));
 }
 
@@ -56,18 +56,19 @@ std::string startupText(const RendererStats& stats, Backend backend) {
 int runRender(const RenderOptions& options) {
   return guarded([&] {
     checkWritable(options.output);
+    FILE* out = options.output == "-" ? stderr : stdout;  // standard output carries the PNG then
     const auto start = Clock::now();
     const Scene scene = loadEveryFrameValidated(options);
     const double loadMs = msSince(start);
     const auto renderStart = Clock::now();
     Renderer renderer(rendererOptions(options, options.backend));
-    if (options.repeat > 0) printRepeatTiming(renderer.timeFrames(scene, options.repeat), renderer.backend());
+    if (options.repeat > 0) printRepeatTiming(renderer.timeFrames(scene, options.repeat), renderer.backend(), out);
     const Image image = renderer.render(scene);
     const RendererStats stats = renderer.stats();
     // Building the meshes counts as loading the scene, as the summary has always said.
     const double renderMs = msSince(renderStart) - stats.buildMs;
     writePng(options.output, image, options.pngLevel);
-    std::printf("rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms%s"
+    std::fprintf(out, "rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms%s"
                 " -> %s\n",
                 options.scene.c_str(), image.width, image.height, scene.objectCount(), stats.triangles,
                 scene.lightCount(), describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,

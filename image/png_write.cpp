@@ -3,6 +3,7 @@
 // smooth shading into runs of zeros, then the whole image is deflated in one call: at level 1 by
 // the run-only coder (deflate_runs.h), at the others by libdeflate (docs/DECISIONS.md "PNG levels").
 #include "image/deflate_runs.h"
+#include "image/output_file.h"
 #include "phongvk/errors.h"
 #include "phongvk/image.h"
 
@@ -63,32 +64,6 @@ void checkImage(const Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.rgb.size() != size_t(image.width) * image.height * 3) {
     throw std::invalid_argument("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                 " image holding " + std::to_string(image.rgb.size()) + " bytes as PNG");
-  }
-}
-
-[[noreturn]] void fail(const std::string& path, const std::string& why) {
-  throw OutputError("cannot write '" + path + "': " + why);
-}
-
-// Writes `bytes` to a temporary file beside `path`, then renames it into place.
-void writeAtomically(const std::string& path, const std::vector<uint8_t>& bytes) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path temp =
-      target.parent_path() / (target.filename().string() + ".tmp-" + std::to_string(getpid()));
-  FILE* file = std::fopen(temp.c_str(), "wb");
-  if (!file) fail(path, std::strerror(errno));
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  const int writeErrno = errno;
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) {
-    std::filesystem::remove(temp);
-    fail(path, std::strerror(written ? errno : writeErrno));
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::filesystem::remove(temp);
-    fail(path, ec.message());
   }
 }
 
@@ -155,29 +130,15 @@ void PngEncoder::write(const std::string& path, const Image& image) {
   try {
     png = &encode(image);
   } catch (const std::exception& e) {
-    fail(path, e.what());
+    throw OutputError("cannot write '" + path + "': " + e.what());
   }
-  writeAtomically(path, *png);
+  writeOutputFile(path, *png);
 }
 
 std::vector<uint8_t> encodePng(const Image& image, int level) { return PngEncoder(level).encode(image); }
 
 void writePng(const std::string& path, const Image& image, int level) { PngEncoder(level).write(path, image); }
 
-void checkWritable(const std::string& path) {
-  if (path.empty()) return;
-  std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  if (folder.empty()) folder = ".";
-  if (std::filesystem::exists(folder) && !std::filesystem::is_directory(folder)) {
-    throw OutputError("cannot write '" + path + "': '" + folder.string() + "' is a file, not a folder");
-  }
-  if (!std::filesystem::is_directory(folder)) {
-    throw OutputError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
-  }
-  if (access(folder.c_str(), W_OK) != 0) {
-    throw OutputError("cannot write '" + path + "': folder '" + folder.string() + "' is not writable");
-  }
-  if (std::filesystem::is_directory(path)) throw OutputError("cannot write '" + path + "': it is a folder");
-}
+void checkWritable(const std::string& path) { checkOutputPath(path); }
 
 }  // namespace phongvk

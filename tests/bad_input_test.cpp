@@ -4,12 +4,18 @@
 // broken OBJ files, unreadable and odd files, and the CLI's exit codes and output files.
 #include "scene/scene.h"
 #include "scene/scene_data.h"
+#include "phongvk/image.h"
 
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -393,6 +399,62 @@ TEST(BadInputLimits, DeepNestingAndHugeKeysGiveShortErrors) {
   const std::string unknown = errorFor(sceneWith(R"("objects": [{"shape": "sphere"}], ")" + key + R"(": 1)"));
   EXPECT_NE(unknown.find("kkk...: unknown key"), std::string::npos) << unknown.substr(0, 200);
   EXPECT_LT(unknown.size(), 1200u);
+}
+
+}  // namespace
+}  // namespace phongvk
+
+namespace phongvk {
+namespace {
+
+// Output paths that are not plain files: written through (symbolic links), into (character
+// devices), refused (FIFOs), or reported with the system's reason and cleaned up after (a full
+// device, a file-size limit). The device nodes are made here, in a temporary folder, never the
+// system's own.
+TEST_F(BadCli, OutputPathsThatAreNotPlainFiles) {
+  const std::string one = scene("one_pixel.json") + " --backend cpu -o ";
+  const std::string dir = test::makeTempDir();
+  ASSERT_EQ(mkfifo((dir + "/fifo").c_str(), 0644), 0);
+  const test::CommandResult fifo = test::runCli("render " + one + dir + "/fifo");
+  EXPECT_EQ(fifo.exitCode, 2) << fifo.output;
+  EXPECT_NE(fifo.output.find("it is a FIFO (named pipe), not a regular file"), std::string::npos) << fifo.output;
+  EXPECT_TRUE(fs::is_fifo(dir + "/fifo"));
+
+  if (mknod((dir + "/null").c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0 ||
+      mknod((dir + "/full").c_str(), S_IFCHR | 0666, makedev(1, 7)) != 0)
+    GTEST_SKIP() << "making device nodes needs root (CI runs as root): " << std::strerror(errno);
+  const test::CommandResult null = test::runCli("render " + one + dir + "/null");
+  EXPECT_EQ(null.exitCode, 0) << null.output;
+  EXPECT_TRUE(fs::is_character_file(dir + "/null"));
+  const test::CommandResult full = test::runCli("render " + one + dir + "/full");
+  EXPECT_EQ(full.exitCode, 4) << full.output;
+  EXPECT_NE(full.output.find("cannot write '" + dir + "/full': No space left on device"), std::string::npos) << full.output;
+  EXPECT_TRUE(fs::is_character_file(dir + "/full"));
+  EXPECT_EQ(filesIn(dir).size(), 3u);  // fifo, null, full: no temporary file left
+}
+
+TEST_F(BadCli, LinksLongNamesLimitsAndStandardOutput) {
+  const std::string one = scene("one_pixel.json") + " --backend cpu -o ";
+  fs::create_symlink("target.png", out_ + "/link.png");
+  EXPECT_EQ(test::runCli("render " + one + out_ + "/link.png").exitCode, 0);
+  EXPECT_TRUE(fs::is_symlink(out_ + "/link.png"));  // written through, not replaced
+  EXPECT_EQ(readPng(out_ + "/target.png").width, 1);
+  const std::string longName = std::string(251, 'a') + ".png";  // 255 characters, NAME_MAX
+  EXPECT_EQ(test::runCli("render " + one + out_ + "/" + longName).exitCode, 0);
+  EXPECT_TRUE(fs::exists(out_ + "/" + longName));
+  // A file-size limit (ulimit -f: 1 block) stops the write with EFBIG: exit 4, no temporary file.
+  const std::string shell = "ulimit -f 1; '" + std::string(PHONGVK_CLI) + "' render '" +
+                            test::sourcePath("scenes/basic.json") + "' --backend cpu -o '" + out_ + "/big.png' 2>&1";
+  FILE* pipe = popen(("bash -c \"" + shell + "\"").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[512];
+  std::string output;
+  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  EXPECT_EQ(WEXITSTATUS(pclose(pipe)), 4) << output;
+  EXPECT_NE(output.find("File too large"), std::string::npos) << output;
+  EXPECT_EQ(filesIn(out_).size(), 3u) << "link, target and the long name only";
+  const test::CommandResult toStdout = test::runCli("render " + one + "- 2>/dev/null | head -c 8 | od -c | head -1");
+  EXPECT_NE(toStdout.output.find("P   N   G"), std::string::npos) << toStdout.output;
 }
 
 }  // namespace

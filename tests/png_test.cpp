@@ -235,7 +235,7 @@ TEST(FrameWriter, AFailedWriteIsRethrownNamingTheFileAndStopsTheRest) {
     for (int i = 1; i < 1000; ++i) writer.push({i, dir + "/f" + std::to_string(i) + ".png", shaded(32, 32)});
     writer.finish();
   });
-  EXPECT_EQ(message, "cannot write '" + missing + "': No such file or directory");
+  EXPECT_EQ(message, "cannot write '" + missing + "': folder '" + std::filesystem::path(missing).parent_path().string() + "' does not exist");
   EXPECT_EQ(thrownMessage<OutputError>([&] { writer.finish(); }), message);
 }
 

@@ -16,11 +16,18 @@ class PHONGVK_API SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// An output file that cannot be written (missing folder, permissions, full disk). Nothing partial
-// is left behind.
+// An output file that cannot be written (missing folder, permissions, a FIFO in the way). Nothing
+// partial is left behind.
 class PHONGVK_API OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+};
+
+// Writing an output file failed on the way (a full disk, a file-size limit, /dev/full); the
+// message has the system's reason. Nothing partial is left behind.
+class PHONGVK_API OutputWriteError : public OutputError {
+ public:
+  using OutputError::OutputError;
 };
 
 // No usable Vulkan driver or device (or not the one asked for); what() lists every device and

@@ -65,9 +65,11 @@ class PHONGVK_API PngEncoder {
   // The PNG bytes, valid until the next call. Throws std::invalid_argument for an image whose
   // size and pixel count disagree.
   const std::vector<uint8_t>& encode(const Image& image);
-  // Encodes and writes the file atomically: a temporary file in the same folder, then a rename,
-  // so a failed or interrupted write never leaves a partial file. Throws OutputError naming the
-  // path and the reason.
+  // Encodes and writes the file: atomically (a temporary file in the same folder, then a rename,
+  // so a failed or interrupted write never leaves a partial file), through symbolic links, straight
+  // into a character device such as /dev/null, to standard output for "-"; a FIFO, socket or block
+  // device is refused, never replaced. Throws OutputError naming the path and the reason
+  // (OutputWriteError when the writing itself fails).
   void write(const std::string& path, const Image& image);
 
  private:
@@ -80,8 +82,8 @@ PHONGVK_API std::vector<uint8_t> encodePng(const Image& image, int level = PNG_L
 PHONGVK_API void writePng(const std::string& path, const Image& image, int level = PNG_LEVEL_DEFAULT);
 
 // Throws OutputError, naming the reason, when a file at `path` could not be written (its folder is
-// missing, not a folder or not writable, or the path is a folder); call it before long work. An
-// empty path is fine (nothing to write).
+// missing, not a folder or not writable, or the path is a folder, FIFO, socket or block device);
+// call it before long work. An empty path and "-" (standard output) are fine.
 PHONGVK_API void checkWritable(const std::string& path);
 
 // Reads a PNG as 8-bit RGB. Throws std::runtime_error naming the path.
