@@ -7,13 +7,16 @@
 #include "cli/cli_support.h"
 #include "phongvk/frame_writer.h"
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
-#include <unistd.h>
 #include <vector>
 
 namespace phongvk::cli {
@@ -107,10 +110,11 @@ class FrameOutputs {
 
   const Progress& progress() const { return progress_; }
 
-  // Waits for every frame's file, then writes the sheet.
-  void finish() {
+  // Waits for every frame's file, then writes the sheet (not for an interrupted sequence: it would
+  // lack frames).
+  void finish(bool interrupted = false) {
     writer_.finish();
-    if (options_.sheet.empty()) return;
+    if (options_.sheet.empty() || interrupted) return;
     std::sort(thumbnails_.begin(), thumbnails_.end(),
               [](const Thumbnail& a, const Thumbnail& b) { return a.frame < b.frame; });
     writePng(options_.sheet, contactSheet(thumbnails_, sheetColumns(int(thumbnails_.size()))), options_.pngLevel);
@@ -210,7 +214,33 @@ std::string framePath(const std::string& dir, int index, int frameCount) {
   return (std::filesystem::path(dir) / name).string();
 }
 
+// SIGINT or SIGTERM while the frames render: the sequence stops after the frame in flight.
+std::atomic<int> interruptedBy{0};
+
+extern "C" void onInterrupt(int signal) { interruptedBy = signal; }
+
+// Catches SIGINT and SIGTERM for its lifetime (the default dispositions come back after).
+class InterruptGuard {
+ public:
+  InterruptGuard() {
+    interruptedBy = 0;
+    struct sigaction action {};
+    action.sa_handler = onInterrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &oldInt_);
+    sigaction(SIGTERM, &action, &oldTerm_);
+  }
+  ~InterruptGuard() {
+    sigaction(SIGINT, &oldInt_, nullptr);
+    sigaction(SIGTERM, &oldTerm_, nullptr);
+  }
+
+ private:
+  struct sigaction oldInt_ {}, oldTerm_ {};
+};
+
 int runSequence(const SequenceOptions& options) {
+  const InterruptGuard interrupts;
   return guarded([&] {
     const auto start = Clock::now();
     const Scene sequence = loadScene(options.scene);
@@ -219,12 +249,21 @@ int runSequence(const SequenceOptions& options) {
     prepareOutputs(options, sequence.frameCount());
     Renderer renderer(rendererOptions(options, options.backend));
     FrameOutputs outputs(options, sequence.frameCount(), range.count());
-    for (size_t k = 0; k < frames.size(); ++k) {
+    size_t rendered = 0;
+    for (; rendered < frames.size() && interruptedBy == 0; ++rendered) {
       Image image = outputs.spareImage();
-      renderer.render(frames[k], image);
-      outputs.add(int(range.start + int64_t(k) * range.step), std::move(image));
+      renderer.render(frames[rendered], image);
+      outputs.add(int(range.start + int64_t(rendered) * range.step), std::move(image));
     }
-    outputs.finish();
+    outputs.finish(interruptedBy != 0);  // every frame rendered is written whole
+    if (const int signal = interruptedBy) {
+      std::fprintf(stderr,
+                   "sequence %s: interrupted (%s) after %zu of %d frames, each written whole to %s; run the same "
+                   "command again to complete the set\n",
+                   options.scene.c_str(), signal == SIGINT ? "SIGINT" : "SIGTERM", rendered, range.count(),
+                   options.outputDir.c_str());
+      return 128 + signal;
+    }
     printSummary(options, range, frames[0], backendSummary(renderer, range.count()), renderer.stats().sceneBuilds,
                  msSince(start), outputs.progress().steadyFramesPerSecond());
     return int(EXIT_OK);

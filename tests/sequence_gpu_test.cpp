@@ -202,5 +202,40 @@ TEST(SequenceCli, SceneErrorInALaterFrameWritesNothing) {
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
+// SIGINT (or SIGTERM) stops a long sequence after the frame in flight: exit 128 + the signal, a
+// message saying how far it got, every frame file whole, no temporary file and no sheet; the same
+// command again completes the set.
+TEST(SequenceCli, InterruptedSequenceLeavesOnlyWholeFramesAndSaysHowFar) {
+  const std::string dir = test::makeTempDir();
+  const std::string scene = test::sourcePath("scenes/paper/fig7_orbit_white_red.json");
+  const std::string frames = dir + "/frames";
+  // In the background, interrupted once its second frame is on disk.
+  const std::string script = "'" + std::string(PHONGVK_CLI) + "' sequence '" + scene + "' -o '" + frames +
+                             "' --backend cpu --sheet '" + dir + "/sheet.png' > '" + dir + "/log' 2>&1 & pid=$!; " +
+                             "while [ ! -e '" + frames + "/frame_0001.png' ]; do sleep 0.05; done; kill -INT $pid; " +
+                             "wait $pid; echo exit=$?";
+  test::writeFile(dir + "/interrupt.sh", script + "\n");
+  FILE* pipe = popen(("bash '" + dir + "/interrupt.sh'").c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[256];
+  std::string output;
+  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  pclose(pipe);
+  EXPECT_NE(output.find("exit=130"), std::string::npos) << output;
+  std::ifstream logFile(dir + "/log");
+  const std::string log((std::istreambuf_iterator<char>(logFile)), std::istreambuf_iterator<char>());
+  EXPECT_NE(log.find("interrupted (SIGINT) after "), std::string::npos) << log;
+  EXPECT_NE(log.find(" of 120 frames, each written whole"), std::string::npos) << log;
+  size_t written = 0;
+  for (const auto& entry : fs::directory_iterator(frames)) {
+    EXPECT_EQ(entry.path().extension(), ".png") << entry.path();  // no temporary file
+    EXPECT_EQ(readPng(entry.path().string()).width, 1385) << entry.path();  // each one whole
+    ++written;
+  }
+  EXPECT_GE(written, 2u);
+  EXPECT_LT(written, 120u);
+  EXPECT_FALSE(fs::exists(dir + "/sheet.png"));
+}
+
 }  // namespace
 }  // namespace phongvk
