@@ -18,8 +18,12 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 namespace phongvk {
@@ -29,6 +33,28 @@ constexpr int kMaxNodeDepth = 256;  // deeper (or cyclic) node trees are refused
 
 [[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
   throw SceneError(where + ": " + path + ": " + why);
+}
+
+// Whether a file tinygltf looks for is there, without opening it (tinygltf's own check opens it).
+bool isRegularFile(const std::string& path, void*) {
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+// The file itself and any buffer it names: regular files only (a buffer URI naming a FIFO would
+// block the read forever, a device would never end), read whole.
+bool readRegularFile(std::vector<unsigned char>* out, std::string* error, const std::string& path, void*) {
+  if (!isRegularFile(path, nullptr)) {
+    if (error) *error += "'" + path + "' is not a readable regular file\n";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (in.bad()) {
+    if (error) *error += "cannot read '" + path + "'\n";
+    return false;
+  }
+  return true;
 }
 
 // Images are not needed: textures are not rendered.
@@ -231,6 +257,7 @@ class Reader {
 Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std::string& where) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skipImage, nullptr);
+  loader.SetFsCallbacks({isRegularFile, tinygltf::ExpandFilePath, readRegularFile, tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string error, warning;
   const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)

@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <bit>
 #include <cstring>
 #include <filesystem>
@@ -357,6 +359,14 @@ TEST(MeshFiles, BadFilesNameTheSceneTheJsonPathAndTheFile) {
     EXPECT_EQ(message.rfind("scene.json: objects[1].file", 0), 0u) << message;
     EXPECT_NE(message.find(name), std::string::npos) << message;
   }
+  // A buffer that names a FIFO: refused, not read (the read would wait for a writer forever).
+  ASSERT_EQ(mkfifo((dir + "/fifo.bin").c_str(), 0644), 0);
+  writeFile(dir + "/fifo.gltf", R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "accessors": [{"bufferView": 0, "componentType": 5126,
+    "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}], "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "buffers": [{"byteLength": 36, "uri": "fifo.bin"}]})");
+  const std::string fifo = thrownMessage<SceneError>([&] { loaded(dir + "/fifo.gltf"); });
+  EXPECT_NE(fifo.find("not a valid glTF file"), std::string::npos) << fifo;
   std::filesystem::create_directory(dir + "/folder.ply");
   const CommandResult cli = runCli("render '" + dir + "/folder.ply' -o '" + dir + "/out.png'");
   EXPECT_EQ(cli.exitCode, 2) << cli.output;
