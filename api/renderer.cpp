@@ -4,6 +4,7 @@
 #include "api/timing.h"
 #include "scene/camera.h"
 #include "scene/camera_fit.h"
+#include "scene/memory_estimate.h"
 
 #include <cmath>
 #include <limits>
@@ -30,6 +31,8 @@ void Renderer::Impl::prepare(const Scene& scene) {
     // A backend's buffers are sized for the counts it was built with.
     if (data_->materials.size() == materials && data_->lights.size() == lights) return;
   }
+  const View view = makeView(spec.camera);
+  checkSceneMemory(spec, uint64_t(view.width) * uint64_t(view.height));
   const auto start = Clock::now();
   data_.reset();  // the old meshes go before the new ones are built
   data_ = buildSceneData(spec);
@@ -125,5 +128,7 @@ DiffResult diff(const Scene& scene, Renderer& renderer) {
   result.stats = compareImages(result.reference.image, result.gpu.image, result.reference.keys, result.gpu.keys);
   return result;
 }
+
+void setMemoryLimit(uint64_t bytes) { setSceneMemoryLimit(bytes); }
 
 }  // namespace phongvk

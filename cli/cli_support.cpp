@@ -53,6 +53,8 @@ Scene loadEveryFrameValidated(const ViewOptions& options) {
 }
 
 RendererOptions rendererOptions(const ViewOptions& options, const std::string& backend) {
+  // The scene memory limit goes with the renderer, which checks every scene against it.
+  if (options.maxMemoryGb > 0) setMemoryLimit(uint64_t(options.maxMemoryGb * double(uint64_t(1) << 30)));
   const Backend chosen = parseBackend(backend);
   if (chosen == Backend::Cpu && options.device >= 0)
     throw UsageError("--device " + std::to_string(options.device) + " selects a Vulkan device, and --backend cpu uses none");

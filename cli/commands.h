@@ -22,6 +22,7 @@ struct ViewOptions {
   int width = 0;        // with height: overrides the scene camera's image size
   int height = 0;
   int device = -1;      // Vulkan device index, -1 = best
+  double maxMemoryGb = 0;  // --max-memory-gb: the scene memory limit (0: the default, setMemoryLimit)
   bool validate = false;
   int pngLevel = PNG_LEVEL_DEFAULT;  // deflate level of every PNG the command writes
 };

@@ -24,6 +24,9 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
   command->add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")
       ->check(CLI::NonNegativeNumber);
   command->add_flag("--validate", options.validate, "Enable the Vulkan validation layers");
+  command->add_option("--max-memory-gb", options.maxMemoryGb,
+                      "Memory a scene may take, in GiB (default: the machine's memory, or PHONGVK_MAX_MEMORY_GB)")
+      ->check(CLI::PositiveNumber);
   command->add_option("--png-level", options.pngLevel,
                       "PNG deflate level: 0 (stored, largest) to 12 (smallest, slowest); the same pixels at every "
                       "level (default " + std::to_string(phongvk::PNG_LEVEL_DEFAULT) + ", the fastest)")

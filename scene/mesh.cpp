@@ -52,7 +52,8 @@ void checkParameters(const Object& object) {
   }
 }
 
-// The primitive's triangle count before subdivision (64-bit: segments can be large).
+}  // namespace
+
 uint64_t baseTriangles(const Object& object) {
   const uint64_t s = uint64_t(object.segments);
   switch (object.shape) {
@@ -66,6 +67,8 @@ uint64_t baseTriangles(const Object& object) {
   }
   return 0;
 }
+
+namespace {
 
 void checkSize(const Object& object, uint64_t triangles) {
   uint64_t total = triangles;

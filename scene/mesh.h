@@ -28,6 +28,10 @@ struct ObjectMesh {
   bool closed = true;                // back faces may be culled
 };
 
+// A primitive's triangle count before subdivision (64-bit: segments can be large); 0 for a
+// polyhedron or a mesh, known once built.
+uint64_t baseTriangles(const Object& object);
+
 // Builds the object's mesh: primitive or hull or mesh file, then `subdivide` levels, then the
 // object's transform (mesh_transform.h).
 // Throws SceneError (naming object.jsonPath) for input that cannot make a mesh.

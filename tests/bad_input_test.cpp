@@ -459,3 +459,29 @@ TEST_F(BadCli, LinksLongNamesLimitsAndStandardOutput) {
 
 }  // namespace
 }  // namespace phongvk
+
+namespace phongvk {
+namespace {
+
+// A scene too large for the memory it may use fails before anything is built (so in well under a
+// second, without allocating it), naming the estimate, the limit and the objects that take most.
+TEST_F(BadCli, SceneBeyondTheMemoryLimitFailsBeforeBuilding) {
+  std::string objects;
+  for (int i = 0; i < 6; ++i) {
+    objects += std::string(i ? ", " : "") + R"({"shape": "icosphere", "center": [0, )" + std::to_string(i) + R"(, 0], "subdivide": 10})";
+  }
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/six.json", sceneWith(R"("objects": [)" + objects + "]"));
+  const std::string message = "error: " + dir + "/six.json: the scene needs about 13.2 GiB (125829120 triangles, ";
+  expectFailure("render " + dir + "/six.json --max-memory-gb 6 -o " + out_ + "/x.png", 2, message);
+  expectFailure("render " + dir + "/six.json --max-memory-gb 6 -o " + out_ + "/x.png", 2,
+                "more than the 6.0 GiB limit (by default the machine's memory; PHONGVK_MAX_MEMORY_GB or --max-memory-gb "
+                "sets it); most of it: objects[0] (20971520 triangles), objects[1] (20971520 triangles), objects[2]");
+  const test::CommandResult env = test::runCliWithEnvironment(
+      "PHONGVK_MAX_MEMORY_GB=2", "diff " + dir + "/six.json");
+  EXPECT_EQ(env.exitCode, 2) << env.output;
+  EXPECT_NE(env.output.find("more than the 2.0 GiB limit"), std::string::npos) << env.output;
+}
+
+}  // namespace
+}  // namespace phongvk

@@ -210,7 +210,8 @@ TEST(SequenceCli, InterruptedSequenceLeavesOnlyWholeFramesAndSaysHowFar) {
   const std::string scene = test::sourcePath("scenes/paper/fig7_orbit_white_red.json");
   const std::string frames = dir + "/frames";
   // In the background, interrupted once its second frame is on disk.
-  const std::string script = "'" + std::string(PHONGVK_CLI) + "' sequence '" + scene + "' -o '" + frames +
+  std::string script(1, '\'');  // appended, not "'" + ...: GCC 12 warns (-Wrestrict)
+  script += std::string(PHONGVK_CLI) + "' sequence '" + scene + "' -o '" + frames +
                              "' --backend cpu --sheet '" + dir + "/sheet.png' > '" + dir + "/log' 2>&1 & pid=$!; " +
                              "while [ ! -e '" + frames + "/frame_0001.png' ]; do sleep 0.05; done; kill -INT $pid; " +
                              "wait $pid; echo exit=$?";

@@ -180,4 +180,9 @@ PHONGVK_API DiffResult diff(const Scene& scene, Renderer& renderer);
 // The middle value (the mean of the two middle ones for an even count); NaN for no values.
 PHONGVK_API double median(std::vector<double> values);
 
+// The memory a scene may take, estimated before anything is built (about 112 bytes a triangle and
+// 32 a pixel); a scene beyond it fails with SceneError naming the objects that take most. Default:
+// the machine's physical memory, or the environment's PHONGVK_MAX_MEMORY_GB. 0 restores the default.
+PHONGVK_API void setMemoryLimit(uint64_t bytes);
+
 }  // namespace phongvk
