@@ -106,7 +106,8 @@ const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) con
   return pipelines_.at(pipelineKey(request.pass, request.specs));
 }
 
-// Every pass's pipeline for frames with these materials, lights and interpolation mode. Frames
+// Every pass's pipeline for frames with these materials, lights and interpolation mode, and the
+// resolve passes for the bins' lists taken in chunks once a frame needed it (listChunk_). Frames
 // with keys (for diffs) compile their own resolve pipelines when first asked for: resolve keeps
 // the final keys and writes the colour buffer (RESOLVE_OUTPUT_KEEP_KEYS) after the background
 // pass. Without keys the colours go to the key slots, where the host reads them (colorsInKeys_) or
@@ -123,6 +124,9 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
       {RESOLVE_LARGE,
        {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
   };
+  if (listChunk_ != 0u) {  // only then: every other frame keeps the pipelines (and cache entries) it had
+    for (Pass pass : {RESOLVE_SMALL, RESOLVE_LARGE}) requests[pass].specs.push_back({SPEC_LIST_CHUNK, listChunk_});
+  }
   if (binPass_) requests.push_back({BIN_LARGE, {}});
   if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background
   if (packsColors(withKeys)) requests.push_back({PACK, {}});

@@ -16,6 +16,11 @@ uint32_t colorWords(uint32_t width, uint32_t height) { return groupCount(3 * wid
 
 }  // namespace
 
+void GpuRenderer::bindPass(VkCommandBuffer cmd, Pass pass) const {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].layout, 0, 1, &set_, 0, nullptr);
+}
+
 void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   resetTimestamps(cmd, timestamps_);
   if (keysDirty_) vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
@@ -30,10 +35,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, clipList_.buffer, 0, sizeof noClipping, &noClipping);
   transferToComputeBarrier(cmd);
 
-  auto bind = [&](Pass pass) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].layout, 0, 1, &set_, 0, nullptr);
-  };
+  auto bind = [&](Pass pass) { bindPass(cmd, pass); };
   writeTimestamp(cmd, timestamps_, 0);
   const uint32_t cap = control_.groupCap;
   const uint32_t words = colorWords(frame_.width, frame_.height);
@@ -59,16 +61,29 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 2);
-  // Small reads the keys large left. The barrier after the last one also keeps lavapipe from
-  // writing the next timestamp before the dispatch ends.
-  for (Pass pass : {RESOLVE_LARGE, RESOLVE_SMALL}) {
-    bind(pass);
-    vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
-    computeBarrier(cmd);
-  }
+  recordResolveLargeRound(cmd);
+  if (listChunk_ == 0u) recordResolveTail(cmd);  // else after the rounds (renderAttempt)
+}
+
+// Resolve over the touched bins (indirect): the large triangles, all of them or (listChunk_) the
+// next chunk of each bin's list.
+void GpuRenderer::recordResolveLargeRound(VkCommandBuffer cmd) {
+  bindPass(cmd, RESOLVE_LARGE);
+  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+  computeBarrier(cmd);
+}
+
+// The rest of the frame after resolve_large: small reads the keys large left, then the pack pass
+// and, for diffs, the keys' copy. The barrier after each dispatch also keeps lavapipe from writing
+// the next timestamp before the dispatch ends.
+void GpuRenderer::recordResolveTail(VkCommandBuffer cmd) {
+  bindPass(cmd, RESOLVE_SMALL);
+  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+  computeBarrier(cmd);
   if (packsColors(withKeys_)) {  // the colours from the key slots into the colour buffer
-    bind(PACK);
-    vkCmdDispatch(cmd, std::min(groupCount(words, PACK_GROUP_SIZE), cap), 1, 1);
+    bindPass(cmd, PACK);
+    vkCmdDispatch(cmd, std::min(groupCount(colorWords(frame_.width, frame_.height), PACK_GROUP_SIZE), control_.groupCap),
+                  1, 1);
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 3);

@@ -28,6 +28,7 @@ uint32_t groupCapFor(const VulkanContext& context) {
 GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, const GpuRendererOptions& options)
     : context_(context), exactFloats_(options.exactFloats ? *options.exactFloats : probeFloatOps(context).useExact()) {
   groupCap_ = options.firstGroupCap != 0 ? std::min(options.firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
+  listChunk_ = options.firstListChunk;
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool cpuLayout = options.layout == WorkLayout::Cpu || (options.layout == WorkLayout::Auto && cpu);
   resolveTiles_ = cpuLayout ? 1u : 8u;
@@ -80,8 +81,7 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image sto
   uploadFrame(in);
   selectPipelines(in);
   if (!frameColorsInKeys_) ensureColorBuffer(true);
-  while (!renderAttempt()) {
-  }
+  while (!renderAttempt()) selectPipelines(in);  // the lists may now be taken in chunks (prepareRetry)
 
   RenderOutput out;
   out.image = readImage(std::move(storage));
@@ -93,7 +93,9 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image sto
 }
 
 // Renders the uploaded frame once; false when it must be rendered again (prepareRetry has grown
-// what it lacked).
+// what it lacked). With the bins' lists taken in chunks (listChunk_), the first submission ends
+// after resolve_large's first round; the rounds it asks for (STATUS_MORE_ROUNDS) are submitted one
+// by one, then the rest of the frame.
 bool GpuRenderer::renderAttempt() {
   auto* status = static_cast<FrameStatus*>(status_.mapped);
   *status = {};  // coherent memory: the device sees it at submission
@@ -103,15 +105,31 @@ bool GpuRenderer::renderAttempt() {
   // its colours, unless the host resets those as it reads them (readImage; the pack pass does not).
   keysDirty_ = true;
   submitAndWait(context_, cmd);
+  if (listChunk_ != 0u) {
+    while (status->flags == STATUS_MORE_ROUNDS) submitResolveRound(&GpuRenderer::recordResolveLargeRound);
+    if (status->flags == 0u) submitResolveRound(&GpuRenderer::recordResolveTail);
+  }
   readTimes();
   if (status->flags == 0u) return true;
   prepareRetry(status->flags);
   return false;
 }
 
+// One more submission of the frame's resolve (listChunk_): the status cleared, then what `record`
+// records, after a barrier on everything submitted before it.
+void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer)) {
+  *static_cast<FrameStatus*>(status_.mapped) = {};
+  VkCommandBuffer cmd = beginOneTimeCommands(context_);
+  computeBarrier(cmd);
+  (this->*record)(cmd);
+  submitAndWait(context_, cmd);
+}
+
 // Makes room for what the last attempt lacked (STATUS_* flags): twice the large triangles' lists,
-// or 16 times the workgroups per pass. The attempt's keys and colours are thrown away, and the
-// next one transforms and relights the vertices (a cut-short shade pass may have left some out).
+// or 16 times the workgroups per pass, or, with the most workgroups, the bins' lists taken in
+// chunks of LIST_CHUNK_FIRST entries and then a quarter as many each time (gpu_layout.h). The
+// attempt's keys and colours are thrown away, and the next one transforms and relights the
+// vertices (a cut-short shade pass may have left some out). The new sizes are kept for later frames.
 void GpuRenderer::prepareRetry(uint32_t statusFlags) {
   if (statusFlags & STATUS_LARGE_OVERFLOW) {
     createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
@@ -119,10 +137,13 @@ void GpuRenderer::prepareRetry(uint32_t statusFlags) {
     updateDescriptors();
   } else if (groupCap_ < MAX_DISPATCH_GROUPS) {
     groupCap_ = std::min(groupCap_ * 16u, MAX_DISPATCH_GROUPS);
+  } else if (listChunk_ == 0u || listChunk_ > LIST_CHUNK_MIN) {
+    listChunk_ = listChunk_ == 0u ? LIST_CHUNK_FIRST : listChunk_ / 4u;  // render selects its pipelines
   } else {
     throw std::runtime_error("scene too large for " + context_.info.name +
                              ": a pass needs more loop iterations per invocation than the device allows, even with " +
-                             std::to_string(groupCap_) + " workgroups");
+                             std::to_string(groupCap_) + " workgroups and the large triangles' lists taken " +
+                             std::to_string(listChunk_) + " entries at a time");
   }
   keysDirty_ = true;
   ++framesRepeated_;

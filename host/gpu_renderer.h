@@ -48,6 +48,9 @@ struct GpuRendererOptions {
   // The most workgroups a pass launches until a frame runs out of loop iterations (0: the
   // device's); tests start low to exercise the retry with more (render).
   uint32_t firstGroupCap = 0;
+  // Entries of each bin's large-triangle list resolve takes per round from the first frame on (0:
+  // whole lists until a frame runs out of loop iterations); tests force rounds on any scene.
+  uint32_t firstListChunk = 0;
   // The passes' `_exact` builds, which correct the device's division and square root: what
   // probeFloatOps(context).useExact() says for the device (host/float_probe.h). Unset, the
   // renderer runs the probe itself; a caller that builds several renderers probes once and says.
@@ -72,6 +75,9 @@ class GpuRenderer {
 
   // Frames rendered again so far (render), for tests and the benchmark.
   uint64_t framesRepeated() const { return framesRepeated_; }
+  // 0, or how many entries of each bin's large-triangle list resolve takes per round since a frame
+  // had lists too long for the device's loop budget (gpu_layout.h LIST_CHUNK_FIRST).
+  uint32_t listChunk() const { return listChunk_; }
   // Time spent compiling pipelines so far, construction included.
   double compileMs() const { return compileMs_; }
 
@@ -98,6 +104,7 @@ class GpuRenderer {
   // The frame loop (gpu_renderer.cpp).
   void release();  // destroys whatever exists; safe to call twice
   bool renderAttempt();
+  void submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer));
   void prepareRetry(uint32_t statusFlags);
   void readTimes();
 
@@ -121,6 +128,9 @@ class GpuRenderer {
 
   // Recording a frame's passes (gpu_recording.cpp) and reading its image (gpu_readback.cpp).
   void recordFrame(VkCommandBuffer cmd);
+  void recordResolveLargeRound(VkCommandBuffer cmd);
+  void recordResolveTail(VkCommandBuffer cmd);
+  void bindPass(VkCommandBuffer cmd, Pass pass) const;
   Image readImage(Image storage);
 
   const VulkanContext& context_;
@@ -130,6 +140,7 @@ class GpuRenderer {
   bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
   bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
   uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
+  uint32_t listChunk_ = 0;     // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many entries a round
   uint64_t framesRepeated_ = 0;
   double compileMs_ = 0;
   std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization

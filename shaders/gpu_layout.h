@@ -55,6 +55,15 @@ PHONGVK_CONST uint BIN_KEYS_SHIFT = 1;
 // CPU_DISPATCH_GROUPS: a few groups per core, each looping over many items.
 PHONGVK_CONST uint MAX_DISPATCH_GROUPS = 65535;
 PHONGVK_CONST uint CPU_DISPATCH_GROUPS = 256;
+// Bins' lists taken a chunk at a time (SPEC_LIST_CHUNK): a bin that thousands of large triangles
+// reach (2,000 screen-filling triangles, a 100k-corner polygon cut into a fan) is more work than
+// one lavapipe invocation's loop budget even alone in its workgroup, since resolve walks the list
+// once per tile. Frames that run out of the budget with the most workgroups are rendered again
+// with resolve_large taking at most LIST_CHUNK_FIRST entries of each list per dispatch (about 34
+// loop iterations an entry on the CPU layout, within the 65535), in rounds until every list is
+// done; each time the budget still runs out, a quarter as many, down to LIST_CHUNK_MIN.
+PHONGVK_CONST uint LIST_CHUNK_FIRST = 1024;
+PHONGVK_CONST uint LIST_CHUNK_MIN = 16;
 // probe_float.comp: results per probe (native a / b, sqrt, fma; the quotient and root corrected) and group size.
 PHONGVK_CONST uint FLOAT_PROBE_RESULTS = 5;
 PHONGVK_CONST uint FLOAT_PROBE_GROUP_SIZE = 64;
@@ -71,6 +80,9 @@ PHONGVK_CONST uint RESOLVE_OUTPUT_KEEP_KEYS = 2;
 // workgroups, each taking fewer items). Either way the host renders the frame again.
 PHONGVK_CONST uint STATUS_LARGE_OVERFLOW = 1;
 PHONGVK_CONST uint STATUS_LOOP_LIMIT = 2;
+// Not a failure: resolve_large, taking bins' lists a chunk at a time (SPEC_LIST_CHUNK), left some
+// bin's list unfinished; the host runs it again (a round) until no bin is left.
+PHONGVK_CONST uint STATUS_MORE_ROUNDS = 4;
 // Iterations of the loop-budget probe (PassControl.loopProbe; a uniform value, so no compiler unrolls it).
 PHONGVK_CONST uint LOOP_PROBE_ITERATIONS = 2;
 

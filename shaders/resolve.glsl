@@ -5,19 +5,26 @@
 
 layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
 layout(constant_id = SPEC_RESOLVE_OUTPUT) const uint OUTPUT = RESOLVE_OUTPUT_KEY_SLOTS;
+// 0: resolve_large takes each bin's whole list of large triangles and stores the colours where they
+// won. N > 0 (frames whose lists are too long for the loop budget; gpu_layout.h LIST_CHUNK_FIRST):
+// it takes the next N entries of each list per dispatch, in rounds, keeping the smallest keys in
+// the key buffer, and resolve_small then colours every covered pixel of every touched bin.
+layout(constant_id = SPEC_LIST_CHUNK) const uint LIST_CHUNK = 0u;
 
-// A touched bin: its first pixel, its flags (shared.h BIN_*) and the head of its large-triangle list.
+// A touched bin: its first pixel, its flags (shared.h BIN_*), the head of its large-triangle list
+// and its index in the bin grid.
 struct Bin {
   uvec2 origin;
   uint flags;
   uint head;
+  uint index;
 };
 
 Bin touchedBin(uint k) {
   uint packed = binData[2u * control.binCount + k];
   uvec2 bin = uvec2(packed & 0xFFFFu, packed >> 16);
   uint index = bin.y * control.binsX + bin.x;
-  return Bin(bin * BIN_SIZE, binData[index], binData[control.binCount + index]);
+  return Bin(bin * BIN_SIZE, binData[index], binData[control.binCount + index], index);
 }
 
 // The first pixel of the bin's tile t (row-major), and whether small triangles wrote keys in it.

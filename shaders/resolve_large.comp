@@ -19,6 +19,11 @@
 // shading each entry's rows instead of reading the winner's constants per row (5 gathers a row):
 // fig3 -11%, floor_and_walls -10%, its 4K render -9%, fig1_cube -1 to -5% (PERFORMANCE.md).
 //
+// A list too long for lavapipe's loop budget (LIST_CHUNK, resolve.glsl) is taken a chunk of
+// entries per dispatch: every tile of the bin against the chunk's entries, the smallest keys kept
+// in the key buffer between rounds (no colours, no owned tiles), and the bin's head moved past the
+// chunk; STATUS_MORE_ROUNDS asks the host for another round while some list is not done.
+//
 // The 8 rows are spelled out by the FOR_ROWS macro instead of indexing per-lane arrays, which
 // lavapipe may keep in memory.
 #version 460
@@ -40,7 +45,7 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
   uint64_t best##r = KEY_CLEAR;     \
   vec3 color##r = vec3(0.0f);       \
   bool won##r = false;              \
-  if (keysWritten && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
+  if ((keysWritten || LIST_CHUNK != 0u) && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
 
 // Row r against large triangle t (shading g), if it covers the pixel (its edge values, stepped
 // down the lane's column row by row, decide); then the next row. lavapipe shades every row
@@ -63,6 +68,10 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 #define FINISH_ROW(r) \
   if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, best##r);
 
+// Row r, if a large triangle of this chunk won it: its key, for the next round and resolve_small (LIST_CHUNK).
+#define KEEP_ROW_KEY(r) \
+  if (won##r && inImage(x, origin.y + r)) keys[pixelIndex(x, origin.y + r)] = best##r;
+
 // Row r's colour, packed (RGBA8), ORed into `packedBits` for keepVectors. That second use is what
 // it is for: with one use, LLVM (in llvmpipe) moves the conversion and packing of each lane's
 // colour into the per-lane loop that llvmpipe makes of the store, scalar code once per pixel
@@ -78,12 +87,21 @@ void keepVectors(uint packedBits) {
   if (packedBits == control.loopProbe) atomicOr(status.flags, 0u);
 }
 
-// From entry e of a bin's list on, the first whose tiles include `tile` (a bit of LargeEntry.tiles),
-// as (set-up slot, next entry); (LIST_END, LIST_END) past the last. A loop, so lavapipe really
-// skips the entries that miss the tile (it runs every side of a branch).
-uvec2 nextEntryIn(uint e, uint tile) {
+// Where this dispatch stops in the list that starts at `head`: the end of the list, or with
+// LIST_CHUNK the entry after the chunk's last (LIST_END when the chunk reaches the end).
+uint chunkEnd(uint head) {
+  if (LIST_CHUNK == 0u) return LIST_END;
+  uint e = head;
+  for (uint n = 0u; n < LIST_CHUNK && e != LIST_END; ++n) e = largeEntry(e).next;
+  return e;
+}
+
+// From entry e of a bin's list on, before `end` (chunkEnd), the first whose tiles include `tile` (a
+// bit of LargeEntry.tiles), as (set-up slot, next entry); (LIST_END, LIST_END) past the last. A
+// loop, so lavapipe really skips the entries that miss the tile (it runs every side of a branch).
+uvec2 nextEntryIn(uint e, uint end, uint tile) {
   uvec2 found = uvec2(LIST_END);
-  while (e != LIST_END && found.x == LIST_END) {
+  while (e != end && found.x == LIST_END) {
     LargeEntry entry = largeEntry(e);
     if ((entry.tiles & tile) != 0u) found = uvec2(entry.slot, entry.next);
     e = entry.next;
@@ -92,18 +110,22 @@ uvec2 nextEntryIn(uint e, uint tile) {
 }
 
 // This lane's column of the tile at `origin` (pixels), bit `tile` of its bin's LargeEntry.tiles,
-// in a bin whose large-triangle list starts at `head`; `keysWritten` when small triangles wrote
-// keys in the tile. Pixels no large triangle wins are left to resolve_small.
-void rasterizeTile(ivec2 origin, uint head, uint tile, bool keysWritten) {
+// against the entries of its bin's list from `head` to `end`; `keysWritten` when small triangles
+// wrote keys in the tile. Pixels no large triangle wins are left to resolve_small.
+void rasterizeTile(ivec2 origin, uint head, uint end, uint tile, bool keysWritten) {
   int column = int(gl_LocalInvocationID.x);
   int x = origin.x + column;
   FOR_ROWS(DECLARE_ROW)
-  for (uvec2 entry = nextEntryIn(head, tile); entry.x != LIST_END; entry = nextEntryIn(entry.y, tile)) {
+  for (uvec2 entry = nextEntryIn(head, end, tile); entry.x != LIST_END; entry = nextEntryIn(entry.y, end, tile)) {
     uint slot = entry.x;
     LargeTriangle t = largeSetup(slot);
     GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), t.plane);
     ColumnEdges c = columnEdges(t, blockEdges(t, origin), column);
     FOR_ROWS(RASTER_ROW)
+  }
+  if (LIST_CHUNK != 0u) {
+    FOR_ROWS(KEEP_ROW_KEY)
+    return;
   }
   uint packedBits = 0u;
   FOR_ROWS(PACK_ROW)
@@ -137,34 +159,45 @@ void shadeOwnedTile(ivec2 origin, uint slot) {
 // large triangle may cover them) and those to shade only (y: one large triangle owns the tile, and
 // nothing else reaches it: no other large triangle, no small triangle's key). Owned tiles are
 // rasterized too where keys are kept (phongvk diff), as the keys are wanted. One walk of the bin's
-// list, with the entries' masks only.
-uvec2 tileWork(Bin b) {
+// list (to `end`, chunkEnd), with the entries' masks only. A list taken in chunks has no owned
+// tiles: ownership is of the whole list.
+uvec2 tileWork(Bin b, uint end) {
   uint seen = 0u;
   uint twice = 0u;
   uint owned = 0u;
-  for (uint e = b.head; e != LIST_END;) {
+  for (uint e = b.head; e != end;) {
     LargeEntry entry = largeEntry(e);
     twice |= seen & entry.tiles;
     seen |= entry.tiles;
     owned |= entry.owned;
     e = entry.next;
   }
-  uint alone = OUTPUT == RESOLVE_OUTPUT_KEEP_KEYS ? 0u : owned & ~twice & ~(b.flags >> BIN_KEYS_SHIFT);
+  uint alone = OUTPUT == RESOLVE_OUTPUT_KEEP_KEYS || LIST_CHUNK != 0u ? 0u : owned & ~twice & ~(b.flags >> BIN_KEYS_SHIFT);
   return uvec2(seen & ~alone, alone);
 }
 
 // The GPU layout's workgroups take several tiles at once (SPEC_RESOLVE_TILES), the CPU layout's one.
 const bool CPU_LAYOUT = gl_WorkGroupSize.y == 1u;
 
-// Tile t of bin b, rasterized or (owned) only shaded, where it lies in the image.
-void rasterizeBinTile(Bin b, uint t) {
+// Tile t of bin b, rasterized (against its list up to `end`) or (owned) only shaded, where it lies
+// in the image.
+void rasterizeBinTile(Bin b, uint end, uint t) {
   uvec2 origin = tileOrigin(b, t);
-  if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, 1u << t, tileKeysWritten(b, t));
+  if (origin.x < frame.width && origin.y < frame.height) rasterizeTile(ivec2(origin), b.head, end, 1u << t, tileKeysWritten(b, t));
 }
 
 void shadeOwnedBinTile(Bin b, uint t) {
   uvec2 origin = tileOrigin(b, t);
-  if (origin.x < frame.width && origin.y < frame.height) shadeOwnedTile(ivec2(origin), nextEntryIn(b.head, 1u << t).x);
+  if (origin.x < frame.width && origin.y < frame.height) shadeOwnedTile(ivec2(origin), nextEntryIn(b.head, LIST_END, 1u << t).x);
+}
+
+// LIST_CHUNK: once every tile of bin b has taken the chunk, the bin's list starts after it (all of
+// the workgroup's invocations have read the old head), and another round is asked for if any is left.
+void finishChunk(Bin b, uint end) {
+  barrier();
+  if (gl_LocalInvocationIndex != 0u) return;
+  binData[control.binCount + b.index] = end;
+  if (end != LIST_END) atomicOr(status.flags, STATUS_MORE_ROUNDS);
 }
 
 // On a CPU device the two kinds of tile are separate loops over their own tiles, not one loop
@@ -176,16 +209,18 @@ void main() {
   loadUniforms();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
     Bin b = touchedBin(k);
-    if (b.head == LIST_END) continue;  // resolve_small's
+    if (b.head == LIST_END) continue;  // resolve_small's, or (LIST_CHUNK) done in an earlier round
+    uint end = chunkEnd(b.head);
     if (CPU_LAYOUT) {
-      uvec2 work = tileWork(b);
-      [[dont_unroll]] for (uint tiles = work.x; tiles != 0u; tiles &= tiles - 1u) rasterizeBinTile(b, uint(findLSB(tiles)));
+      uvec2 work = tileWork(b, end);
+      [[dont_unroll]] for (uint tiles = work.x; tiles != 0u; tiles &= tiles - 1u) rasterizeBinTile(b, end, uint(findLSB(tiles)));
       [[dont_unroll]] for (uint tiles = work.y; tiles != 0u; tiles &= tiles - 1u) shadeOwnedBinTile(b, uint(findLSB(tiles)));
     } else {
       [[dont_unroll]] for (uint t = gl_LocalInvocationID.y; t < BIN_TILES * BIN_TILES; t += gl_WorkGroupSize.y) {
-        rasterizeBinTile(b, t);
+        rasterizeBinTile(b, end, t);
       }
     }
+    if (LIST_CHUNK != 0u) finishChunk(b, end);
   }
   checkLoopBudget();
 }

@@ -31,8 +31,10 @@ void main() {
   loadUniforms();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {
     Bin b = touchedBin(k);
-    // The tiles small triangles wrote keys in, lowest first (none: only large triangles, resolve_large's).
-    [[dont_unroll]] for (uint tiles = b.flags >> BIN_KEYS_SHIFT; tiles != 0u; tiles &= tiles - 1u) {
+    // The tiles small triangles wrote keys in, lowest first (none: only large triangles, resolve_large's);
+    // every tile where resolve_large left keys instead of colours (LIST_CHUNK).
+    uint keyTiles = LIST_CHUNK == 0u ? b.flags >> BIN_KEYS_SHIFT : (1u << (BIN_TILES * BIN_TILES)) - 1u;
+    [[dont_unroll]] for (uint tiles = keyTiles; tiles != 0u; tiles &= tiles - 1u) {
       resolvePixelOf(tileOrigin(b, uint(findLSB(tiles))));
     }
   }

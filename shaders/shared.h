@@ -86,7 +86,8 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(SPEC_RESOLVE_TILES, 4)              \
   X(SPEC_RESOLVE_OUTPUT, 5)             \
   X(SPEC_BIN_PASS, 6)                   \
-  X(SPEC_SELFTEST_SLOTS, 7)
+  X(SPEC_SELFTEST_SLOTS, 7)             \
+  X(SPEC_LIST_CHUNK, 8)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;

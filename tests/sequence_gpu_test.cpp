@@ -104,12 +104,6 @@ TEST(SequenceReuse, GeometryTrackRebuildsOnlyWhenItChanges) {
 
 // ---- the CLI ----
 
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.is_open()) << path;
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 // Eight frames that switch what the GPU may reuse: an orbit, specular light off then on then off
 // again, and a light colour that changes once.
 std::string writeSwitchingScene(const std::string& dir) {
@@ -148,7 +142,7 @@ TEST(SequenceCli, FrameSubsetsAreByteIdenticalToTheFullRun) {
   for (int i = 0; i < 8; ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", i);
-    EXPECT_EQ(readBytes(dir + "/part/" + name), readBytes(dir + "/full/" + name)) << name;
+    EXPECT_EQ(test::readBytes(dir + "/part/" + name), test::readBytes(dir + "/full/" + name)) << name;
   }
   EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/full"), fs::directory_iterator()), 8);
 }
@@ -159,7 +153,7 @@ TEST(SequenceCli, RenderOfAnAnimatedSceneIsFrameZero) {
   ASSERT_EQ(sequenceCli(scene, dir + "/frames", "--frames 0:1").exitCode, 0);
   const test::CommandResult render = test::runCli("render " + scene + " -o " + dir + "/still.png");
   ASSERT_EQ(render.exitCode, 0) << render.output;
-  EXPECT_EQ(readBytes(dir + "/still.png"), readBytes(dir + "/frames/frame_0000.png"));
+  EXPECT_EQ(test::readBytes(dir + "/still.png"), test::readBytes(dir + "/frames/frame_0000.png"));
 }
 
 TEST(SequenceCli, BadFramesExitTwoAndWriteNothing) {

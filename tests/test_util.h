@@ -41,6 +41,9 @@ int mappingsAddedByRelitFrames(const FrameInputs& in, const std::function<void(c
 // Writes `text` to `path` (creating it), for tests that need a scene file on disk.
 void writeFile(const std::string& path, const std::string& text);
 
+// A file's bytes (a failed check, and "", where it cannot be read).
+std::string readBytes(const std::string& path);
+
 struct CommandResult {
   int exitCode = -1;
   std::string output;  // stdout and stderr together
