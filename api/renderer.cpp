@@ -131,4 +131,9 @@ DiffResult diff(const Scene& scene, Renderer& renderer) {
 
 void setMemoryLimit(uint64_t bytes) { setSceneMemoryLimit(bytes); }
 
+void checkOutputMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
+                       const std::string& remedy) {
+  checkMemory(path, what, bytes, detail, remedy);
+}
+
 }  // namespace phongvk

@@ -5,6 +5,7 @@
 #include "cli/sequence.h"
 
 #include "cli/cli_support.h"
+#include "phongvk/contact_sheet.h"
 #include "phongvk/frame_writer.h"
 
 #include <signal.h>
@@ -174,6 +175,22 @@ std::vector<Scene> prepareFrames(const Scene& sequence, const FrameRange& range,
   return frames;
 }
 
+// The contact sheet's thumbnails, held until the last frame, and the sheet: checked against the
+// memory limit with the frames, before any is rendered (100,000 frames at --thumb-width 4096 would
+// ask for terabytes at the end of the run).
+void checkSheetMemory(const SequenceOptions& options, const Scene& sequence, const std::vector<Scene>& frames) {
+  if (options.sheet.empty()) return;
+  ThumbnailSize cell = {1, 1};
+  for (const Scene& frame : frames) {
+    const ThumbnailSize size = thumbnailSize(frame.width(), frame.height(), options.thumbnailWidth);
+    cell = {std::max(cell.width, size.width), std::max(cell.height, size.height)};
+  }
+  checkOutputMemory(sequence.path(), "the contact sheet", contactSheetBytes(int(frames.size()), cell),
+                    std::to_string(frames.size()) + " thumbnails of " + std::to_string(cell.width) + "x" +
+                        std::to_string(cell.height),
+                    "a smaller --thumb-width or fewer --frames fit");
+}
+
 // "gpu (llvmpipe ...), lighting computed on 1 of 120 frames" or "cpu (reference)".
 std::string backendSummary(const Renderer& renderer, int frames) {
   if (renderer.backend() == Backend::Cpu) return "cpu (reference)";
@@ -246,8 +263,10 @@ int runSequence(const SequenceOptions& options) {
     const Scene sequence = loadScene(options.scene);
     const FrameRange range = parseFrameRange(options.frames, sequence.frameCount());
     const std::vector<Scene> frames = prepareFrames(sequence, range, options);
+    const RendererOptions rendering = rendererOptions(options, options.backend);  // the memory limit too
+    checkSheetMemory(options, sequence, frames);
     prepareOutputs(options, sequence.frameCount());
-    Renderer renderer(rendererOptions(options, options.backend));
+    Renderer renderer(rendering);
     FrameOutputs outputs(options, sequence.frameCount(), range.count());
     size_t rendered = 0;
     for (; rendered < frames.size() && interruptedBy == 0; ++rendered) {

@@ -118,4 +118,11 @@ Image contactSheet(const std::vector<Thumbnail>& thumbnails, int columns) {
 
 int sheetColumns(int count) { return std::max(1, int(std::ceil(std::sqrt(double(count))))); }
 
+uint64_t contactSheetBytes(int count, ThumbnailSize cell) {
+  const uint64_t columns = std::min(sheetColumns(count), count);
+  const uint64_t rows = (uint64_t(count) + columns - 1) / columns;
+  const uint64_t sheet = (kGap + columns * (cell.width + kGap)) * (kGap + rows * (cell.height + kGap)) * 3;
+  return uint64_t(count) * uint64_t(cell.width) * uint64_t(cell.height) * 3 + 2 * sheet;
+}
+
 }  // namespace phongvk

@@ -57,8 +57,7 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
     triangles += objects.back().first;
   }
   const uint64_t bytes = triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL;
-  const uint64_t limit = memoryLimit();
-  if (bytes <= limit) return;
+  if (bytes <= memoryLimit()) return;
   std::sort(objects.begin(), objects.end(), [](const auto& a, const auto& b) {
     return a.first != b.first ? a.first > b.first : a.second < b.second;  // the largest, in file order
   });
@@ -66,9 +65,17 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
   for (size_t k = 0; k < objects.size() && k < 3; ++k) {
     most += (k ? ", " : "") + scene.objects[objects[k].second].jsonPath + " (" + std::to_string(objects[k].first) + " triangles)";
   }
-  throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + "the scene needs about " + gib(bytes) + " (" +
-                   std::to_string(triangles) + " triangles, " + std::to_string(pixels) + " pixels), more than the " +
-                   gib(limit) + " limit (by default the machine's memory; PHONGVK_MAX_MEMORY_GB or --max-memory-gb sets it); most of it: " + most);
+  checkMemory(scene.path, "the scene", bytes,
+              std::to_string(triangles) + " triangles, " + std::to_string(pixels) + " pixels", "most of it: " + most);
+}
+
+void checkMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
+                 const std::string& remedy) {
+  const uint64_t limit = memoryLimit();
+  if (bytes <= limit) return;
+  throw SceneError((path.empty() ? "" : path + ": ") + what + " needs about " + gib(bytes) + " (" + detail +
+                   "), more than the " + gib(limit) +
+                   " limit (by default the machine's memory; PHONGVK_MAX_MEMORY_GB or --max-memory-gb sets it); " + remedy);
 }
 
 }  // namespace phongvk

@@ -30,4 +30,10 @@ void setSceneMemoryLimit(uint64_t bytes);
 // of it: objects[2] (... triangles), ..." when the estimate exceeds memoryLimit().
 void checkSceneMemory(const SceneSpec& scene, uint64_t pixels);
 
+// Throws SceneError "<path>: <what> needs about N GiB (<detail>), more than the M GiB limit (...);
+// <remedy>" when `bytes` exceed memoryLimit(): the one message for the scene and what is made
+// beside it (a sequence's contact sheet).
+void checkMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
+                 const std::string& remedy);
+
 }  // namespace phongvk

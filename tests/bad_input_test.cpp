@@ -4,6 +4,7 @@
 // broken OBJ files, unreadable and odd files, and the CLI's exit codes and output files.
 #include "scene/scene.h"
 #include "scene/scene_data.h"
+#include "phongvk/contact_sheet.h"
 #include "phongvk/image.h"
 
 #include <gtest/gtest.h>
@@ -481,6 +482,27 @@ TEST_F(BadCli, SceneBeyondTheMemoryLimitFailsBeforeBuilding) {
       "PHONGVK_MAX_MEMORY_GB=2", "diff " + dir + "/six.json");
   EXPECT_EQ(env.exitCode, 2) << env.output;
   EXPECT_NE(env.output.find("more than the 2.0 GiB limit"), std::string::npos) << env.output;
+}
+
+// A contact sheet is held until the last frame: one too large for the limit fails before the
+// first frame (no frames folder, no frame), naming its size, the limit and what would fit. The
+// orbit's 120 frames at 1385x923 and --thumb-width 4096 (kept at 1385: thumbnails are never
+// enlarged): 120 x 1385 x 923 x 3 bytes of thumbnails, and the sheet twice.
+TEST_F(BadCli, ContactSheetBeyondTheMemoryLimitFailsBeforeTheFirstFrame) {
+  const std::string orbit = test::sourcePath("scenes/paper/fig6_orbit_red.json");
+  const std::string frames = out_ + "/frames";
+  const uint64_t sheet = contactSheetBytes(120, {1385, 923});
+  EXPECT_EQ(sheet, 120ull * 1385 * 923 * 3 + 2ull * (4 + 11 * 1389) * (4 + 11 * 927) * 3);
+  expectFailure("sequence " + orbit + " --backend cpu --max-memory-gb 1 --thumb-width 4096 --sheet " + out_ +
+                    "/sheet.png -o " + frames,
+                2,
+                "error: " + orbit + ": the contact sheet needs about 1.3 GiB (120 thumbnails of 1385x923), more than the "
+                "1.0 GiB limit (by default the machine's memory; PHONGVK_MAX_MEMORY_GB or --max-memory-gb sets it); a "
+                "smaller --thumb-width or fewer --frames fit");
+  const std::string elsewhere = test::makeTempDir();  // the default 160-wide thumbnails fit
+  const test::CommandResult fits = test::runCli("sequence " + orbit + " --backend cpu --max-memory-gb 1 --sheet " +
+                                                elsewhere + "/sheet.png -o " + elsewhere + " --frames 0:2");
+  EXPECT_EQ(fits.exitCode, 0) << fits.output;
 }
 
 }  // namespace

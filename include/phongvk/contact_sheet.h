@@ -38,4 +38,8 @@ PHONGVK_API Image contactSheet(const std::vector<Thumbnail>& thumbnails, int col
 // Columns for a sheet of `count` thumbnails: close to square (ceil(sqrt(count))).
 PHONGVK_API int sheetColumns(int count);
 
+// The memory a sheet of `count` thumbnails, cells of `cell`, in sheetColumns(count) columns, takes
+// while it is made and written: the thumbnails, the sheet and its encoding (as large again).
+PHONGVK_API uint64_t contactSheetBytes(int count, ThumbnailSize cell);
+
 }  // namespace phongvk

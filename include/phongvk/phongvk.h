@@ -184,5 +184,10 @@ PHONGVK_API double median(std::vector<double> values);
 // 32 a pixel); a scene beyond it fails with SceneError naming the objects that take most. Default:
 // the machine's physical memory, or the environment's PHONGVK_MAX_MEMORY_GB. 0 restores the default.
 PHONGVK_API void setMemoryLimit(uint64_t bytes);
+// Outputs beside a scene that hold memory too (a sequence's contact sheet) against the same limit:
+// throws SceneError "<path>: <what> needs about N GiB (<detail>), more than the M GiB limit (...);
+// <remedy>" when `bytes` exceed it.
+PHONGVK_API void checkOutputMemory(const std::string& path, const std::string& what, uint64_t bytes,
+                                   const std::string& detail, const std::string& remedy);
 
 }  // namespace phongvk
