@@ -142,6 +142,10 @@ class GraphicsBackend : public VulkanBackend {
     renderer_.emplace(context_, data);
   }
   RenderOutput draw(const SceneData&, const FrameInputs& in, bool, Image) override {
+    if (in.frame.shading != gpu::SHADING_GOURAUD || in.frame.specular != gpu::SPECULAR_PHONG) {
+      throw SceneError("the graphics backend (the benchmark's baseline) renders Gouraud shading with the paper's "
+                       "specular model only: use the gpu or cpu backend for render.shading and render.specular");
+    }
     const ContextLock lock(context_);
     ++frames_;
     return renderer_->render(in);

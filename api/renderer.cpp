@@ -5,6 +5,7 @@
 #include "scene/camera.h"
 #include "scene/camera_fit.h"
 #include "scene/memory_estimate.h"
+#include "phongvk/contact_sheet.h"
 
 #include <cmath>
 #include <limits>
@@ -32,7 +33,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
     if (data_->materials.size() == materials && data_->lights.size() == lights) return;
   }
   const View view = makeView(spec.camera);
-  checkSceneMemory(spec, uint64_t(view.width) * uint64_t(view.height));
+  checkSceneMemory(spec, uint64_t(view.width) * uint64_t(view.height) * uint64_t(spec.samples));
   const auto start = Clock::now();
   data_.reset();  // the old meshes go before the new ones are built
   data_ = buildSceneData(spec);
@@ -43,9 +44,17 @@ void Renderer::Impl::prepare(const Scene& scene) {
   ++sceneBuilds_;
 }
 
+// With samples per pixel (render.samples), the frame is rendered `side` times wider and higher,
+// each pixel's samples on a regular grid of pixel centres, and box-filtered down in 8 bits
+// (downscale: the rounded mean of each side x side block): both backends, the same bytes. The
+// keys stay per sample.
 RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image storage) {
   prepare(scene);
-  RenderOutput out = draw(*data_, makeFrame(*data_, makeView(camera_)), withKeys, std::move(storage));
+  const View view = makeView(camera_);
+  const int side = sampleGridSide(data_->samples);
+  RenderOutput out = draw(*data_, makeFrame(*data_, supersampled(view, side)), withKeys,
+                          side == 1 ? std::move(storage) : Image());
+  if (side > 1) out.image = downscale(out.image, view.width, view.height);
   ++framesRendered_;
   return out;
 }

@@ -27,6 +27,10 @@ Scene Scene::withImageSize(int width, int height) const {
   return Scene(std::move(resized), sequence_);
 }
 
+Scene Scene::withRender(const std::string& json) const {
+  return Scene(std::make_shared<SceneSpec>(withRenderOptions(*spec_, json)), sequence_);
+}
+
 void Scene::addMesh(const MeshArrays& mesh, const std::string& material, bool closed) {
   auto changed = std::make_shared<SceneSpec>(*spec_);
   addMeshObject(*changed, mesh, material, closed);

@@ -4,6 +4,7 @@
 
 #include "scene/camera.h"
 #include "phongvk/compare.h"
+#include "phongvk/contact_sheet.h"
 #include "reference/raycast.h"
 
 #include <cmath>
@@ -16,16 +17,28 @@ namespace {
 struct Tessellation {
   Shape shape;
   int level;  // UV segments, or icosphere subdivisions
+  Shading shading;
+  int samples;
 };
 
+// Every shading mode over both meshes with one sample; Gouraud and Phong over the icospheres with
+// 4 samples (2x2), which the ground truth's 16 samples show as smoother silhouettes.
 std::vector<Tessellation> sweepSettings(bool quick) {
-  const std::vector<int> segments = quick ? std::vector<int>{8, 16} : std::vector<int>{8, 16, 32, 64, 128, 256};
+  const std::vector<int> segments = quick ? std::vector<int>{8} : std::vector<int>{8, 16, 32, 64, 128, 256};
   const int subdivisions = quick ? 2 : 7;  // icospheres: subdivide 0 .. subdivisions - 1
   std::vector<Tessellation> settings;
-  for (int s : segments) settings.push_back({Shape::Sphere, s});
-  for (int k = 0; k < subdivisions; ++k) settings.push_back({Shape::Icosphere, k});
+  for (Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
+    for (int s : segments) settings.push_back({Shape::Sphere, s, shading, 1});
+    for (int k = 0; k < subdivisions; ++k) settings.push_back({Shape::Icosphere, k, shading, 1});
+  }
+  for (Shading shading : {Shading::Gouraud, Shading::Phong}) {
+    for (int k = 0; k < subdivisions; ++k) settings.push_back({Shape::Icosphere, k, shading, 4});
+  }
   return settings;
 }
+
+// The ground truth's samples per pixel (a side of 4: 16), box-filtered as render.samples is.
+constexpr int TRUTH_SAMPLE_SIDE = 4;
 
 // A unit sphere seen from slightly above, lit from the upper left so the image holds a highlight,
 // a terminator and the silhouette: the three places coarse tessellation shows. No attenuation and
@@ -47,6 +60,8 @@ SceneSpec sweepScene(const Tessellation& t, int width, int height) {
   if (t.shape == Shape::Icosphere) sphere.subdivide = t.level;
   sphere.jsonPath = "objects[0]";
   scene.objects.push_back(sphere);
+  scene.shading = t.shading;
+  scene.samples = t.samples;
   return scene;
 }
 
@@ -55,6 +70,13 @@ void describe(SweepPoint& p, const Tessellation& t) {
   p.mesh = uv ? "UV sphere" : "icosphere";
   p.setting = formatText(uv ? "segments %d" : "subdivide %d", t.level);
   p.label = formatText(uv ? "s%d" : "k%d", t.level);
+  p.shading = t.shading == Shading::Flat ? "flat" : t.shading == Shading::Phong ? "Phong" : "Gouraud";
+  p.samples = t.samples;
+}
+
+// A frame of `view`'s size from one rendered with `side` x `side` samples per pixel.
+Image filtered(const Image& image, const View& view, int side) {
+  return side == 1 ? image : downscale(image, view.width, view.height);
 }
 
 SweepPoint measurePoint(const VulkanContext& context, const SceneSpec& scene, const View& view, const Image& truth,
@@ -62,15 +84,18 @@ SweepPoint measurePoint(const VulkanContext& context, const SceneSpec& scene, co
   SweepPoint p;
   const SceneData data = buildSceneData(scene);
   p.triangles = data.triangles.size();
-  const FramePair frames = makeFramePair(data, view);
+  const int side = sampleGridSide(scene.samples);
+  const FramePair frames = makeFramePair(data, supersampled(view, side));
   const BackendRun reference = runReference(data, frames, repeat);
   p.referenceMs = reference.time.wallMs;
-  p.referenceError = imageError(truth, reference.image);
+  const Image referenceImage = filtered(reference.image, view, side);
+  p.referenceError = imageError(truth, referenceImage);
   const ComputeRun compute = runCompute(context, data, frames, repeat);
   p.compute = compute.time;
   if (compute.time.ok()) {
-    p.computeError = imageError(truth, compute.image);
-    p.computeVsReference = compareImages(reference.image, compute.image).maxChannelDiff();
+    const Image computeImage = filtered(compute.image, view, side);
+    p.computeError = imageError(truth, computeImage);
+    p.computeVsReference = compareImages(referenceImage, computeImage).maxChannelDiff();
   }
   return p;
 }
@@ -102,6 +127,49 @@ void markParetoFront(std::vector<SweepPoint>& points) {
   }
 }
 
+namespace {
+
+// The cheapest measured point of `shading` with one sample whose error is at most `rmse`.
+const SweepPoint* cheapestWithin(const SweepResult& sweep, const std::string& shading, double rmse) {
+  const SweepPoint* best = nullptr;
+  for (const SweepPoint& q : sweep.points) {
+    if (q.shading != shading || q.samples != 1 || !q.compute.ok() || q.computeError.rmse > rmse) continue;
+    if (!best || q.cost() < best->cost()) best = &q;
+  }
+  return best;
+}
+
+std::string pointName(const SweepPoint& p) {
+  return p.shading + " on the " + p.mesh + " " + p.setting + " (" + std::to_string(p.triangles) + " triangles, " +
+         formatText("%.2f ms", p.cost()) + ")";
+}
+
+}  // namespace
+
+std::string frontFinding(const SweepResult& sweep) {
+  // The largest error at which the cheapest Phong point reaching it is cheaper than the cheapest
+  // Gouraud point reaching it (or Gouraud reaches it with no mesh of the sweep).
+  const SweepPoint* phong = nullptr;
+  const SweepPoint* gouraud = nullptr;
+  double threshold = 0;
+  for (const SweepPoint& p : sweep.points) {
+    if (p.shading != "Phong" || p.samples != 1 || !p.compute.ok() || (phong && p.computeError.rmse <= threshold)) continue;
+    const SweepPoint* cheapestPhong = cheapestWithin(sweep, "Phong", p.computeError.rmse);
+    const SweepPoint* cheapestGouraud = cheapestWithin(sweep, "Gouraud", p.computeError.rmse);
+    if (cheapestGouraud && cheapestGouraud->cost() <= cheapestPhong->cost()) continue;
+    threshold = p.computeError.rmse;
+    phong = cheapestPhong;
+    gouraud = cheapestGouraud;
+  }
+  if (!phong) return "Gouraud shading is at least as cheap as Phong shading at every error Phong reaches here.";
+  auto rmse = [](const SweepPoint& q) { return formatText("RMSE %.2f", q.computeError.rmse); };
+  return "To an RMSE of " + formatText("%.2f", threshold) +
+         " or less, per-pixel Phong shading of a coarse mesh is cheaper than Gouraud shading of a fine one: " +
+         pointName(*phong) + " reaches " + rmse(*phong) + ", where Gouraud needs " +
+         (gouraud ? pointName(*gouraud) + " for " + rmse(*gouraud) : std::string("a finer mesh than any in the sweep")) +
+         ".";
+}
+
 SweepResult runErrorSweep(const VulkanContext& context, bool quick, int repeat) {
   SweepResult result;
   result.width = quick ? 160 : 640;
@@ -110,13 +178,13 @@ SweepResult runErrorSweep(const VulkanContext& context, bool quick, int repeat) 
   // Every setting shares the camera, light and sphere, hence one ground truth.
   const SceneSpec first = sweepScene(settings.front(), result.width, result.height);
   const View view = makeView(first.camera);
-  const Image truth = raycastSphere(first, view);
+  const Image truth = downscale(raycastSphere(first, supersampled(view, TRUTH_SAMPLE_SIDE)), view.width, view.height);
   for (const Tessellation& t : settings) {
     SweepPoint p = measurePoint(context, sweepScene(t, result.width, result.height), view, truth, repeat);
     describe(p, t);
-    std::printf("error sweep %s %s: %llu triangles, compute %.2f ms, RMSE %.2f (reference %.2f)\n", p.mesh.c_str(),
-                p.setting.c_str(), static_cast<unsigned long long>(p.triangles), p.cost(), p.computeError.rmse,
-                p.referenceError.rmse);
+    std::printf("error sweep %s %s, %s, %d sample(s): %llu triangles, compute %.2f ms, RMSE %.2f (reference %.2f)\n",
+                p.mesh.c_str(), p.setting.c_str(), p.shading.c_str(), p.samples,
+                static_cast<unsigned long long>(p.triangles), p.cost(), p.computeError.rmse, p.referenceError.rmse);
     std::fflush(stdout);
     result.points.push_back(p);
   }

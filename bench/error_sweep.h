@@ -1,6 +1,7 @@
 // error_sweep.h — run time against error: one sphere under one light, tessellated ever finer (UV
-// segments, icosphere subdivision), each rendered by the compute port and the reference and
-// compared with the analytic ground truth (reference/raycast.h: exact sphere, per-pixel Phong).
+// segments, icosphere subdivision), shaded flat, Gouraud and Phong with 1 and 4 samples per pixel,
+// each rendered by the compute port and the reference and compared with the analytic ground truth
+// (reference/raycast.h: exact sphere, per-pixel Phong, 16 samples per pixel box-filtered).
 #pragma once
 
 #include "measure.h"
@@ -21,6 +22,8 @@ struct SweepPoint {
   std::string mesh;             // "UV sphere" or "icosphere"
   std::string setting;          // "segments 32", "subdivide 3"
   std::string label;            // short, for the plot: "s32", "k3"
+  std::string shading;          // "flat", "Gouraud", "Phong"
+  int samples = 1;              // per pixel
   uint64_t triangles = 0;
   Timing compute;               // median wall and device ms
   double referenceMs = NOT_MEASURED;
@@ -36,8 +39,14 @@ struct SweepPoint {
 
 struct SweepResult {
   int width = 0, height = 0;
-  std::vector<SweepPoint> points;  // UV spheres by segments, then icospheres by subdivision
+  // Per shading mode (flat, Gouraud, Phong) UV spheres by segments, then icospheres by subdivision;
+  // then Gouraud and Phong icospheres with 4 samples per pixel.
+  std::vector<SweepPoint> points;
 };
+
+// One sentence on what the front says of the shading modes: the cheapest point where Phong shading
+// reaches an error Gouraud reaches only on a finer, dearer mesh, or that it reaches none.
+std::string frontFinding(const SweepResult& sweep);
 
 // Errors of `image` against `truth` (same size).
 ImageError imageError(const Image& truth, const Image& image);

@@ -70,11 +70,17 @@ std::string script(const SweepResult& sweep, const std::vector<Series>& series, 
 
 std::string plotErrorSweep(const SweepResult& sweep, const std::string& pngPath, const std::string& deviceName) {
   // The front is drawn as a staircase: at any cost, the least error some setting reaches for it.
+  // A series per shading mode and sample count, both meshes in it (labels s32: UV segments, k3:
+  // icosphere subdivisions).
+  auto mode = [](std::string shading, int samples) -> Filter {
+    return [=](const SweepPoint& p) { return p.shading == shading && p.samples == samples; };
+  };
   const std::vector<Series> all = {
-      {"UV sphere (segments)", "with points pt 7 ps 1.4", [](const SweepPoint& p) { return p.mesh == "UV sphere"; }, true,
-       false},
-      {"icosphere (subdivide)", "with points pt 5 ps 1.4", [](const SweepPoint& p) { return p.mesh == "icosphere"; }, true,
-       false},
+      {"flat", "with points pt 9 ps 1.3 lc rgb '#1b9e77'", mode("flat", 1), true, false},
+      {"Gouraud", "with points pt 7 ps 1.3 lc rgb '#d95f02'", mode("Gouraud", 1), true, false},
+      {"Phong", "with points pt 5 ps 1.3 lc rgb '#7570b3'", mode("Phong", 1), true, false},
+      {"Gouraud, 4 samples", "with points pt 6 ps 1.3 lc rgb '#d95f02'", mode("Gouraud", 4), false, false},
+      {"Phong, 4 samples", "with points pt 4 ps 1.3 lc rgb '#7570b3'", mode("Phong", 4), false, false},
       {"Pareto front", "with lines lw 2 dt 2 lc rgb '#505050'", [](const SweepPoint& p) { return p.pareto; }, false, true},
   };
   // Empty blocks would shift gnuplot's block indices; series without points are left out.

@@ -282,16 +282,19 @@ std::string sweepSection(const Report& r) {
   const SweepResult& w = r.sweep;
   std::string s = "## Run time against error\n\n";
   s += "A unit sphere under one light at " + size(w.width, w.height) + ", tessellated as a UV sphere (segments) "
-       "and an icosphere (subdivisions), against a ground truth the reference ray-casts analytically (exact "
-       "sphere, per-pixel Phong in double: `reference/raycast.h`). Errors are over all pixels and channels in "
-       "8-bit units: RMSE / max / PSNR dB. The silhouette dominates the max (the mesh is inscribed in the "
-       "sphere); RMSE falls as the mesh refines. Pareto: no other setting is both cheaper (compute device ms) "
-       "and closer (compute RMSE).\n\n";
-  s += header({"mesh", "setting", "triangles", "compute ms (wall / device)", "reference ms", "compute error",
-               "reference error", "compute vs reference max diff", "Pareto"});
+       "and an icosphere (subdivisions), shaded flat (lit once per triangle), Gouraud (per vertex) and Phong (per "
+       "pixel), with 1 sample per pixel and, on the icospheres, 4 (`render.shading`, `render.samples`), against a "
+       "ground truth the reference ray-casts analytically (exact sphere, per-pixel Phong in double, 16 samples per "
+       "pixel box-filtered: `reference/raycast.h`). Errors are over all pixels and channels in 8-bit units: RMSE / "
+       "max / PSNR dB. The silhouette dominates the max (the mesh is inscribed in the sphere); RMSE falls as the "
+       "mesh refines. Pareto: no other setting, of any mode, is both cheaper (compute device ms) and closer "
+       "(compute RMSE).\n\n";
+  s += "**What the front shows:** " + frontFinding(w) + "\n\n";
+  s += header({"shading", "samples", "mesh", "setting", "triangles", "compute ms (wall / device)", "reference ms",
+               "compute error", "reference error", "compute vs reference max diff", "Pareto"});
   for (const SweepPoint& p : w.points) {
-    s += row({p.mesh, p.setting, count(p.triangles), timing(p.compute), number(p.referenceMs, 2),
-              errorOf(p.computeError), errorOf(p.referenceError), diff(p.computeVsReference),
+    s += row({p.shading, std::to_string(p.samples), p.mesh, p.setting, count(p.triangles), timing(p.compute),
+              number(p.referenceMs, 2), errorOf(p.computeError), errorOf(p.referenceError), diff(p.computeVsReference),
               p.pareto ? "**front**" : ""});
   }
   s += "\n";

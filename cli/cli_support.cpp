@@ -36,8 +36,16 @@ int guarded(const std::function<int()>& command) {
 }
 
 Scene sizedAsAsked(const Scene& scene, const ViewOptions& options) {
-  if (options.width <= 0 && options.height <= 0) return scene;
-  return scene.withImageSize(options.width, options.height);
+  std::string render;
+  auto add = [&](const char* key, const std::string& value) {
+    render += std::string(render.empty() ? "{" : ", ") + "\"" + key + "\": " + value;
+  };
+  if (!options.shading.empty()) add("shading", "\"" + options.shading + "\"");
+  if (!options.specular.empty()) add("specular", "\"" + options.specular + "\"");
+  if (options.samples > 0) add("samples", std::to_string(options.samples));
+  const Scene rendered = render.empty() ? scene : scene.withRender(render + "}");
+  if (options.width <= 0 && options.height <= 0) return rendered;
+  return rendered.withImageSize(options.width, options.height);
 }
 
 Scene loadEveryFrameValidated(const ViewOptions& options) {

@@ -26,7 +26,8 @@ double msSince(Clock::time_point start);
 // Runs a command, turning each kind of failure into its message on stderr and its exit code.
 int guarded(const std::function<int()>& command);
 
-// `scene` at the size the options ask for (--width/--height), or its own.
+// `scene` at the size the options ask for (--width/--height) and with the render options they set
+// (--shading, --specular, --samples), or as it is.
 Scene sizedAsAsked(const Scene& scene, const ViewOptions& options);
 
 // The scene the options name, at the asked size, every frame of an animated scene validated first

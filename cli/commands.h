@@ -25,6 +25,9 @@ struct ViewOptions {
   double maxMemoryGb = 0;  // --max-memory-gb: the scene memory limit (0: the default, setMemoryLimit)
   bool validate = false;
   int pngLevel = PNG_LEVEL_DEFAULT;  // deflate level of every PNG the command writes
+  std::string shading;  // --shading, --specular, --samples: override the scene's "render" ("", 0: its own)
+  std::string specular;
+  int samples = 0;
 };
 
 struct RenderOptions : ViewOptions {

@@ -27,6 +27,12 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
   command->add_option("--max-memory-gb", options.maxMemoryGb,
                       "Memory a scene may take, in GiB (default: the machine's memory, or PHONGVK_MAX_MEMORY_GB)")
       ->check(CLI::PositiveNumber);
+  command->add_option("--shading", options.shading, "gouraud, flat or phong: overrides the scene's render.shading")
+      ->check(CLI::IsMember({"gouraud", "flat", "phong"}));
+  command->add_option("--specular", options.specular, "phong or blinn: overrides the scene's render.specular")
+      ->check(CLI::IsMember({"phong", "blinn"}));
+  command->add_option("--samples", options.samples, "1, 4, 9 or 16 samples per pixel: overrides render.samples")
+      ->check(CLI::IsMember({1, 4, 9, 16}));
   command->add_option("--png-level", options.pngLevel,
                       "PNG deflate level: 0 (stored, largest) to 12 (smallest, slowest); the same pixels at every "
                       "level (default " + std::to_string(phongvk::PNG_LEVEL_DEFAULT) + ", the fastest)")

@@ -183,8 +183,8 @@ void GpuRenderer::updateDescriptors() {
 
 // Sends only what changed since the last frame: the scene's frame as makeFrame built it, the
 // objects, materials and lights where they differ, and the pass control (writeControl). Vertex
-// colours are recomputed only when their inputs changed: materials, lights, ambient, or the eye
-// when some material is specular.
+// colours are recomputed only when their inputs changed: materials, lights, ambient, the shading
+// mode or specular model, or the eye when some material is specular.
 void GpuRenderer::uploadFrame(const FrameInputs& in) {
   const bool materialsChanged = uploadIfChanged(context_, materials_.buffer, in.materials, lastMaterials_, "materials");
   const bool lightsChanged = uploadIfChanged(context_, lights_.buffer, in.lights, lastLights_, "lights");
@@ -195,7 +195,9 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
                               f.forward != frame_.forward || f.focal != frame_.focal;
   const bool eyeMoved = !framesSent_ || f.eye != frame_.eye;
   const bool ambientChanged = !framesSent_ || f.ambient != frame_.ambient;
-  const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged ||
+  // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.
+  const bool modelChanged = !framesSent_ || f.shading != frame_.shading || f.specular != frame_.specular;
+  const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged || modelChanged ||
                            (eyeMoved && !lightingIsViewIndependent(in));
   frame_ = f;
   uploadToBuffer(context_, frameBuffer_, &frame_, sizeof(FrameData));

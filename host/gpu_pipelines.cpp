@@ -14,6 +14,10 @@
 #include "shaders/raster_triangles_exact.spv.h"
 #include "shaders/resolve_large.spv.h"
 #include "shaders/resolve_large_exact.spv.h"
+#include "shaders/resolve_large_keys.spv.h"
+#include "shaders/resolve_large_keys_exact.spv.h"
+#include "shaders/resolve_lit.spv.h"
+#include "shaders/resolve_lit_exact.spv.h"
 #include "shaders/resolve_small.spv.h"
 #include "shaders/resolve_small_exact.spv.h"
 #include "shaders/shade_vertices.spv.h"
@@ -49,6 +53,8 @@ constexpr ShaderCode SHADERS[][2] = {
     {SHADER(bin_large), SHADER(bin_large_exact)},
     {SHADER(fill_background), SHADER(fill_background_exact)},
     {SHADER(pack_colors), SHADER(pack_colors_exact)},
+    {SHADER(resolve_lit), SHADER(resolve_lit_exact)},
+    {SHADER(resolve_large_keys), SHADER(resolve_large_keys_exact)},
 };
 
 #undef SHADER
@@ -80,9 +86,9 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::pair<std::vector<uint32_t>, std::future<ComputePipeline>>> pending;
   for (const PipelineRequest& r : requests) {
-    std::vector<uint32_t> key = pipelineKey(r.pass, r.specs);
+    std::vector<uint32_t> key = pipelineKey(r.shader(), r.specs);
     if (pipelines_.count(key) != 0) continue;
-    const ShaderCode code = SHADERS[r.pass][exactFloats_ ? 1 : 0];
+    const ShaderCode code = SHADERS[r.shader()][exactFloats_ ? 1 : 0];
     pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
                            return createComputePipeline(context_, code.spirv, code.bytes, SHARED_BINDINGS, 0, specs);
                          }));
@@ -103,19 +109,21 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
 
 // The pipeline compilePipelines made for `request`.
 const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) const {
-  return pipelines_.at(pipelineKey(request.pass, request.specs));
+  return pipelines_.at(pipelineKey(request.shader(), request.specs));
 }
 
-// Every pass's pipeline for frames with these materials, lights and interpolation mode, and the
-// resolve passes for the bins' lists taken in chunks once a frame needed it (listChunk_). Frames
+// Every pass's pipeline for frames with these materials and lights and the frame's interpolation,
+// shading and specular model, and the resolve passes for the bins' lists taken in chunks once a
+// frame needed it (listChunk_). Frames
 // with keys (for diffs) compile their own resolve pipelines when first asked for: resolve keeps
 // the final keys and writes the colour buffer (RESOLVE_OUTPUT_KEEP_KEYS) after the background
 // pass. Without keys the colours go to the key slots, where the host reads them (colorsInKeys_) or
 // the pack pass packs them into the colour buffer.
 std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::vector<MaterialData>& materials,
-                                                                   size_t lightCount, uint32_t interpolation,
+                                                                   size_t lightCount, const FrameData& frame,
                                                                    bool withKeys) const {
   const uint32_t output = withKeys ? RESOLVE_OUTPUT_KEEP_KEYS : RESOLVE_OUTPUT_KEY_SLOTS;
+  const uint32_t interpolation = frame.interpolation;
   std::vector<PipelineRequest> requests = {
       {SHADE, shadeSpecs(materials, lightCount)},
       {RASTER, {}},
@@ -124,8 +132,20 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
       {RESOLVE_LARGE,
        {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
   };
-  if (listChunk_ != 0u) {  // only then: every other frame keeps the pipelines (and cache entries) it had
+  // Only where they differ from the defaults: a Gouraud frame of whole lists keeps the pipelines
+  // (and pipeline cache entries) it always had. requests[p] is pass p's request up to RESOLVE_LARGE.
+  if (listChunk_ != 0u || frame.shading != SHADING_GOURAUD) requests[RESOLVE_LARGE].code = RESOLVE_LARGE_KEYS;
+  if (listChunk_ != 0u) {
     for (Pass pass : {RESOLVE_SMALL, RESOLVE_LARGE}) requests[pass].specs.push_back({SPEC_LIST_CHUNK, listChunk_});
+  }
+  if (frame.shading != SHADING_GOURAUD) {  // lit per pixel: resolve_lit as the second resolve, with the lights
+    requests[RESOLVE_SMALL].code = RESOLVE_LIT;
+    const std::vector<SpecConstant> lighting = shadeSpecs(materials, lightCount);
+    requests[RESOLVE_SMALL].specs.insert(requests[RESOLVE_SMALL].specs.end(), lighting.begin(), lighting.end());
+    for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_SHADING, frame.shading});
+  }
+  if (frame.specular == SPECULAR_BLINN) {
+    for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_BLINN, 1u});
   }
   if (binPass_) requests.push_back({BIN_LARGE, {}});
   if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background
@@ -136,8 +156,7 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
 bool GpuRenderer::packsColors(bool withKeys) const { return !withKeys && !colorsInKeys_; }
 
 void GpuRenderer::selectPipelines(const FrameInputs& in) {
-  const std::vector<PipelineRequest> requests =
-      requestsFor(in.materials, in.lights.size(), in.frame.interpolation, withKeys_);
+  const std::vector<PipelineRequest> requests = requestsFor(in.materials, in.lights.size(), in.frame, withKeys_);
   compilePipelines(requests);
   for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);
 }

@@ -41,8 +41,11 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
   try {
     // What the scene's frames will use, all at once; the raster pass's set layout serves every
     // pass (updateDescriptors).
-    const std::vector<PipelineRequest> requests =
-        requestsFor(data.materials, data.lights.size(), data.interpolation, false);
+    FrameData modes{};
+    modes.interpolation = data.interpolation;
+    modes.shading = data.shading;
+    modes.specular = data.specular;
+    const std::vector<PipelineRequest> requests = requestsFor(data.materials, data.lights.size(), modes, false);
     compilePipelines(requests);
     current_[RASTER] = pipeline(requests[RASTER]);
     createDescriptorArena(arena_, context_, 1, std::size(SHARED_BINDINGS));

@@ -91,14 +91,20 @@ class GpuRenderer {
   uint64_t framesTransformed() const { return framesTransformed_; }
 
  private:
-  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, PASS_COUNT };
+  // The passes a frame records, then shader builds that stand in for one: RESOLVE_LIT runs
+  // RESOLVE_SMALL in frames lit per pixel (flat and Phong shading), RESOLVE_LARGE_KEYS runs
+  // RESOLVE_LARGE where it keeps only keys (those frames, and lists taken in rounds).
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, RESOLVE_LIT, RESOLVE_LARGE_KEYS, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 
-  // A pass and the specialization constants it is compiled with.
+  // A pass, the shader build that runs it (the pass's own, or a variant: RESOLVE_LIT,
+  // RESOLVE_LARGE_KEYS) and the specialization constants it is compiled with.
   struct PipelineRequest {
     Pass pass;
     std::vector<SpecConstant> specs;
+    Pass code = PASS_COUNT;  // PASS_COUNT: the pass's own shader
+    Pass shader() const { return code == PASS_COUNT ? pass : code; }
   };
 
   // The frame loop (gpu_renderer.cpp).
@@ -110,7 +116,7 @@ class GpuRenderer {
 
   // Pipelines (gpu_pipelines.cpp).
   std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
-                                          uint32_t interpolation, bool withKeys) const;
+                                          const gpu::FrameData& frame, bool withKeys) const;
   // Whether the pack pass moves the frame's colours from the key slots into the colour buffer.
   bool packsColors(bool withKeys) const;
   void compilePipelines(const std::vector<PipelineRequest>& requests);

@@ -16,9 +16,27 @@ bool keysDiffer(const std::vector<uint64_t>& a, const std::vector<uint64_t>& b, 
   return static_cast<uint32_t>(a[i]) != static_cast<uint32_t>(b[i]) || ((a[i] == ~0ull) != (b[i] == ~0ull));
 }
 
-bool haveKeys(const Image& a, const std::vector<uint64_t>& keysA, const std::vector<uint64_t>& keysB) {
+// How many keys a side the images' pixels have: 1, or with samples per pixel (render.samples) the
+// side of their grid, the keys then those of an image `side` times wider and higher; 0 when the
+// keys cannot be compared (none, or counts that fit neither).
+int keySide(const Image& a, const std::vector<uint64_t>& keysA, const std::vector<uint64_t>& keysB) {
   const size_t n = static_cast<size_t>(a.width) * a.height;
-  return keysA.size() == n && keysB.size() == n;
+  for (size_t side = 1; side <= 4 && keysA.size() == keysB.size(); ++side) {
+    if (keysA.size() == n * side * side) return int(side);
+  }
+  return 0;
+}
+
+// Whether any sample of pixel i has another winner in a than in b.
+bool pixelKeysDiffer(const std::vector<uint64_t>& a, const std::vector<uint64_t>& b, size_t i, int width, int side) {
+  if (side == 1) return keysDiffer(a, b, i);
+  const size_t x = i % size_t(width), y = i / size_t(width), rowKeys = size_t(width) * side;
+  for (size_t j = 0; j < size_t(side); ++j) {
+    for (size_t k = 0; k < size_t(side); ++k) {
+      if (keysDiffer(a, b, (y * side + j) * rowKeys + x * side + k)) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -39,7 +57,8 @@ DiffStats compareImages(const Image& a, const Image& b, const std::vector<uint64
   s.width = a.width;
   s.height = a.height;
   s.pixels = static_cast<uint64_t>(a.width) * a.height;
-  s.keysCompared = haveKeys(a, keysA, keysB);
+  const int side = keySide(a, keysA, keysB);
+  s.keysCompared = side != 0;
   std::array<uint64_t, 3> sum{};
   double squared = 0;
   for (size_t i = 0; i < s.pixels; ++i) {
@@ -52,7 +71,7 @@ DiffStats compareImages(const Image& a, const Image& b, const std::vector<uint64
       squared += double(d) * d;
     }
     s.differing += differs;
-    if (s.keysCompared && keysDiffer(keysA, keysB, i)) ++s.triangleMismatch;
+    if (s.keysCompared && pixelKeysDiffer(keysA, keysB, i, a.width, side)) ++s.triangleMismatch;
   }
   for (int c = 0; c < 3; ++c) s.meanAbs[c] = s.pixels ? double(sum[c]) / double(s.pixels) : 0.0;
   const double mse = s.pixels ? squared / (3.0 * double(s.pixels)) : 0.0;
@@ -64,12 +83,12 @@ Image diffHeatmap(const Image& a, const Image& b, const std::vector<uint64_t>& k
                   const std::vector<uint64_t>& keysB) {
   compareImages(a, b);  // size check
   Image heat(a.width, a.height);
-  const bool keys = haveKeys(a, keysA, keysB);
+  const int side = keySide(a, keysA, keysB);
   for (size_t i = 0; i < static_cast<size_t>(a.width) * a.height; ++i) {
     int d = 0;
     for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.rgb[i * 3 + c]) - int(b.rgb[i * 3 + c])));
     const uint8_t level = d == 0 ? 0 : static_cast<uint8_t>(std::min(255, std::max(64, d * 16)));
-    const bool wrongTriangle = keys && keysDiffer(keysA, keysB, i);
+    const bool wrongTriangle = side != 0 && pixelKeysDiffer(keysA, keysB, i, a.width, side);
     heat.rgb[i * 3 + 0] = wrongTriangle ? 0 : level;
     heat.rgb[i * 3 + 1] = wrongTriangle ? 0 : level;
     heat.rgb[i * 3 + 2] = wrongTriangle ? 255 : level;

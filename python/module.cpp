@@ -271,6 +271,13 @@ others.)")
                              "Frames of the scene's animation (1 for a scene without an \"animate\" block).")
       .def("frame", &Scene::frame, py::arg("index"),
            "Frame `index` of the scene's animation, validated like a scene file (IndexError when out of range).")
+      .def(
+          "with_render",
+          [](const Scene& s, const py::kwargs& options) { return s.withRender(JsonWriter("").write(options)); },
+          R"(The same scene with some of its "render" options replaced, e.g.
+with_render(shading="phong", samples=4): shading ("gouraud", "flat", "phong"), specular ("phong",
+"blinn"), samples (1, 4, 9, 16), interpolation ("perspective", "screen"). Checked like a scene
+file's; a bad value raises SceneError naming render.KEY.)")
       .def("add_mesh", &addMesh, py::arg("vertices"), py::arg("faces"), py::arg("normals") = py::none(),
            py::arg("material") = py::none(), py::arg("closed") = false,
            R"(Adds a triangle mesh object.

@@ -3,6 +3,7 @@
 #include "image/packed_pixels.h"
 #include "shaders/gouraud.h"
 #include "shaders/phong.h"
+#include "shaders/pixel_shading.h"
 #include "shaders/triangle_setup.h"
 
 #include <algorithm>
@@ -19,8 +20,9 @@ std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs
     const MaterialData m = vertexMaterial(in.materials[object.material], v.color);
     const vec3 P = lightingPosition(v.position, object.lightOffset);
     const vec3 V = toEye(P, in.frame.eye);
+    const bool blinn = in.frame.specular == SPECULAR_BLINN;
     vec3 color = phongAmbient(m, in.frame.ambient);
-    for (const LightData& light : in.lights) color += phongLight(P, v.normal, V, m, light);
+    for (const LightData& light : in.lights) color += phongLightModel(P, v.normal, V, m, light, blinn);
     shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, in.frame), 1.0f);
     shaded[i].color = vec4(color, 1.0f);
   }
@@ -52,8 +54,33 @@ std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedV
   return keys;
 }
 
-Image resolve(const SceneData& data, const std::vector<ShadedVertex>& shaded,
-              const std::vector<uint64_t>& keys, const FrameData& frame) {
+namespace {
+
+// Flat or Phong shading: triangle `tri`'s surface at pixel (x, y), lit with the frame's lights.
+uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
+                  glm::uvec4 tri, int x, int y) {
+  const ObjectData& object = in.objects[tri.w];
+  const MaterialData& m = in.materials[object.material];
+  const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
+  SurfacePoint s;
+  if (in.frame.shading == SHADING_FLAT) {
+    s = flatSurface(a, b, c, object.lightOffset, m);
+  } else {
+    const GouraudTriangle g = gouraudTriangle(shaded[tri.x], shaded[tri.y], shaded[tri.z]);
+    s = phongSurface(a, b, c, object.lightOffset, m,
+                     barycentrics(g, pixelRay(x, y, in.frame.principal), in.frame.interpolation));
+  }
+  const vec3 V = toEye(s.P, in.frame.eye);
+  vec3 color = phongAmbient(s.m, in.frame.ambient);
+  for (const LightData& light : in.lights) color += phongLightModel(s.P, s.N, V, s.m, light, in.frame.specular == SPECULAR_BLINN);
+  return packColor(color);
+}
+
+}  // namespace
+
+Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
+              const std::vector<uint64_t>& keys) {
+  const FrameData& frame = in.frame;
   std::vector<uint32_t> packed(keys.size());
   const uint32_t background = packColor(frame.background);
   for (uint32_t y = 0; y < frame.height; ++y) {
@@ -64,7 +91,9 @@ Image resolve(const SceneData& data, const std::vector<ShadedVertex>& shaded,
         continue;
       }
       const glm::uvec4 tri = data.triangles[static_cast<uint32_t>(keys[i])];
-      packed[i] = resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame, frame.interpolation);
+      packed[i] = frame.shading == SHADING_GOURAUD
+                      ? resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame, frame.interpolation)
+                      : litPixel(data, in, shaded, tri, int(x), int(y));
     }
   }
   return imageFromPacked(packed, int(frame.width), int(frame.height));
@@ -74,7 +103,7 @@ RenderOutput renderReference(const SceneData& data, const FrameInputs& in) {
   const std::vector<ShadedVertex> shaded = shadeVertices(data, in);
   RenderOutput out;
   out.keys = rasterize(data, shaded, in.frame);
-  out.image = resolve(data, shaded, out.keys, in.frame);
+  out.image = resolve(data, in, shaded, out.keys);
   return out;
 }
 

@@ -1,5 +1,5 @@
 // render_reference.h — the CPU reference renderer: plain, single-threaded loops over the shared
-// maths (shaders/phong.h, triangle_setup.h, gouraud.h). It is the oracle every GPU image is
+// maths (shaders/phong.h, triangle_setup.h, gouraud.h, pixel_shading.h). It is the oracle every GPU image is
 // diffed with.
 #pragma once
 
@@ -18,9 +18,10 @@ std::vector<gpu::ShadedVertex> shadeVertices(const SceneData& data, const FrameI
 std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<gpu::ShadedVertex>& shaded,
                                 const gpu::FrameData& frame);
 
-// Keys -> Gouraud colours -> image (the resolve pass).
-Image resolve(const SceneData& data, const std::vector<gpu::ShadedVertex>& shaded,
-              const std::vector<uint64_t>& keys, const gpu::FrameData& frame);
+// Keys -> colours -> image (the resolve passes): the winner's Gouraud colour, or with flat and
+// Phong shading its surface lit at the pixel (shaders/pixel_shading.h).
+Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<gpu::ShadedVertex>& shaded,
+              const std::vector<uint64_t>& keys);
 
 RenderOutput renderReference(const SceneData& data, const FrameInputs& in);
 

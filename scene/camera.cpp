@@ -47,6 +47,15 @@ View makeView(const CameraSpec& camera) {
   return view;
 }
 
+int sampleGridSide(int samples) { return int(std::lround(std::sqrt(double(samples)))); }
+
+View supersampled(View view, int side) {
+  view.width *= side;
+  view.height *= side;
+  view.focal *= side;
+  return view;
+}
+
 CameraSpec withImageSize(CameraSpec camera, int width, int height) {
   camera.width = width;
   camera.height = height;

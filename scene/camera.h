@@ -27,6 +27,14 @@ inline constexpr int MAX_IMAGE_SIDE = 16384;
 // an image size out of 1..MAX_IMAGE_SIDE or up parallel to the direction.
 View makeView(const CameraSpec& camera);
 
+// Samples per pixel (1, 4, 9, 16) as the side of their square grid (1 to 4).
+int sampleGridSide(int samples);
+
+// `view` with `side` x `side` samples per pixel: side times the width, height and focal length,
+// so sample (i, j) of pixel (x, y) is pixel (side x + i, side y + j), its centre at
+// (x + (i + 0.5) / side, y + (j + 0.5) / side) of the image.
+View supersampled(View view, int side);
+
 // The same camera rendered at width x height (the CLI's --width/--height): the vertical field of
 // view is kept and the aspect follows the new size.
 CameraSpec withImageSize(CameraSpec camera, int width, int height);

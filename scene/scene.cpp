@@ -6,7 +6,9 @@
 #include "scene/animate.h"
 #include "scene/scene_sections.h"
 
+#include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -20,17 +22,37 @@ using namespace scenejson;
 // "animate" is read by SceneSequence (animate.h), which hands readScene each frame without it.
 const Keys kSceneKeys = {"camera",  "background", "ambient", "lights",
                          "materials", "objects",    "render",  "animate"};
-const Keys kRenderKeys = {"interpolation"};
+const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples"};
 
-Interpolation readRender(const Node& node) {
+// The value of an enumerated option: the index of `node`'s string among `names` (joined for the
+// message when it is none of them).
+template <typename E, size_t N>
+E choice(const Node& node, const std::array<const char*, N>& names) {
+  const std::string value = string(node);
+  std::string list;
+  for (size_t i = 0; i < N; ++i) {
+    if (value == names[i]) return E(i);
+    list += (i ? ", " : "") + std::string(names[i]);
+  }
+  node.fail("must be one of " + list + ", got '" + value + "'");
+}
+
+// Samples per pixel: a square of 1 to 4 on a side.
+int samplesPerPixel(const Node& node) {
+  const int samples = integer(node, 1, 16);
+  const int side = int(std::lround(std::sqrt(double(samples))));
+  if (side * side != samples) node.fail("must be 1, 4, 9 or 16 (a regular grid of samples per pixel), got " + std::to_string(samples));
+  return samples;
+}
+
+// "render": interpolation, shading, specular model and samples per pixel (docs/DESIGN.md).
+void readRender(const Node& node, SceneSpec& scene) {
   requireObject(node);
   checkKeys(node, kRenderKeys);
-  auto interpolation = node.find("interpolation");
-  if (!interpolation) return Interpolation::Perspective;
-  std::string mode = string(*interpolation);
-  if (mode == "perspective") return Interpolation::Perspective;
-  if (mode == "screen") return Interpolation::Screen;
-  interpolation->fail("must be one of perspective, screen, got '" + mode + "'");
+  if (auto v = node.find("interpolation")) scene.interpolation = choice<Interpolation>(*v, std::array{"perspective", "screen"});
+  if (auto v = node.find("shading")) scene.shading = choice<Shading>(*v, std::array{"gouraud", "flat", "phong"});
+  if (auto v = node.find("specular")) scene.specular = choice<Specular>(*v, std::array{"phong", "blinn"});
+  if (auto v = node.find("samples")) scene.samples = samplesPerPixel(*v);
 }
 
 }  // namespace
@@ -49,11 +71,17 @@ SceneSpec readScene(const Node& root, const std::string& path, const std::string
   MaterialTable materials(scene);
   if (auto named = root.find("materials")) materials.readNamed(*named);
   scene.objects = readObjects(root.require("objects"), baseDir, materials, objectsLater);
-  if (auto render = root.find("render")) scene.interpolation = readRender(*render);
+  if (auto render = root.find("render")) readRender(*render, scene);
   return scene;
 }
 
 }  // namespace scenejson
+
+SceneSpec withRenderOptions(SceneSpec scene, const std::string& json) {
+  const Json value = parseJson(json, scene.path);
+  readRender(Node(value, "render", scene.path), scene);
+  return scene;
+}
 
 std::string readSceneText(const std::string& path) {
   if (auto reason = unreadableReason(path)) {

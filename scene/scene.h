@@ -65,6 +65,8 @@ struct Mesh;  // mesh.h
 
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
 enum class Interpolation { Perspective, Screen };
+enum class Shading { Gouraud, Flat, Phong };
+enum class Specular { Phong, Blinn };
 enum class UpAxis { Z, Y };
 
 struct Object {
@@ -103,7 +105,14 @@ struct SceneSpec {
   std::optional<int> defaultMaterial;      // the default material's index, once an object took it
   std::vector<Object> objects;
   Interpolation interpolation = Interpolation::Perspective;
+  Shading shading = Shading::Gouraud;
+  Specular specular = Specular::Phong;
+  int samples = 1;  // per pixel: 1, 4, 9 or 16
 };
+
+// `scene` with the "render" options in `json` (a JSON object of render keys) replacing its own,
+// validated as a scene file's "render". Throws SceneError.
+SceneSpec withRenderOptions(SceneSpec scene, const std::string& json);
 
 // Reads and validates a scene file. Throws SceneError naming the file and the JSON path.
 // A file with an "animate" block gives its frame 0 (animate.h has the other frames).

@@ -118,6 +118,11 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
   data.background = scene.background;
   data.ambient = scene.ambient;
   data.interpolation = scene.interpolation == Interpolation::Screen ? gpu::INTERP_SCREEN : gpu::INTERP_PERSPECTIVE;
+  data.shading = scene.shading == Shading::Flat ? gpu::SHADING_FLAT
+                 : scene.shading == Shading::Phong ? gpu::SHADING_PHONG
+                                                  : gpu::SHADING_GOURAUD;
+  data.specular = scene.specular == Specular::Blinn ? gpu::SPECULAR_BLINN : gpu::SPECULAR_PHONG;
+  data.samples = scene.samples;
 }
 
 namespace {
@@ -159,6 +164,8 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   f.width = static_cast<uint32_t>(view.width);
   f.height = static_cast<uint32_t>(view.height);
   f.interpolation = data.interpolation;
+  f.shading = data.shading;
+  f.specular = data.specular;
   f.eye = glm::vec3(view.eye - data.lightingOrigin);
 
   in.objects = data.objects;

@@ -28,6 +28,9 @@ struct SceneData {
   glm::vec3 background{0.0f};
   glm::vec3 ambient{1.0f};
   uint32_t interpolation = gpu::INTERP_PERSPECTIVE;
+  uint32_t shading = gpu::SHADING_GOURAUD;
+  uint32_t specular = gpu::SPECULAR_PHONG;
+  int samples = 1;  // per pixel, on a regular grid (1, 4, 9 or 16): the frame is rendered this many times larger
 };
 
 // One frame's inputs to either renderer: the frame constants, the per-object offsets from the eye,
@@ -49,7 +52,7 @@ SceneData buildSceneData(const SceneSpec& scene);
 bool sameGeometry(const SceneSpec& a, const SceneSpec& b);
 
 // Replaces what a frame of a sequence may change without touching geometry: materials, lights,
-// ambient, background and interpolation. The scene must have the same objects as `data`'s.
+// ambient, background and the render options. The scene must have the same objects as `data`'s.
 void refreshShading(SceneData& data, const SceneSpec& scene);
 
 // True when the vertex colours do not depend on where the eye is: no light, or no material with

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates docs/gallery/ from scenes/paper/: a still for each Fig. 1 scene and a contact sheet
-# for each sequence (Figs. 2-7), and prints how long each took. See docs/gallery.md.
+# for each sequence (Figs. 2-7), then the shading modes and samples side by side
+# (scenes/shading/), and prints how long each took. See docs/gallery.md.
 #
 #   scripts/gallery.sh                      # builds build/ if needed, renders on the GPU backend
 #   BUILD_DIR=build-rel BACKEND=cpu scripts/gallery.sh
@@ -8,7 +9,8 @@
 # Sizes are kept small so the committed PNGs stay at a few hundred KB in all and the whole run
 # takes seconds on a 2-core machine with lavapipe: stills at 360x240; sequences rendered at
 # 240x160, every 10th frame of a 120-frame sequence (12 frames), box-filtered to 120 px wide
-# thumbnails. The frames themselves go to a temporary folder and are deleted.
+# thumbnails. The frames themselves go to a temporary folder and are deleted. The committed PNGs
+# are written at the smallest PNG level (12): the same pixels as any level.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -48,7 +50,7 @@ timed() {
 still() {
   local name="$1"
   timed "$out/$name.png" "scenes/paper/$name.json" \
-    "$phongvk" render "scenes/paper/$name.json" -o "$out/$name.png" --width 360 --height 240 --backend "$backend"
+    "$phongvk" render "scenes/paper/$name.json" -o "$out/$name.png" --width 360 --height 240 --backend "$backend" --png-level 12
 }
 
 # sheet NAME RANGE: a contact sheet of the frames RANGE selects (--frames syntax).
@@ -56,7 +58,16 @@ sheet() {
   local name="$1" range="$2"
   timed "$out/$name.png" "scenes/paper/$name.json --frames $range" \
     "$phongvk" sequence "scenes/paper/$name.json" -o "$frames/$name" --frames "$range" \
-    --width 240 --height 160 --sheet "$out/$name.png" --thumb-width 120 --backend "$backend"
+    --width 240 --height 160 --sheet "$out/$name.png" --thumb-width 120 --backend "$backend" --png-level 12
+}
+
+# modes NAME: the six frames of scenes/shading/NAME.json (one scene, one render option each)
+# side by side at the scene's own size.
+modes() {
+  local name="$1"
+  timed "$out/shading_$name.png" "scenes/shading/$name.json" \
+    "$phongvk" sequence "scenes/shading/$name.json" -o "$frames/$name" --sheet "$out/shading_$name.png" \
+    --thumb-width 360 --backend "$backend" --png-level 12
 }
 
 total_start="$(now_ms)"
@@ -68,5 +79,7 @@ sheet fig4_ka_sweep 0:120:10
 sheet fig5_ks_sweep 0:120:10
 sheet fig6_orbit_red 0:120:10
 sheet fig7_orbit_white_red 0:120:10
+modes modes
+modes samples
 total_ms=$(( $(now_ms) - total_start ))
 echo "total: $((total_ms / 1000)).$(printf '%03d' $((total_ms % 1000))) s, $(du -ch "$out"/*.png | tail -1 | cut -f1) of PNG in $out"

@@ -49,8 +49,10 @@ FN GouraudTriangle gouraudTriangle(ShadedVertex a, ShadedVertex b, ShadedVertex 
   return g;
 }
 
-// The colour interpolated at pixel ray p, perspective-correct or linear in screen space.
-FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
+// The barycentrics of vertices 1 and 2 at pixel ray p, perspective-correct or linear in screen
+// space, each held to [0, 1]: what Gouraud interpolates colours with, and Phong shading positions,
+// normals and colours (pixel_shading.h).
+FN vec2 barycentrics(GouraudTriangle g, vec3 p, uint mode) {
   PRECISE float d1 = dot3(p, g.u1);
   PRECISE float d2 = dot3(p, g.u2);
   PRECISE float b1;
@@ -67,7 +69,13 @@ FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
   // Held to [0, 1] (NaN to 0): only pixels covered thanks to snapping extrapolate.
   b1 = b1 >= 0.0f ? (b1 <= 1.0f ? b1 : 1.0f) : 0.0f;
   b2 = b2 >= 0.0f ? (b2 <= 1.0f ? b2 : 1.0f) : 0.0f;
-  PRECISE vec3 c = g.c0 + b1 * g.dc1 + b2 * g.dc2;
+  return vec2(b1, b2);
+}
+
+// The colour interpolated at pixel ray p, perspective-correct or linear in screen space.
+FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
+  vec2 b = barycentrics(g, p, mode);
+  PRECISE vec3 c = g.c0 + b.x * g.dc1 + b.y * g.dc2;
   return c;
 }
 

@@ -82,14 +82,29 @@ FN float exp2Small(float y) {  // y < 0.5; results below 2^-125 are 0 (never sub
 
 FN float powPositive(float x, float n) { return exp2Small(n * log2Positive(x)); }
 
+// The specular highlight's base: the paper's r.V with r = 2(N.l)N - l, or with `blinn` N.h, h the
+// unit half vector between l and V (0 where l + V is 0: the light exactly behind the eye's view).
+FN float specularBase(vec3 N, vec3 l, vec3 V, float NdotL, bool blinn) {
+  if (blinn) {
+    PRECISE vec3 sum = l + V;
+    PRECISE float len = squareRoot(dot3(sum, sum));
+    PRECISE float NdotH = len > 0.0f ? divide(dot3(N, sum), len) : 0.0f;
+    return NdotH;
+  }
+  PRECISE vec3 r = 2.0f * NdotL * N - l;
+  PRECISE float rV = dot3(r, V);
+  return rV;
+}
+
 // One light's diffuse + specular contribution at P (all positions relative to the lighting origin):
-// S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0.
+// S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0; with
+// `blinn`, max(N.h, 0)^n instead of max(r.V, 0)^n (specularBase).
 // `specular` and `constantAttenuation` let a shader specialized to the scene skip work whose
 // result is known: with ks = 0 the specular term adds exactly +0, and with b = c = 0 the
 // attenuation 1 / (a + b d + c d^2) is exactly 1 / a. Either way the result is bit-identical to
 // the general case (both flags true / false), which the reference uses.
 FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, bool specular,
-                       bool constantAttenuation) {
+                       bool constantAttenuation, bool blinn) {
   PRECISE vec3 toLight = light.position - P;
   PRECISE float d = lightDistance(toLight);
   if (d == 0.0f) return vec3(0.0f);  // a light exactly at the vertex adds nothing
@@ -101,8 +116,7 @@ FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, 
                              : divide(1.0f, m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));
   PRECISE float shade = held(m.kd * NdotL);
   if (specular) {
-    PRECISE vec3 r = 2.0f * NdotL * N - l;
-    PRECISE float rV = max(dot3(r, V), 0.0f);
+    PRECISE float rV = max(specularBase(N, l, V, NdotL, blinn), 0.0f);
     // max(r.V, 0)^n with n = 0 is 1; 0^n is 0 for n > 0.
     PRECISE float highlight = m.n == 0.0f ? 1.0f : (rV > 0.0f ? powPositive(rV, m.n) : 0.0f);
     shade = shade + held(m.ks * highlight);
@@ -112,8 +126,13 @@ FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, 
   return lit;
 }
 
+// The general case, the paper's specular model or (`blinn`) Blinn's.
+FN vec3 phongLightModel(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, bool blinn) {
+  return phongLightWith(P, N, V, m, light, true, false, blinn);
+}
+
 FN vec3 phongLight(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light) {
-  return phongLightWith(P, N, V, m, light, true, false);
+  return phongLightModel(P, N, V, m, light, false);
 }
 
 // The material as a vertex sees it: C times the vertex's colour (RGBA8, red in the low byte; alpha

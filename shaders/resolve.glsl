@@ -5,11 +5,16 @@
 
 layout(constant_id = SPEC_INTERPOLATION) const uint INTERPOLATION = INTERP_PERSPECTIVE;
 layout(constant_id = SPEC_RESOLVE_OUTPUT) const uint OUTPUT = RESOLVE_OUTPUT_KEY_SLOTS;
-// 0: resolve_large takes each bin's whole list of large triangles and stores the colours where they
-// won. N > 0 (frames whose lists are too long for the loop budget; gpu_layout.h LIST_CHUNK_FIRST):
-// it takes the next N entries of each list per dispatch, in rounds, keeping the smallest keys in
-// the key buffer, and resolve_small then colours every covered pixel of every touched bin.
+// 0: resolve_large takes each bin's whole list of large triangles. N > 0 (frames whose lists are
+// too long for the loop budget; gpu_layout.h LIST_CHUNK_FIRST): its keys build takes the next N
+// entries of each list per dispatch, in rounds, keeping the smallest keys in the key buffer.
 layout(constant_id = SPEC_LIST_CHUNK) const uint LIST_CHUNK = 0u;
+// Flat and Phong shading (render.shading) light each pixel once, from its winning key (deferred):
+// resolve_large's keys build leaves the keys, and resolve_lit lights every covered pixel.
+layout(constant_id = SPEC_SHADING) const uint SHADING = SHADING_GOURAUD;
+// The second resolve pass (resolve_keys.glsl): resolve_large left every winner's key (its keys
+// build) instead of its colour, so every covered pixel of the touched bins is coloured.
+const bool KEYS_ONLY = LIST_CHUNK != 0u || SHADING != SHADING_GOURAUD;
 
 // A touched bin: its first pixel, its flags (shared.h BIN_*), the head of its large-triangle list
 // and its index in the bin grid.

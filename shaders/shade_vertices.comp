@@ -12,6 +12,9 @@ layout(local_size_x = SHADE_GROUP_SIZE) in;
 layout(constant_id = SPEC_LIGHT_COUNT) const uint LIGHT_COUNT = 0u;
 layout(constant_id = SPEC_SPECULAR) const bool SPECULAR = true;
 layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION = false;
+layout(constant_id = SPEC_BLINN) const bool BLINN = false;  // Blinn's half vector (render.specular)
+// Flat and Phong shading light pixels, not vertices (resolve_small.comp): only the positions here.
+layout(constant_id = SPEC_SHADING) const uint SHADING = SHADING_GOURAUD;
 
 void shadeVertex(uint i) {
   VertexIn v = vertexIn(i);
@@ -22,12 +25,12 @@ void shadeVertex(uint i) {
   [[dont_unroll]] for (uint k = control.shadePositions; k != 0u; --k) {
     shadedPositions[i] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
   }
-  if (control.shadeColors == 0u) return;  // lighting inputs unchanged and view-independent
+  if (control.shadeColors == 0u || SHADING != SHADING_GOURAUD) return;  // unchanged, or lit per pixel
   vec3 P = lightingPosition(v.position, object.lightOffset);
   vec3 V = toEye(P, frame.eye);
   vec3 color = phongAmbient(m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
-    color += phongLightWith(P, v.normal, V, m, lightData(l), SPECULAR, CONSTANT_ATTENUATION);
+    color += phongLightWith(P, v.normal, V, m, lightData(l), SPECULAR, CONSTANT_ATTENUATION, BLINN);
   }
   shadedColors[i] = vec4(color, 1.0f);
 }

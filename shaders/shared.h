@@ -43,6 +43,16 @@ PHONGVK_CONST uint MAX_CLIP_VERTICES = 8;
 PHONGVK_CONST uint INTERP_PERSPECTIVE = 0;
 PHONGVK_CONST uint INTERP_SCREEN = 1;
 
+// Shading modes (FrameData.shading; docs/DESIGN.md "Shading"): Gouraud (lit per vertex, colours
+// interpolated), flat (one colour per triangle, lit at its centroid with its face normal) and Phong
+// (lit per pixel, position, normal and colour interpolated).
+PHONGVK_CONST uint SHADING_GOURAUD = 0;
+PHONGVK_CONST uint SHADING_FLAT = 1;
+PHONGVK_CONST uint SHADING_PHONG = 2;
+// Specular models (FrameData.specular): the paper's reflection vector, or Blinn's half vector.
+PHONGVK_CONST uint SPECULAR_PHONG = 0;
+PHONGVK_CONST uint SPECULAR_BLINN = 1;
+
 // Object flags.
 PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are never visible
 
@@ -87,7 +97,9 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(SPEC_RESOLVE_OUTPUT, 5)             \
   X(SPEC_BIN_PASS, 6)                   \
   X(SPEC_SELFTEST_SLOTS, 7)             \
-  X(SPEC_LIST_CHUNK, 8)
+  X(SPEC_LIST_CHUNK, 8)                 \
+  X(SPEC_SHADING, 9)                    \
+  X(SPEC_BLINN, 10)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;
@@ -158,9 +170,9 @@ struct FrameData {
   vec3 eye;          // eye - lighting origin, for the view vector
   uint height;
   uint interpolation;
+  uint shading;      // SHADING_*
+  uint specular;     // SPECULAR_*
   uint pad0;
-  uint pad1;
-  uint pad2;
 };
 
 #ifdef __cplusplus
@@ -174,6 +186,7 @@ static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearP
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);
 static_assert(offsetof(FrameData, width) == 92 && offsetof(FrameData, eye) == 96);
 static_assert(offsetof(FrameData, height) == 108 && offsetof(FrameData, interpolation) == 112);
+static_assert(offsetof(FrameData, shading) == 116 && offsetof(FrameData, specular) == 120);
 static_assert(sizeof(FrameData) == 128);
 
 // Every binding number and specialization-constant id appears once in its table.

@@ -42,13 +42,6 @@ std::vector<std::string> diffedScenes() {
   return scenes;
 }
 
-std::string testName(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  for (char& c : name) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return name;
-}
 
 int pixelDiff(const Image& a, const Image& b, size_t pixel) {
   int d = 0;
@@ -133,7 +126,7 @@ TEST_P(GraphicsSceneDiff, CloseToReferenceAndRepeatable) {
   EXPECT_EQ(first.rgb, second.rgb) << "the raster image changed between runs";
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, GraphicsSceneDiff, ::testing::ValuesIn(diffedScenes()), testName);
+INSTANTIATE_TEST_SUITE_P(Scenes, GraphicsSceneDiff, ::testing::ValuesIn(diffedScenes()), test::pathTestName);
 
 TEST_F(GraphicsBaseline, AmbientOnlyCubeHasExactlyItsColourAndRoundsToNearest) {
   // No lights: every vertex has ka * C * A = C, so every covered pixel is round(C * 255). The

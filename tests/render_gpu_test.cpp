@@ -23,18 +23,6 @@
 namespace phongvk {
 namespace {
 
-std::vector<std::string> allScenes() {
-  std::vector<std::string> scenes;
-  const std::string root = test::sourcePath("scenes");
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-    if (entry.path().extension() == ".json") {
-      scenes.push_back(std::filesystem::relative(entry.path(), test::sourcePath("")).string());
-    }
-  }
-  std::sort(scenes.begin(), scenes.end());
-  return scenes;
-}
-
 class SceneDiff : public ::testing::TestWithParam<std::string> {
  protected:
   // One context and one float probe for all the scenes.
@@ -89,14 +77,7 @@ TEST_P(SceneDiff, GpuMatchesReference) {
       << "the other work layout and colour output, without keys, changed the image";
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, SceneDiff, ::testing::ValuesIn(allScenes()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Scenes, SceneDiff, ::testing::ValuesIn(test::allScenes()), test::pathTestName);
 
 // The same PNG bytes whatever the number of threads lavapipe runs the workgroups on (LP_NUM_THREADS;
 // a GPU ignores it): the atomics' order changes, the smallest key does not. fig1_cube has small

@@ -189,6 +189,23 @@ TEST(SceneErrors, UnknownInterpolation) {
             "a.json: render.interpolation: must be one of perspective, screen, got 'linear'");
 }
 
+TEST(SceneErrors, RenderModesOutOfTheirSets) {
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["shading"] = "smooth"; }),
+            "a.json: render.shading: must be one of gouraud, flat, phong, got 'smooth'");
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["specular"] = "cook-torrance"; }),
+            "a.json: render.specular: must be one of phong, blinn, got 'cook-torrance'");
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["shading"] = 1; }),
+            "a.json: render.shading: must be a string, got number");
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["samples"] = 3; }),
+            "a.json: render.samples: must be 1, 4, 9 or 16 (a regular grid of samples per pixel), got 3");
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["samples"] = 0; }),
+            "a.json: render.samples: must be between 1 and 16, got 0");
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["samples"] = 2.5; }),
+            "a.json: render.samples: must be an integer, got 2.5");
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["sample"] = 4; }),
+            "a.json: render.sample: unknown key (allowed: interpolation, shading, specular, samples)");
+}
+
 // ---- ranges ----
 
 TEST(SceneErrors, OutOfRange) {

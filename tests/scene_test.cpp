@@ -141,6 +141,23 @@ TEST(SceneSpec, WidthAndHeightSetTheAspect) {
   EXPECT_DOUBLE_EQ(scene.camera.aspect, 640.0 / 480.0);
 }
 
+TEST(SceneSpec, RenderModesDefaultToThePapersAndCanBeChanged) {
+  const SceneSpec plain = parse(minimalWith([](ordered_json&) {}).dump());
+  EXPECT_EQ(plain.shading, Shading::Gouraud);
+  EXPECT_EQ(plain.specular, Specular::Phong);
+  EXPECT_EQ(plain.samples, 1);
+  const SceneSpec scene = parse(minimalWith([](ordered_json& s) {
+                                  s["render"] = {{"shading", "phong"}, {"specular", "blinn"}, {"samples", 9}};
+                                }).dump());
+  EXPECT_EQ(scene.shading, Shading::Phong);
+  EXPECT_EQ(scene.specular, Specular::Blinn);
+  EXPECT_EQ(scene.samples, 9);
+  const SceneSpec flat = withRenderOptions(scene, R"({"shading": "flat", "samples": 1})");
+  EXPECT_EQ(flat.shading, Shading::Flat);
+  EXPECT_EQ(flat.specular, Specular::Blinn) << "options not named keep the scene's";
+  EXPECT_EQ(flat.samples, 1);
+}
+
 TEST(SceneSpec, ClosedAndInterpolationCanBeChanged) {
   SceneSpec scene = parse(minimalWith([](ordered_json& s) {
                         s["objects"][0]["closed"] = false;

@@ -1,5 +1,7 @@
 #include "test_util.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +63,25 @@ void writeFile(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+std::vector<std::string> allScenes() {
+  std::vector<std::string> scenes;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(sourcePath("scenes"))) {
+    if (entry.path().extension() == ".json") {
+      scenes.push_back(std::filesystem::relative(entry.path(), sourcePath("")).string());
+    }
+  }
+  std::sort(scenes.begin(), scenes.end());
+  return scenes;
+}
+
+std::string pathTestName(const ::testing::TestParamInfo<std::string>& info) {
+  std::string name = info.param;
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return name;
 }
 
 std::string readBytes(const std::string& path) {

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace phongvk::test {
 
@@ -40,6 +41,12 @@ int mappingsAddedByRelitFrames(const FrameInputs& in, const std::function<void(c
 
 // Writes `text` to `path` (creating it), for tests that need a scene file on disk.
 void writeFile(const std::string& path, const std::string& text);
+
+// Every scene file under scenes/, relative to the source tree ("scenes/paper/fig1_cube.json"), sorted.
+std::vector<std::string> allScenes();
+
+// A test name for a parameter that is a path: every character but letters and digits becomes '_'.
+std::string pathTestName(const ::testing::TestParamInfo<std::string>& info);
 
 // A file's bytes (a failed check, and "", where it cannot be read).
 std::string readBytes(const std::string& path);

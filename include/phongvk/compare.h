@@ -26,7 +26,9 @@ struct DiffStats {
   PHONGVK_API double identicalFraction() const;  // pixels bit-identical / pixels
 };
 
-// Compares images of equal size; keys (one per pixel, may be empty) also compare the winners.
+// Compares images of equal size; keys (may be empty) also compare the winners: one per pixel, or
+// with samples per pixel those of the sample grid (an image 2, 3 or 4 times wider and higher),
+// a pixel counted once where any of its samples' winners differ.
 // Throws std::invalid_argument when the sizes differ.
 PHONGVK_API DiffStats compareImages(const Image& a, const Image& b, const std::vector<uint64_t>& keysA = {},
                                     const std::vector<uint64_t>& keysB = {});

@@ -49,6 +49,11 @@ class PHONGVK_API Scene {
   // is kept and the aspect follows the new size. Throws SceneError for a size out of range.
   Scene withImageSize(int width, int height) const;
 
+  // The same scene with some of its "render" options replaced: `json` is an object of render keys
+  // ({"shading": "phong", "samples": 4}; docs/DESIGN.md "Scene file"), validated like a scene
+  // file's (SceneError naming render.KEY). The others keep the scene's values.
+  Scene withRender(const std::string& json) const;
+
   // Adds `mesh` as an object of this scene (not of copies made before). `material`: empty for the
   // default material, the name of one of the scene's materials, or JSON text of material fields
   // ({"ks": 0.2}), read like a scene file's. Throws std::invalid_argument naming the array

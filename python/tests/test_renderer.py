@@ -80,3 +80,29 @@ def test_no_memory_growth_over_a_thousand_renders():
         del image
     grown = resident_kib() - settled
     assert grown < 4 * 1024, f"resident memory grew {grown} KiB over 1,000 renders"
+
+
+def test_render_options_from_python_match_the_scene_files():
+    """with_render(...) is the scene file's "render" block: the same bytes on both backends, and
+    a bad value names the option."""
+    scene = phongvk.load_scene(scene_path("scenes/paper/fig3_two_lights.json"))
+    phong = scene.with_render(shading="phong", specular="blinn", samples=4)
+    from_dict = phongvk.scene_from_dict(
+        {"camera": {"position": [-3.5, -2.45, 2.1], "look_at": [0, 0, 0]},
+         "lights": [{"position": [-0.7, -0.6, 0.8]}],
+         "objects": [{"shape": "icosphere", "center": [0, 0, 0], "radius": 0.5, "subdivide": 1}],
+         "render": {"shading": "phong", "specular": "blinn", "samples": 4}})
+    plain = phongvk.scene_from_dict(
+        {"camera": {"position": [-3.5, -2.45, 2.1], "look_at": [0, 0, 0]},
+         "lights": [{"position": [-0.7, -0.6, 0.8]}],
+         "objects": [{"shape": "icosphere", "center": [0, 0, 0], "radius": 0.5, "subdivide": 1}]})
+    gpu, cpu = phongvk.Renderer("gpu"), phongvk.Renderer("cpu")
+    assert np.array_equal(gpu.render(phong, 160, 120), cpu.render(phong, 160, 120))
+    assert np.array_equal(gpu.render(from_dict, 160, 120),
+                          gpu.render(plain.with_render(shading="phong", specular="blinn", samples=4), 160, 120))
+    assert not np.array_equal(gpu.render(scene, 160, 120), gpu.render(phong, 160, 120))
+    try:
+        scene.with_render(samples=8)
+        raise AssertionError("no error for 8 samples")
+    except phongvk.SceneError as e:
+        assert "render.samples: must be 1, 4, 9 or 16" in str(e)
