@@ -129,45 +129,58 @@ void markParetoFront(std::vector<SweepPoint>& points) {
 
 namespace {
 
-// The cheapest measured point of `shading` with one sample whose error is at most `rmse`.
+// The cheapest measured point of `shading` with one sample whose error, as the report prints it
+// (two decimals), is at most `rmse`'s.
 const SweepPoint* cheapestWithin(const SweepResult& sweep, const std::string& shading, double rmse) {
   const SweepPoint* best = nullptr;
   for (const SweepPoint& q : sweep.points) {
-    if (q.shading != shading || q.samples != 1 || !q.compute.ok() || q.computeError.rmse > rmse) continue;
+    if (q.shading != shading || q.samples != 1 || !q.compute.ok()) continue;
+    if (std::round(q.computeError.rmse * 100) > std::round(rmse * 100)) continue;
     if (!best || q.cost() < best->cost()) best = &q;
   }
   return best;
 }
 
-std::string pointName(const SweepPoint& p) {
-  return p.shading + " on the " + p.mesh + " " + p.setting + " (" + std::to_string(p.triangles) + " triangles, " +
-         formatText("%.2f ms", p.cost()) + ")";
+std::string frontCounts(const SweepResult& sweep) {
+  std::string counts;
+  for (const char* shading : {"flat", "Gouraud", "Phong"}) {
+    for (int samples : {1, 4}) {
+      int n = 0;
+      for (const SweepPoint& p : sweep.points) n += p.pareto && p.shading == shading && p.samples == samples;
+      if (n > 0) counts += (counts.empty() ? "" : ", ") + formatText("%d %s with %d sample%s", n, shading, samples, samples == 1 ? "" : "s");
+    }
+  }
+  return counts.empty() ? "no point" : counts;
 }
 
 }  // namespace
 
 std::string frontFinding(const SweepResult& sweep) {
-  // The largest error at which the cheapest Phong point reaching it is cheaper than the cheapest
-  // Gouraud point reaching it (or Gouraud reaches it with no mesh of the sweep).
-  const SweepPoint* phong = nullptr;
-  const SweepPoint* gouraud = nullptr;
-  double threshold = 0;
+  // Per error one-sample Phong reaches, its cheapest point against the cheapest Gouraud point
+  // reaching the same error (or none: Gouraud does not reach it with any mesh of the sweep).
+  double low = INFINITY, high = 0, below = NAN;
   for (const SweepPoint& p : sweep.points) {
-    if (p.shading != "Phong" || p.samples != 1 || !p.compute.ok() || (phong && p.computeError.rmse <= threshold)) continue;
-    const SweepPoint* cheapestPhong = cheapestWithin(sweep, "Phong", p.computeError.rmse);
-    const SweepPoint* cheapestGouraud = cheapestWithin(sweep, "Gouraud", p.computeError.rmse);
-    if (cheapestGouraud && cheapestGouraud->cost() <= cheapestPhong->cost()) continue;
-    threshold = p.computeError.rmse;
-    phong = cheapestPhong;
-    gouraud = cheapestGouraud;
+    if (p.shading != "Phong" || p.samples != 1 || !p.compute.ok()) continue;
+    const SweepPoint* phong = cheapestWithin(sweep, "Phong", p.computeError.rmse);
+    const SweepPoint* gouraud = cheapestWithin(sweep, "Gouraud", p.computeError.rmse);
+    if (!gouraud || gouraud->cost() > phong->cost()) {
+      if (std::isnan(below) || p.computeError.rmse > below) below = p.computeError.rmse;
+      continue;
+    }
+    low = std::min(low, phong->cost() / gouraud->cost());
+    high = std::max(high, phong->cost() / gouraud->cost());
   }
-  if (!phong) return "Gouraud shading is at least as cheap as Phong shading at every error Phong reaches here.";
-  auto rmse = [](const SweepPoint& q) { return formatText("RMSE %.2f", q.computeError.rmse); };
-  return "To an RMSE of " + formatText("%.2f", threshold) +
-         " or less, per-pixel Phong shading of a coarse mesh is cheaper than Gouraud shading of a fine one: " +
-         pointName(*phong) + " reaches " + rmse(*phong) + ", where Gouraud needs " +
-         (gouraud ? pointName(*gouraud) + " for " + rmse(*gouraud) : std::string("a finer mesh than any in the sweep")) +
-         ".";
+  std::string finding = "The front holds " + frontCounts(sweep) + ".";
+  if (high > 0) {
+    finding += formatText(" At the errors per-pixel Phong shading reaches, it costs %.2fx to %.2fx the cheapest Gouraud mesh "
+                          "that reaches the same error (to two decimals)", low, high);
+    finding += std::isnan(below) ? ", so on this device a finer mesh is the cheaper way to a given error."
+                                 : formatText(", and to an RMSE of %.2f or less it is the cheaper way.", below);
+  } else if (!std::isnan(below)) {
+    finding += formatText(" To an RMSE of %.2f or less per-pixel Phong shading of a coarse mesh is cheaper than Gouraud "
+                          "shading of any finer one.", below);
+  }
+  return finding;
 }
 
 SweepResult runErrorSweep(const VulkanContext& context, bool quick, int repeat) {
