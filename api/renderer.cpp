@@ -55,6 +55,8 @@ RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image sto
   RenderOutput out = draw(*data_, makeFrame(*data_, supersampled(view, side)), withKeys,
                           side == 1 ? std::move(storage) : Image());
   if (side > 1) out.image = downscale(out.image, view.width, view.height);
+  // A share's keys name its triangles as the whole scene does (Scene::share); ids stay below 2^32.
+  for (uint64_t& key : out.keys) key += key != ~uint64_t(0) ? data_->triangleBase : 0;
   ++framesRendered_;
   return out;
 }

@@ -31,6 +31,16 @@ Scene Scene::withRender(const std::string& json) const {
   return Scene(std::make_shared<SceneSpec>(withRenderOptions(*spec_, json)), sequence_);
 }
 
+Scene Scene::share(int part, int parts) const {
+  if (parts < 1 || part < 0 || part >= parts) {
+    throw SceneError(path() + ": share " + std::to_string(part) + " of " + std::to_string(parts) + " does not exist");
+  }
+  auto shared = std::make_shared<SceneSpec>(*spec_);
+  shared->sharePart = part;
+  shared->shareParts = parts;
+  return Scene(std::move(shared), sequence_);
+}
+
 void Scene::addMesh(const MeshArrays& mesh, const std::string& material, bool closed) {
   auto changed = std::make_shared<SceneSpec>(*spec_);
   addMeshObject(*changed, mesh, material, closed);

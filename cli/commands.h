@@ -34,6 +34,7 @@ struct RenderOptions : ViewOptions {
   std::string output;
   std::string backend = "gpu";  // gpu (compute) | cpu (reference) | graphics (graphics pipeline; also "raster")
   int repeat = 0;               // > 0: time this many frames after a warm-up
+  bool mpi = false;             // --mpi: this process renders its share of the scene (render_mpi.cpp)
 };
 
 struct DiffOptions : ViewOptions {
@@ -46,10 +47,12 @@ struct SequenceOptions : ViewOptions {
   std::string frames = ":";  // START:END[:STEP], half-open like a Python slice; ":" is every frame
   std::string sheet;         // contact sheet PNG, optional
   int thumbnailWidth = 160;  // on the sheet; frames are box-filtered down to it, never enlarged
+  bool skipExisting = false; // --skip-existing: keep frames an earlier run wrote whole (pngIsComplete)
   std::string backend = "gpu";
 };
 
 int runRender(const RenderOptions& options);     // render.cpp
+int runRenderMpi(const RenderOptions& options);  // render_mpi.cpp: under mpirun, one process of several
 int runDiff(const DiffOptions& options);         // diff.cpp
 int runSequence(const SequenceOptions& options); // sequence.cpp
 int runDevices();                                // devices.cpp

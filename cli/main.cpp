@@ -80,6 +80,9 @@ int main(int argc, char** argv) {
   addBackendOption(renderCmd, render.backend, true);
   renderCmd->add_option("--repeat", render.repeat, "Time N frames after a warm-up and print the median")
       ->check(CLI::Range(1, 100000));
+  renderCmd->add_flag("--mpi", render.mpi,
+                      "Under mpirun: each process renders a share of the triangles, the keys are composited by "
+                      "MPI_Allreduce (MPI_MIN) and rank 0 writes the PNG");
 
   DiffOptions diff;
   CLI::App* diffCmd = app.add_subcommand("diff", "Render with both backends and compare pixel by pixel");
@@ -103,6 +106,9 @@ int main(int argc, char** argv) {
   sequenceCmd->add_option("--frames", sequence.frames,
                           "START:END[:STEP], END excluded like a Python slice (default: every frame)");
   sequenceCmd->add_option("--sheet", sequence.sheet, "Also write a contact sheet of the frames (PNG)");
+  sequenceCmd->add_flag("--skip-existing", sequence.skipExisting,
+                        "Keep the frames an earlier run already wrote whole, and render only the others "
+                        "(a restarted or requeued job wastes no work)");
   sequenceCmd->add_option("--thumb-width", sequence.thumbnailWidth, "Widest thumbnail on the sheet (default 160)")
       ->check(CLI::Range(8, 4096));
   addBackendOption(sequenceCmd, sequence.backend);

@@ -54,6 +54,7 @@ std::string startupText(const RendererStats& stats, Backend backend) {
 }  // namespace
 
 int runRender(const RenderOptions& options) {
+  if (options.mpi) return runRenderMpi(options);
   return guarded([&] {
     checkWritable(options.output);
     FILE* out = options.output == "-" ? stderr : stdout;  // standard output carries the PNG then

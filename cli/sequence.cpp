@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 namespace phongvk::cli {
@@ -109,6 +110,13 @@ class FrameOutputs {
     writer_.push({index, framePath(options_.outputDir, index, frameCount_), std::move(image)});
   }
 
+  // Frame `index`, kept from an earlier run (--skip-existing): its thumbnail from the file.
+  void kept(int index, const std::string& path) {
+    if (!options_.sheet.empty()) thumbnail(index, readPng(path));
+    const std::lock_guard<std::mutex> lock(mutex_);
+    progress_.frameDone(index, path + " (kept)");
+  }
+
   const Progress& progress() const { return progress_; }
 
   // Waits for every frame's file, then writes the sheet (not for an interrupted sequence: it would
@@ -122,17 +130,23 @@ class FrameOutputs {
   }
 
  private:
-  // On a writer thread, one frame at a time.
+  // On a writer thread, one frame at a time (the main thread reports kept frames meanwhile).
   void written(const FrameFile& frame) {
-    if (!options_.sheet.empty()) {
-      const ThumbnailSize size = thumbnailSize(frame.image.width, frame.image.height, options_.thumbnailWidth);
-      thumbnails_.push_back({frame.index, downscale(frame.image, size.width, size.height)});
-    }
+    if (!options_.sheet.empty()) thumbnail(frame.index, frame.image);
+    const std::lock_guard<std::mutex> lock(mutex_);
     progress_.frameDone(frame.index, frame.path);
+  }
+
+  void thumbnail(int index, const Image& image) {
+    const ThumbnailSize size = thumbnailSize(image.width, image.height, options_.thumbnailWidth);
+    Thumbnail t{index, downscale(image, size.width, size.height)};
+    const std::lock_guard<std::mutex> lock(mutex_);
+    thumbnails_.push_back(std::move(t));
   }
 
   const SequenceOptions& options_;
   int frameCount_;
+  std::mutex mutex_;  // progress_ and thumbnails_: the writer threads and the main thread
   Progress progress_;
   std::vector<Thumbnail> thumbnails_;
   FrameWriter writer_;  // last: its threads stop before the members they report to go
@@ -268,11 +282,18 @@ int runSequence(const SequenceOptions& options) {
     prepareOutputs(options, sequence.frameCount());
     Renderer renderer(rendering);
     FrameOutputs outputs(options, sequence.frameCount(), range.count());
-    size_t rendered = 0;
+    size_t rendered = 0, kept = 0;
     for (; rendered < frames.size() && interruptedBy == 0; ++rendered) {
+      const int index = int(range.start + int64_t(rendered) * range.step);
+      const std::string path = framePath(options.outputDir, index, sequence.frameCount());
+      if (options.skipExisting && pngIsComplete(path, frames[rendered].width(), frames[rendered].height())) {
+        outputs.kept(index, path);
+        ++kept;
+        continue;
+      }
       Image image = outputs.spareImage();
       renderer.render(frames[rendered], image);
-      outputs.add(int(range.start + int64_t(rendered) * range.step), std::move(image));
+      outputs.add(index, std::move(image));
     }
     outputs.finish(interruptedBy != 0);  // every frame rendered is written whole
     if (const int signal = interruptedBy) {
@@ -285,6 +306,7 @@ int runSequence(const SequenceOptions& options) {
     }
     printSummary(options, range, frames[0], backendSummary(renderer, range.count()), renderer.stats().sceneBuilds,
                  msSince(start), outputs.progress().steadyFramesPerSecond());
+    if (kept > 0) std::printf("kept %zu frame%s an earlier run wrote whole\n", kept, kept == 1 ? "" : "s");
     return int(EXIT_OK);
   });
 }

@@ -108,6 +108,10 @@ struct SceneSpec {
   Shading shading = Shading::Gouraud;
   Specular specular = Specular::Phong;
   int samples = 1;  // per pixel: 1, 4, 9 or 16
+  // Which contiguous share of the built triangles to keep (sharePart of shareParts, near-equal
+  // ranges in file order), for one process of a scene split across several (phongvk render --mpi).
+  int sharePart = 0;
+  int shareParts = 1;
 };
 
 // `scene` with the "render" options in `json` (a JSON object of render keys) replacing its own,

@@ -75,6 +75,21 @@ glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
   return origins.empty() ? sum : sum / double(origins.size());
 }
 
+// A share of the scene (SceneSpec::sharePart): the triangles of the part-th of shareParts near-equal
+// contiguous ranges, every vertex, object and bound of the whole scene kept (lighting and a fitted
+// camera stay the whole scene's).
+void keepShare(SceneData& data, const SceneSpec& scene) {
+  if (scene.shareParts <= 1) return;
+  const uint64_t count = data.triangles.size(), parts = uint64_t(scene.shareParts), part = uint64_t(scene.sharePart);
+  if (count < parts) {
+    throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + "the scene's " + std::to_string(count) +
+                     " triangles cannot be shared among " + std::to_string(parts) + " processes");
+  }
+  const uint64_t first = count * part / parts, end = count * (part + 1) / parts;
+  data.triangles = std::vector<glm::uvec4>(data.triangles.begin() + first, data.triangles.begin() + end);
+  data.triangleBase = uint32_t(first);
+}
+
 }  // namespace
 
 SceneData buildSceneData(const SceneSpec& scene) {
@@ -92,6 +107,7 @@ SceneData buildSceneData(const SceneSpec& scene) {
     appendObject(data, meshes[i], static_cast<uint32_t>(i));
     meshes[i] = {};  // freed as soon as copied
   }
+  keepShare(data, scene);
   data.lightingOrigin = meanOrigin(data.objectOrigins);
   for (size_t i = 0; i < data.objects.size(); ++i) {
     data.objects[i].lightOffset = glm::vec3(data.objectOrigins[i] - data.lightingOrigin);
@@ -138,7 +154,7 @@ bool sameObjectGeometry(const Object& a, const Object& b) {
 }  // namespace
 
 bool sameGeometry(const SceneSpec& a, const SceneSpec& b) {
-  return std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
+  return a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
 }
 
 bool lightingIsViewIndependent(const FrameInputs& in) {

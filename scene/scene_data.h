@@ -31,6 +31,9 @@ struct SceneData {
   uint32_t shading = gpu::SHADING_GOURAUD;
   uint32_t specular = gpu::SPECULAR_PHONG;
   int samples = 1;  // per pixel, on a regular grid (1, 4, 9 or 16): the frame is rendered this many times larger
+  // With a share of the scene (SceneSpec::sharePart): the whole scene's index of triangles[0]. The
+  // renderers' keys name triangles by their index here; add this to name them in the whole scene.
+  uint32_t triangleBase = 0;
 };
 
 // One frame's inputs to either renderer: the frame constants, the per-object offsets from the eye,

@@ -12,6 +12,8 @@ packages=(
   python3 python3-dev pybind11-dev python3-numpy python3-pytest  # the Python package and its tests (python/)
   python3-pil python3-matplotlib python3-nbconvert python3-ipykernel jupyter-core  # tests' PNG decoder, examples/python
   clang libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and the sanitizer runtimes for clang
+  libopenmpi-dev openmpi-bin  # phongvk render --mpi (optional at configure time) and its test
+  slurm-wlm munge  # scripts/slurm/ and tests/slurm_test.sh, which starts a one-node cluster of its own
 )
 
 missing=()

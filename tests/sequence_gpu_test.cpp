@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -145,6 +147,32 @@ TEST(SequenceCli, FrameSubsetsAreByteIdenticalToTheFullRun) {
     EXPECT_EQ(test::readBytes(dir + "/part/" + name), test::readBytes(dir + "/full/" + name)) << name;
   }
   EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/full"), fs::directory_iterator()), 8);
+}
+
+// --skip-existing keeps the frames an earlier run wrote whole (not rendered again: their times stay)
+// and renders the missing one, the one cut short and the one of another size; the set, and the
+// sheet made from the kept files, equal a full run's.
+TEST(SequenceCli, SkipExistingRendersOnlyWhatIsMissingOrIncomplete) {
+  const std::string dir = test::makeTempDir();
+  const std::string scene = writeSwitchingScene(dir);
+  ASSERT_EQ(sequenceCli(scene, dir + "/full", "--sheet " + dir + "/full.png").exitCode, 0);
+  ASSERT_EQ(sequenceCli(scene, dir + "/part", "").exitCode, 0);
+  auto frame = [&](const std::string& folder, int i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%04d.png", i);
+    return dir + "/" + folder + name;
+  };
+  fs::remove(frame("part", 2));
+  test::writeFile(frame("part", 4), test::readBytes(frame("full", 4)).substr(0, 100));  // cut short
+  ASSERT_EQ(test::runCli("render " + scene + " --width 20 --height 10 -o " + frame("part", 6)).exitCode, 0);
+  const auto old = fs::file_time_type::clock::now() - std::chrono::hours(24);
+  for (int i : {0, 1, 3, 5, 7}) fs::last_write_time(frame("part", i), old);
+  const test::CommandResult again = sequenceCli(scene, dir + "/part", "--skip-existing --sheet " + dir + "/part.png");
+  ASSERT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_NE(again.output.find("kept 5 frames an earlier run wrote whole"), std::string::npos) << again.output;
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(test::readBytes(frame("part", i)), test::readBytes(frame("full", i))) << i;
+  for (int i : {0, 1, 3, 5, 7}) EXPECT_EQ(fs::last_write_time(frame("part", i)), old) << "frame " << i << " rendered again";
+  EXPECT_EQ(test::readBytes(dir + "/part.png"), test::readBytes(dir + "/full.png"));
 }
 
 TEST(SequenceCli, RenderOfAnAnimatedSceneIsFrameZero) {

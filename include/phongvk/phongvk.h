@@ -54,6 +54,14 @@ class PHONGVK_API Scene {
   // file's (SceneError naming render.KEY). The others keep the scene's values.
   Scene withRender(const std::string& json) const;
 
+  // One share of the scene for a process of `parts` that render it together (phongvk render --mpi):
+  // the part-th of `parts` near-equal contiguous ranges of its triangles, in file order, with every
+  // vertex, light and the camera of the whole scene. Its keys name triangles by their index in the
+  // whole scene, so the shares' keys combine by their minimum, pixel by pixel, into the whole
+  // scene's, and each pixel's colour is that of the share that holds its winner. Throws SceneError
+  // for a part out of 0..parts-1, or (when rendered) a scene of fewer triangles than parts.
+  Scene share(int part, int parts) const;
+
   // Adds `mesh` as an object of this scene (not of copies made before). `material`: empty for the
   // default material, the name of one of the scene's materials, or JSON text of material fields
   // ({"ks": 0.2}), read like a scene file's. Throws std::invalid_argument naming the array
