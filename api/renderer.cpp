@@ -56,7 +56,10 @@ RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image sto
                           side == 1 ? std::move(storage) : Image());
   if (side > 1) out.image = downscale(out.image, view.width, view.height);
   // A share's keys name its triangles as the whole scene does (Scene::share); ids stay below 2^32.
-  for (uint64_t& key : out.keys) key += key != ~uint64_t(0) ? data_->triangleBase : 0;
+  // Only then: a whole scene's keys are not walked again.
+  if (const uint32_t base = data_->triangleBase) {
+    for (uint64_t& key : out.keys) key += key != ~uint64_t(0) ? base : 0;
+  }
   ++framesRendered_;
   return out;
 }
