@@ -1,4 +1,5 @@
-# phongvk_compile_shaders(TARGET target OUTPUT_DIR dir SOURCES file... [EXACT_SKIP name...])
+# phongvk_compile_shaders(TARGET target OUTPUT_DIR dir SOURCES file... [EXACT_SKIP name...]
+#                         [OPT_SKIP name...])
 #
 # Compiles GLSL to SPIR-V at build time with glslang and embeds it as C arrays: x.comp becomes
 # spirv_x in x.spv.h; a graphics stage x.vert / x.frag becomes spirv_x_vert / spirv_x_frag in
@@ -9,9 +10,19 @@
 # (shaders/exact_float.h), for devices whose own are off (host/float_probe.h). A build of its own,
 # not a specialization constant: lavapipe inlines both sides of every call before it drops the dead
 # one, which cost ~40 ms of pipeline compiling per process.
+# Every compute shader's floating-point operations are then decorated NoContraction
+# (shaders/no_contraction.cpp: glslang's `precise` stops at function boundaries, and no optimizer
+# may rewrite an operation the reference computes as written), and the module goes through
+# spirv-opt -O unless its name is in OPT_SKIP. The optimized module is what every driver compiles:
+# lavapipe turns SPIR-V into NIR and optimizes it in every process, and inlining, scalar
+# replacement and dead-code removal done once here take about half of that off each process
+# (docs/DECISIONS.md, "Shaders are optimized at build time").
 # `target` is a custom target the users of the headers depend on.
+find_program(PHONGVK_SPIRV_OPT spirv-opt REQUIRED)  # Debian: spirv-tools
+set(PHONGVK_EMBED_SPIRV ${CMAKE_CURRENT_LIST_DIR}/embed_spirv.cmake)
+
 function(phongvk_compile_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR" "SOURCES;EXACT_SKIP" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR" "SOURCES;EXACT_SKIP;OPT_SKIP" ${ARGN})
   set(outputs)
   foreach(src ${ARG_SOURCES})
     get_filename_component(name ${src} NAME_WE)
@@ -33,13 +44,33 @@ function(phongvk_compile_shaders)
         set(defines -DEXACT_FLOAT_OPS=1)
       endif()
       add_custom_command(
-        OUTPUT ${out}
+        OUTPUT ${out}.spv
         COMMAND ${CMAKE_COMMAND} -E make_directory ${ARG_OUTPUT_DIR}
         COMMAND Vulkan::glslangValidator -V --target-env vulkan1.2 -I${dir} ${defines}
-                --vn spirv_${variant} --depfile ${out}.d -o ${out} ${src}
+                --depfile ${out}.spv.d -o ${out}.spv ${src}
         MAIN_DEPENDENCY ${src}
-        DEPFILE ${out}.d
+        DEPFILE ${out}.spv.d
         COMMENT "glslang: ${variant} -> SPIR-V"
+        VERBATIM)
+      # The compute passes: every floating-point operation decorated NoContraction, then
+      # spirv-opt's performance passes unless the pass is in OPT_SKIP. The graphics baseline's
+      # stages are embedded as glslang wrote them: the device's own rules, as before.
+      set(module ${out}.spv)
+      set(steps)
+      if(stage STREQUAL ".comp")
+        list(APPEND steps COMMAND phongvk_no_contraction ${out}.spv ${out}.strict)
+        set(module ${out}.strict)
+        if(NOT name IN_LIST ARG_OPT_SKIP)
+          list(APPEND steps COMMAND ${PHONGVK_SPIRV_OPT} -O --target-env=vulkan1.2 ${out}.strict -o ${out}.opt)
+          set(module ${out}.opt)
+        endif()
+      endif()
+      add_custom_command(
+        OUTPUT ${out}
+        ${steps}
+        COMMAND ${CMAKE_COMMAND} -DINPUT=${module} -DOUTPUT=${out} -DNAME=spirv_${variant} -P ${PHONGVK_EMBED_SPIRV}
+        DEPENDS ${out}.spv phongvk_no_contraction ${PHONGVK_EMBED_SPIRV}
+        COMMENT "SPIR-V to C array: ${variant}"
         VERBATIM)
       list(APPEND outputs ${out})
     endforeach()
