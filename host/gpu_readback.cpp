@@ -3,6 +3,7 @@
 #include "host/gpu_renderer.h"
 
 #include "image/packed_pixels.h"
+#include "memory/huge_pages.h"
 #include "shaders/color_slots.h"
 #include "shaders/gouraud.h"
 
@@ -39,6 +40,7 @@ Image GpuRenderer::readImage(Image image) {
   const size_t pixels = size_t(width_) * height_;
   image.width = int(width_);
   image.height = int(height_);
+  reserveLarge(image.rgb, 3 * pixels);  // fresh storage on huge pages (a one-frame render's image)
   if (!frameColorsInKeys_) {
     // Resolve wrote the image's own layout: one copy (assign reuses the capacity).
     const auto* bytes = static_cast<const uint8_t*>(colors_.mapped);

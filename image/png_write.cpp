@@ -4,6 +4,7 @@
 // the run-only coder (deflate_runs.h), at the others by libdeflate (docs/DECISIONS.md "PNG levels").
 #include "image/deflate_runs.h"
 #include "image/output_file.h"
+#include "memory/huge_pages.h"
 #include "phongvk/errors.h"
 #include "phongvk/image.h"
 
@@ -50,6 +51,7 @@ void appendHeader(std::vector<uint8_t>& out, const Image& image) {
 // (0 for the row's first pixel).
 void filterRows(const Image& image, std::vector<uint8_t>& filtered) {
   const size_t rowBytes = size_t(image.width) * 3;
+  reserveLarge(filtered, (rowBytes + 1) * size_t(image.height));  // fresh storage on huge pages
   filtered.resize((rowBytes + 1) * size_t(image.height));
   for (size_t y = 0; y < size_t(image.height); ++y) {
     const uint8_t* row = image.rgb.data() + y * rowBytes;

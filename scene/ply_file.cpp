@@ -1,7 +1,7 @@
 // ply_file.cpp — see ply_file.h.
 #include "scene/ply_file.h"
 
-#include "scene/huge_pages.h"
+#include "memory/huge_pages.h"
 #include "scene/mesh_import.h"
 #include "scene/polygon.h"
 #include "scene/scene.h"

@@ -1,6 +1,6 @@
 #include "scene/scene_data.h"
 
-#include "scene/huge_pages.h"
+#include "memory/huge_pages.h"
 #include "scene/mesh.h"
 
 #include <cmath>

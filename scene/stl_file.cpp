@@ -1,7 +1,7 @@
 // stl_file.cpp — see stl_file.h.
 #include "scene/stl_file.h"
 
-#include "scene/huge_pages.h"
+#include "memory/huge_pages.h"
 #include "scene/mesh_import.h"
 #include "scene/scene.h"
 

@@ -2,7 +2,7 @@
 // (counting sort), each bucket sorted by the higher index: sequential memory, no std::map, no hash.
 #include "scene/subdivide.h"
 
-#include "scene/huge_pages.h"
+#include "memory/huge_pages.h"
 
 #include <algorithm>
 #include <cassert>

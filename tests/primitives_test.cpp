@@ -1,7 +1,7 @@
 // primitives_test.cpp — the primitive shapes (primitives.h), subdivision on the true surface
 // (subdivide.h), vertex normals (normals.h) and the huge-page arrays: counts, watertightness,
 // winding, normals, errors.
-#include "scene/huge_pages.h"
+#include "memory/huge_pages.h"
 #include "scene/mesh.h"
 #include "scene/normals.h"
 #include "tests/mesh_checks.h"

@@ -1,4 +1,4 @@
-#include "scene/huge_pages.h"
+#include "memory/huge_pages.h"
 
 #include <cstdint>
 
