@@ -12,34 +12,20 @@
 // NoContraction before every floating-point folding rule, and drivers map it to exact operations
 // (NIR's `exact`). The result is the module the shaders' own words promise: IEEE operations as
 // written.
+#include "shaders/spirv_words.h"
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
-#include <set>
 #include <string>
 #include <vector>
 
 namespace {
 
-constexpr uint32_t kMagic = 0x07230203u;
-constexpr uint32_t kHeaderWords = 5;
-constexpr uint32_t kOpDecorate = 71;
-constexpr uint32_t kNoContraction = 42;
-
-// The arithmetic instructions whose results are floating point (SPIR-V spec 3.52.13): OpFNegate,
-// OpFAdd, OpFSub, OpFMul, OpFDiv, OpFRem, OpFMod, and the vector and matrix products with OpDot.
-bool isFloatArithmetic(uint32_t opcode) {
-  switch (opcode) {
-    case 127: case 129: case 131: case 133: case 136: case 140: case 141:
-    case 142: case 143: case 144: case 145: case 146: case 147: case 148:
-      return true;
-    default:
-      return false;
-  }
-}
+using namespace phongvk::spirv;
 
 // The instructions that come before the module's types (capabilities, extensions, imports, the
 // memory model, entry points, execution modes, debug names and annotations): decorations go
@@ -69,32 +55,30 @@ Module read(const char* path) {
     return m;
   }
   std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() % 4 != 0 || bytes.size() < kHeaderWords * 4) {
+  if (bytes.size() % 4 != 0) {
     m.error = "not a whole SPIR-V module";
     return m;
   }
   m.words.resize(bytes.size() / 4);
   std::copy(bytes.begin(), bytes.end(), reinterpret_cast<char*>(m.words.data()));
-  if (m.words[0] != kMagic) m.error = "not SPIR-V (bad magic number, or not little-endian)";
   return m;
 }
 
 // Adds the decorations; an error message, or empty.
 std::string decorate(std::vector<uint32_t>& words) {
-  std::set<uint32_t> decorated, wanted;
+  Contraction found;
+  std::string error = findContraction(words, found);
   size_t insertAt = 0;
-  for (size_t i = kHeaderWords; i < words.size();) {
-    const uint32_t count = words[i] >> 16, opcode = words[i] & 0xffffu;
-    if (count == 0 || i + count > words.size()) return "instruction at word " + std::to_string(i) + " runs past the end";
-    if (opcode == kOpDecorate && count >= 3 && words[i + 2] == kNoContraction) decorated.insert(words[i + 1]);
-    if (isFloatArithmetic(opcode) && count >= 3) wanted.insert(words[i + 2]);
-    if (insertAt == 0 && !isBeforeTypes(opcode)) insertAt = i;
-    i += count;
+  if (error.empty()) {
+    error = forEachInstruction(words, [&](size_t at, uint32_t opcode, std::span<const uint32_t>) {
+      if (insertAt == 0 && !isBeforeTypes(opcode)) insertAt = at;
+    });
   }
+  if (!error.empty()) return error;
   if (insertAt == 0) return "no types or functions";
   std::vector<uint32_t> added;
-  for (uint32_t id : wanted) {
-    if (decorated.count(id) == 0) added.insert(added.end(), {(3u << 16) | kOpDecorate, id, kNoContraction});
+  for (uint32_t id : found.wanted) {
+    if (found.decorated.count(id) == 0) added.insert(added.end(), {(3u << 16) | OP_DECORATE, id, DECORATION_NO_CONTRACTION});
   }
   words.insert(words.begin() + static_cast<std::ptrdiff_t>(insertAt), added.begin(), added.end());
   return "";
