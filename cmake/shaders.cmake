@@ -57,7 +57,9 @@ function(phongvk_compile_shaders)
       # stages are embedded as glslang wrote them: the device's own rules, as before.
       set(module ${out}.spv)
       set(steps)
+      set(tools)
       if(stage STREQUAL ".comp")
+        set(tools phongvk_no_contraction)
         list(APPEND steps COMMAND phongvk_no_contraction ${out}.spv ${out}.strict)
         set(module ${out}.strict)
         if(NOT name IN_LIST ARG_OPT_SKIP)
@@ -69,7 +71,7 @@ function(phongvk_compile_shaders)
         OUTPUT ${out}
         ${steps}
         COMMAND ${CMAKE_COMMAND} -DINPUT=${module} -DOUTPUT=${out} -DNAME=spirv_${variant} -P ${PHONGVK_EMBED_SPIRV}
-        DEPENDS ${out}.spv phongvk_no_contraction ${PHONGVK_EMBED_SPIRV}
+        DEPENDS ${out}.spv ${tools} ${PHONGVK_EMBED_SPIRV}
         COMMENT "SPIR-V to C array: ${variant}"
         VERBATIM)
       list(APPEND outputs ${out})

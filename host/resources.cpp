@@ -80,14 +80,10 @@ struct StagingBuffer {
   Buffer buffer;
 };
 
-}  // namespace
-
-namespace {
-
 // On a CPU device (lavapipe) device memory is the process's own, fresh from the allocator and not
 // yet touched: ask for 2 MiB pages for it (memory/huge_pages.h), as for large meshes. A frame's
 // key buffer alone is 10 MB at 1385x923, which 4 KiB pages fault in 2,500 times on the first
-// frame and then reach through as many TLB entries. Elsewhere device memory is the driver's.
+// frame (later frames measure the same either way). Elsewhere device memory is the driver's.
 void adviseHugeDeviceMemory(const VulkanContext& context, const Buffer& buffer, VkDeviceSize bytes) {
   if (context.properties.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU || bytes < (VkDeviceSize(2) << 20)) return;
   void* mapped = buffer.mapped;

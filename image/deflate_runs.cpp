@@ -121,8 +121,8 @@ std::vector<uint16_t> canonicalCodes(const std::vector<uint8_t>& lengths) {
 }
 
 // Bits into bytes, lowest bit first (RFC 1951 3.1.1), into `out` from its current end, which the
-// caller has made room for (reserve: at most that many bytes, plus 8 of slack for the 64-bit
-// stores); finish() trims `out` to what was written.
+// caller has made room for (reserve: at most that many bytes, plus 8 of slack for the last
+// partial word); finish() trims `out` to what was written.
 class BitWriter {
  public:
   BitWriter(std::vector<uint8_t>& out, size_t reserve) : out_(out), at_(out.size()) { out.resize(at_ + reserve + 8); }

@@ -51,8 +51,9 @@ void appendHeader(std::vector<uint8_t>& out, const Image& image) {
 // (0 for the row's first pixel).
 void filterRows(const Image& image, std::vector<uint8_t>& filtered) {
   const size_t rowBytes = size_t(image.width) * 3;
-  reserveLarge(filtered, (rowBytes + 1) * size_t(image.height));  // fresh storage on huge pages
-  filtered.resize((rowBytes + 1) * size_t(image.height));
+  const size_t bytes = (rowBytes + 1) * size_t(image.height);
+  reserveLarge(filtered, bytes);  // fresh storage on huge pages
+  filtered.resize(bytes);
   for (size_t y = 0; y < size_t(image.height); ++y) {
     const uint8_t* row = image.rgb.data() + y * rowBytes;
     uint8_t* out = filtered.data() + y * (rowBytes + 1);

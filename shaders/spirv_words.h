@@ -14,7 +14,6 @@ namespace phongvk::spirv {
 inline constexpr uint32_t MAGIC = 0x07230203u;
 inline constexpr size_t HEADER_WORDS = 5;
 inline constexpr uint32_t OP_DECORATE = 71;
-inline constexpr uint32_t OP_FUNCTION_CALL = 57;
 inline constexpr uint32_t DECORATION_NO_CONTRACTION = 42;
 
 // The arithmetic instructions whose results are floating point (spec 3.52.13): OpFNegate, OpFAdd,
