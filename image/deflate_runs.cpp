@@ -120,32 +120,35 @@ std::vector<uint16_t> canonicalCodes(const std::vector<uint8_t>& lengths) {
   return codes;
 }
 
-// Bits into bytes, lowest bit first (RFC 1951 3.1.1), into `out` from its current end, which the
-// caller has made room for (reserve: at most that many bytes, plus 8 of slack for the last
-// partial word); finish() trims `out` to what was written.
+// Bits into bytes, lowest bit first (RFC 1951 3.1.1), into `scratch` (grown to `reserve`, at most
+// that many bytes, plus 8 of slack for the last partial word; kept from one image to the next, so
+// a frame's bits are not written over a fresh zero fill); finish() appends them to `out`.
 class BitWriter {
  public:
-  BitWriter(std::vector<uint8_t>& out, size_t reserve) : out_(out), at_(out.size()) { out.resize(at_ + reserve + 8); }
+  BitWriter(std::vector<uint8_t>& scratch, size_t reserve, std::vector<uint8_t>& out) : out_(out), scratch_(scratch) {
+    if (scratch.size() < reserve + 8) scratch.resize(reserve + 8);
+  }
   void put(uint32_t value, int bits) {  // bits <= 32
     buffer_ |= uint64_t(value) << count_;
     count_ += bits;
     if (count_ >= 32) {
       const uint8_t bytes[4] = {uint8_t(buffer_), uint8_t(buffer_ >> 8), uint8_t(buffer_ >> 16), uint8_t(buffer_ >> 24)};
-      std::memcpy(out_.data() + at_, bytes, 4);
+      std::memcpy(scratch_.data() + at_, bytes, 4);
       at_ += 4;
       buffer_ >>= 32;
       count_ -= 32;
     }
   }
   void finish() {  // to a byte boundary
-    for (; count_ > 0; count_ -= 8, buffer_ >>= 8) out_[at_++] = uint8_t(buffer_);
+    for (; count_ > 0; count_ -= 8, buffer_ >>= 8) scratch_[at_++] = uint8_t(buffer_);
     count_ = 0;
-    out_.resize(at_);
+    out_.insert(out_.end(), scratch_.begin(), scratch_.begin() + ptrdiff_t(at_));
   }
 
  private:
   std::vector<uint8_t>& out_;
-  size_t at_;
+  std::vector<uint8_t>& scratch_;
+  size_t at_ = 0;
   uint64_t buffer_ = 0;
   int count_ = 0;
 };
@@ -299,18 +302,17 @@ void RunDeflater::deflate(const uint8_t* data, size_t size, size_t rowBytes, std
     if ((run = tryRun(at, 1, MIN_RUN_BYTE, limit)) != 0) which = 0;
     else if ((run = tryRun(at, 3, MIN_RUN_PIXEL, limit)) != 0) which = 1;
     else if ((run = tryRun(at, rowBytes, MIN_RUN_ROW, limit)) != 0) which = 2;
-    if (run == 0) {
+    if (run == 0) {  // a literal, counted as it is passed
+      ++litlenFrequencies[data[at]];
       ++at;
       continue;
     }
-    for (size_t k = literalsFrom; k < at; ++k) ++litlenFrequencies[data[k]];
     tokens.push_back({uint32_t(at - literalsFrom), uint16_t(run), uint16_t(which)});
     ++litlenFrequencies[lengths[run].symbol];
     ++distanceFrequencies[distanceCodes[which].symbol];
     at += run;
     literalsFrom = at;
   }
-  for (size_t k = literalsFrom; k < size; ++k) ++litlenFrequencies[data[k]];
   tokens.push_back({uint32_t(size - literalsFrom), 0, 0});
   ++litlenFrequencies[END_OF_BLOCK];
 
@@ -322,7 +324,7 @@ void RunDeflater::deflate(const uint8_t* data, size_t size, size_t rowBytes, std
   // (length code and extra bits, distance code and extra bits), and the end of block.
   size_t literalCount = 0;
   for (const RunToken& token : tokens) literalCount += token.literals;
-  BitWriter bits(out, 1024 + (literalCount * 15 + tokens.size() * 48) / 8);
+  BitWriter bits(scratch, 1024 + (literalCount * 15 + tokens.size() * 48) / 8, out);
   bits.put(1, 1);  // the final block
   bits.put(2, 2);  // dynamic Huffman codes
   writeCodes(bits, litlen, distances);

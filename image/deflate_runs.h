@@ -23,6 +23,7 @@ struct RunToken {
 // Buffers kept from one image to the next (PngEncoder holds one).
 struct RunDeflater {
   std::vector<RunToken> tokens;
+  std::vector<uint8_t> scratch;  // the block's bits before they are appended to the stream
   // Appends the zlib stream (header, one final dynamic-Huffman block, Adler-32) of `size` bytes in
   // rows of `rowBytes`.
   void deflate(const uint8_t* data, size_t size, size_t rowBytes, std::vector<uint8_t>& out);
