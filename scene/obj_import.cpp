@@ -43,7 +43,7 @@ std::string firstLine(const std::string& text) {
 // A decimal number as tinyobjloader reads one: [+-] digits [. digits] [(e|E) [+-] digits], at
 // least one digit before the exponent. It reads anything else ("nan", "inf", "0x1p3", "abc") as 0
 // without a word, so such a token is an error here, not a silent vertex at the origin.
-bool isPlainNumber(const std::string& token) {
+bool isPlainNumber(std::string_view token) {
   size_t i = 0, digits = 0;
   auto skipDigits = [&] {
     size_t start = i;
@@ -65,11 +65,11 @@ bool isPlainNumber(const std::string& token) {
   return i == token.size();
 }
 
-// The words of one line, up to a '#' comment.
-std::vector<std::string_view> wordsOf(std::string_view line) {
-  std::vector<std::string_view> words;
+// The words of one line, up to a '#' comment, into `words` (emptied first: one vector serves every
+// line of a file).
+void wordsOf(std::string_view line, std::vector<std::string_view>& words) {
+  words.clear();
   appendWords(line.substr(0, line.find('#')), words);
-  return words;
 }
 
 // A face corner "v", "v/vt", "v//vn" or "v/vt/vn": each index an integer, not 0, within 32 bits
@@ -102,27 +102,28 @@ std::vector<uint32_t> checkLines(const std::string& path, const std::string& whe
   if (text.find('\0') != std::string_view::npos)
     fail(where, path, "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
   size_t lineNumber = 0;
+  std::vector<std::string_view> words;
   for (size_t start = 0; start < text.size();) {
     const size_t end = std::min(text.find('\n', start), text.size());
     ++lineNumber;
-    const std::vector<std::string_view> words = wordsOf(text.substr(start, end - start));
+    wordsOf(text.substr(start, end - start), words);
     start = end + 1;
     if (words.empty()) continue;
-    const std::string at = "line " + std::to_string(lineNumber) + ": ";
+    const auto at = [&] { return "line " + std::to_string(lineNumber) + ": "; };  // built only for a message
     const std::string_view keyword = words[0];
     if (keyword == "v" || keyword == "vn" || keyword == "vt") {
       for (size_t w = 1; w < words.size(); ++w) {
-        if (!isPlainNumber(std::string(words[w])))
-          fail(where, path, at + "'" + std::string(words[w]).substr(0, 40) + "' in a '" + std::string(keyword) + "' line is not a number");
+        if (!isPlainNumber(words[w]))
+          fail(where, path, at() + "'" + std::string(words[w]).substr(0, 40) + "' in a '" + std::string(keyword) + "' line is not a number");
       }
       if (keyword == "v" && words.size() < 4)
-        fail(where, path, at + "a 'v' line needs x, y and z, got " + std::to_string(words.size() - 1) + " numbers");
+        fail(where, path, at() + "a 'v' line needs x, y and z, got " + std::to_string(words.size() - 1) + " numbers");
     } else if (keyword == "f") {
-      if (words.size() < 4) fail(where, path, at + "a face needs 3 corners or more, got " + std::to_string(words.size() - 1));
+      if (words.size() < 4) fail(where, path, at() + "a face needs 3 corners or more, got " + std::to_string(words.size() - 1));
       faceSizes.push_back(uint32_t(words.size() - 1));
       for (size_t w = 1; w < words.size(); ++w) {
         if (!isCorner(words[w]))
-          fail(where, path, at + "'" + std::string(words[w]).substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
+          fail(where, path, at() + "'" + std::string(words[w]).substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
       }
     }
   }
