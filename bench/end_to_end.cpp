@@ -128,7 +128,7 @@ StartupRun measureStartup(const Setup& s, const std::string& name, int rounds, b
   StartupRun result;
   result.name = name;
   const std::string scene = s.paper + "/" + name + ".json";
-  std::vector<double> gpuSeconds, cpuSeconds, vulkan, pipelines, probe;
+  std::vector<double> gpuSeconds, cpuSeconds, vulkan, pipelines, probe, withoutPipelines;
   for (int round = 0; round < rounds; ++round) {
     std::string environment;
     if (fresh) {  // a new machine: Mesa's and phongvk's caches (and NVIDIA's) in an empty folder
@@ -145,12 +145,14 @@ StartupRun measureStartup(const Setup& s, const std::string& name, int rounds, b
     gpuSeconds.push_back(gpu.seconds);
     cpuSeconds.push_back(cpu.seconds);
     readStartup(gpu, vulkan, pipelines, probe);
+    withoutPipelines.push_back(gpu.seconds - pipelines.back() / 1000.0);
   }
   result.gpuSeconds = phongvk::median(gpuSeconds);
   result.cpuSeconds = phongvk::median(cpuSeconds);
   result.vulkanMs = phongvk::median(vulkan);
   result.pipelinesMs = phongvk::median(pipelines);
   result.probeMs = phongvk::median(probe);
+  result.withoutPipelinesSeconds = phongvk::median(withoutPipelines);
   return result;
 }
 

@@ -34,8 +34,13 @@ struct StartupRun {
   double vulkanMs = 0;     // the compute port's start-up as `render` reports it (median)
   double pipelinesMs = 0;
   double probeMs = 0;      // 0 when cached
+  // The compute port's process less its pipeline creation, per round (median): what a driver
+  // that kept compiled pipelines across processes could reach, the floor of the start-up target
+  // on a driver that keeps none (lavapipe: docs/DECISIONS.md, "What start-up keeps").
+  double withoutPipelinesSeconds = 0;
   std::string failure;
   double ratio() const { return gpuSeconds / cpuSeconds; }
+  double floorRatio() const { return withoutPipelinesSeconds / cpuSeconds; }
 };
 
 struct EndToEnd {
