@@ -81,7 +81,7 @@ SequenceRun measureSequence(const Setup& s, const std::string& name) {
   result.name = name;
   const std::string scene = quoted(s.paper + "/" + name + ".json");
   const std::string frames = s.frames > 0 ? " --frames 0:" + std::to_string(s.frames) : "";
-  std::vector<double> mean, median, fps, seconds;
+  std::vector<double> mean, median, fps, seconds, rates;
   for (int round = 0; round < s.rounds; ++round) {
     const fs::path out = s.scratch.dir / "frames";
     fs::remove_all(out);
@@ -102,11 +102,13 @@ SequenceRun measureSequence(const Setup& s, const std::string& name) {
     seconds.push_back(sequence.seconds);
     median.push_back(after(render.out, "frame ms: median "));
     mean.push_back(after(render.out, ", mean "));
+    rates.push_back(fps.back() * mean.back() / 1000.0);
   }
   result.sequenceFps = phongvk::median(fps);
   result.sequenceSeconds = phongvk::median(seconds);
   result.renderMedianMs = phongvk::median(median);
   result.renderMeanMs = phongvk::median(mean);
+  result.rateMedian = phongvk::median(rates);
   return result;
 }
 

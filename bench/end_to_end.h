@@ -23,8 +23,11 @@ struct SequenceRun {
   double renderMedianMs = 0;   // and its median frame, as render prints it
   double sequenceFps = 0;      // frames written per second after the first (the sequence's summary)
   double sequenceSeconds = 0;  // the whole process, start-up included
+  // Sequence fps / render fps, each round's pair divided, then the median over rounds: the two
+  // commands of a round run one after the other, so a slow spell of a shared machine slows both.
+  double rateMedian = 0;
   std::string failure;
-  double rate() const { return sequenceFps * renderMeanMs / 1000.0; }  // sequence fps / render fps
+  double rate() const { return rateMedian; }
 };
 
 struct StartupRun {

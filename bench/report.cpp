@@ -171,7 +171,9 @@ std::string endToEndSection(const Report& r) {
   s += "### Sequences\n\n`phongvk sequence` writing every frame as a PNG (default level) against `phongvk render "
        "--repeat` of the scene as many times: its frames per second are 1000 / its mean frame ms (its median "
        "is what `render` prints first). The sequence's rate is the frames written per second after the first, "
-       "as its summary prints it; the process time includes start-up.\n\n";
+       "as its summary prints it; the process time includes start-up. \"Sequence / render\" is the median "
+       "over rounds of each round's ratio (the two commands run back to back), not the ratio of the "
+       "columns' medians.\n\n";
   s += header({"scene", "frames", "render --repeat ms (median / mean)", "render frames/s", "sequence frames/s",
                "sequence / render", "sequence process s"});
   for (const SequenceRun& x : e.sequences) {
