@@ -38,8 +38,8 @@ struct StartupRun {
   double pipelinesMs = 0;
   double probeMs = 0;      // 0 when cached
   // The compute port's process less its pipeline creation, per round (median): what a driver
-  // that kept compiled pipelines across processes could reach, the floor of the start-up target
-  // on a driver that keeps none (lavapipe: docs/DECISIONS.md, "What start-up keeps").
+  // that kept compiled pipelines across processes would leave. lavapipe keeps none, so there the
+  // pipelines stay in every process (docs/DECISIONS.md, "What start-up keeps").
   double withoutPipelinesSeconds = 0;
   std::string failure;
   double ratio() const { return gpuSeconds / cpuSeconds; }
