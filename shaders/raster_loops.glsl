@@ -121,10 +121,12 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
     atomicMax(clipList.binGroupsX, min((first + count + BIN_GROUP_SIZE - 1u) / BIN_GROUP_SIZE, control.groupCap));
     return true;
   }
-  // A bin of the box that the triangle misses gets no entry (its reserved one stays unused).
+  // Each row of bins from the first to the last that the triangle may reach in it (binRowRange);
+  // a bin the triangle misses gets no entry (its reserved one stays unused).
   uint e = first;
   for (int by = bins.y; by <= bins.w; ++by) {
-    for (int bx = bins.x; bx <= bins.z; ++bx) {
+    ivec2 row = binRowRange(record, by, bins);
+    for (int bx = row.x; bx <= row.y; ++bx) {
       if (linkEntry(e, slot, record, ivec2(bx, by))) ++e;
     }
   }

@@ -235,6 +235,67 @@ TEST(GpuMaths, BinTileMaskKeepsEveryTileWithACoveredPixel) {
   EXPECT_GT(counts[3], 1000);
 }
 
+// Whether the triangle covers a pixel centre of the 32x32 bin at `bin` inside the 1024x1024 image.
+bool binHasCoveredCentre(const EdgeSetup& s, ivec2 bin) {
+  for (int y = bin.y; y < std::min(bin.y + int(BIN_SIZE), 1024); ++y) {
+    for (int x = bin.x; x < std::min(bin.x + int(BIN_SIZE), 1024); ++x) {
+      if (covers(s, pixelCentre(x, y))) return true;
+    }
+  }
+  return false;
+}
+
+TEST(GpuMaths, BinRowRangeKeepsEveryBinWithACoveredPixel) {
+  // The clip pass links a large triangle into the bins of each row of its box from binRowRange's
+  // first to its last: every bin with a pixel centre the triangle covers must be among them. Bins
+  // that classifyBlock calls outside have none (BlockClassification... checks that); any other
+  // left out is checked pixel by pixel. Huge triangles (randomBlockTriangle) and ones of a few bins
+  // with vertices on pixel centres half the time, so that edges pass through the rows' centres.
+  std::mt19937 rng(31);
+  std::uniform_int_distribution<int> centre(0, 1023), offset(-150, 150), subpixel(0, 255), bin(0, 31), side(0, 1);
+  long inRange = 0, reached = 0;
+  for (int trial = 0; trial < 6000; ++trial) {
+    EdgeSetup s;
+    if (trial % 3 == 0) {
+      if (!randomBlockTriangle(rng, trial, s)) continue;
+    } else {
+      // Vertices anywhere near a centre, or on the centre of a bin's first or last pixel column
+      // and row (where a bin of a row begins or ends), within a subpixel or two.
+      const ivec2 c(centre(rng), centre(rng));
+      ivec2 v[3];
+      for (auto& vertex : v) {
+        if (trial % 3 == 1) {
+          const ivec2 pixel = ivec2(bin(rng), bin(rng)) * int(BIN_SIZE) + ivec2(side(rng), side(rng)) * (int(BIN_SIZE) - 1);
+          vertex = pixel * 256 + 128 + ivec2(offset(rng) % 3, offset(rng) % 3);
+          continue;
+        }
+        const int fraction = trial % 2 == 0 ? 128 : subpixel(rng);
+        vertex = ivec2((c.x + offset(rng)) * 256 + fraction, (c.y + offset(rng)) * 256 + fraction);
+      }
+      if (!setupEdges(v[0], v[1], v[2], trial % 3 == 0, 1024, 1024, s)) continue;
+    }
+    TriangleSetup t{};
+    const LargeTriangle large = largeTriangle(t, s);
+    const ivec4 bins = s.bbox / int(BIN_SIZE);
+    for (int by = bins.y; by <= bins.w; ++by) {
+      const ivec2 row = binRowRange(large, by, bins);
+      ASSERT_TRUE(row.x > row.y || (row.x >= bins.x && row.y <= bins.z)) << "trial " << trial;
+      for (int bx = bins.x; bx <= bins.z; ++bx) {
+        const ivec2 bin = ivec2(bx, by) * int(BIN_SIZE);
+        const bool kept = bx >= row.x && bx <= row.y;
+        inRange += kept;
+        const bool maybe = classifyBlock(large, blockEdges(large, bin), bin, int(BIN_SIZE)) != BLOCK_OUTSIDE;
+        reached += maybe;
+        if (kept || !maybe) continue;
+        ASSERT_FALSE(binHasCoveredCentre(s, bin)) << "trial " << trial << " bin " << bx << "," << by;
+      }
+    }
+  }
+  // The ranges are close to the bins the triangles reach, and not the whole boxes.
+  EXPECT_GT(reached, 10000);
+  EXPECT_LT(inRange, reached + reached / 4);
+}
+
 TEST(GpuMaths, LargeShadingKeepsTheColourOfEveryPixelBitForBit) {
   // The clip pass stores a large triangle's Gouraud constants without n and det, which resolve
   // takes from the triangle's plane: every pixel's colour must be the one computed from the
