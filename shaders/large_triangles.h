@@ -143,17 +143,15 @@ FN ivec2 widenByEdge(ivec2 a, ivec2 b, int y0, int y1, ivec2 range) {
   return ivec2(min(range.x, min(x0, x1)), max(range.y, max(x0, x1)));
 }
 
-// Floor of v / d for d > 0, whatever v's sign (snapped coordinates reach left of the image).
-FN int floorDivide(int v, int d) { return v >= 0 ? v / d : -((d - 1 - v) / d); }
-
 // The bins of bin row `by` (first and last column, within `bins`, the bins of the triangle's box;
 // first > last when none) that can hold a pixel centre the large triangle covers: those under the
 // part of the triangle between the row's first and last pixel centres in its box. That part is
 // convex, so its x extremes are where its edges enter and leave those heights, or its vertices
-// between them; one subpixel either side covers edgeXAt's truncation. A superset of the bins with
-// a covered pixel centre, as binTileMasks' tiles are of the tiles with one, found per row of bins
-// instead of by testing every bin of the box (a thin wedge of a ground disc has ~3x as many bins
-// in its box as it reaches).
+// between them; one subpixel either side covers edgeXAt's truncation. The pixel columns whose
+// centres lie in that range, within the box (rounded as pixelBounds rounds), give the bins. A
+// superset of the bins with a covered pixel centre, as binTileMasks' tiles are of the tiles with
+// one, found per row of bins instead of by testing every bin of the box (a thin wedge of a ground
+// disc has ~3x as many bins in its box as it reaches).
 FN ivec2 binRowRange(LargeTriangle t, int by, ivec4 bins) {
   int y0 = max(by * int(BIN_SIZE), t.bbox.y) * SUBPIXEL_ONE + SUBPIXEL_HALF;
   int y1 = min(by * int(BIN_SIZE) + int(BIN_SIZE) - 1, t.bbox.w) * SUBPIXEL_ONE + SUBPIXEL_HALF;
@@ -161,10 +159,10 @@ FN ivec2 binRowRange(LargeTriangle t, int by, ivec4 bins) {
   x = widenByEdge(t.v0, t.v1, y0, y1, x);
   x = widenByEdge(t.v1, t.v2, y0, y1, x);
   x = widenByEdge(t.v2, t.v0, y0, y1, x);
-  if (x.x > x.y) return ivec2(bins.z + 1, bins.z);
-  int binWidth = int(BIN_SIZE) * SUBPIXEL_ONE;
-  return ivec2(max(floorDivide(x.x - 1 - SUBPIXEL_HALF, binWidth), bins.x),
-               min(floorDivide(x.y + 1 - SUBPIXEL_HALF, binWidth), bins.z));
+  int first = max(floorDiv256(x.x - 1 - SUBPIXEL_HALF + 255), t.bbox.x);
+  int last = min(floorDiv256(x.y + 1 - SUBPIXEL_HALF), t.bbox.z);
+  if (x.x > x.y || first > last) return ivec2(bins.z + 1, bins.z);
+  return ivec2(first, last) / int(BIN_SIZE);
 }
 
 // The edge values walking down column i of a block: at the current row (starting at row 0), and

@@ -248,9 +248,10 @@ bool binHasCoveredCentre(const EdgeSetup& s, ivec2 bin) {
 TEST(GpuMaths, BinRowRangeKeepsEveryBinWithACoveredPixel) {
   // The clip pass links a large triangle into the bins of each row of its box from binRowRange's
   // first to its last: every bin with a pixel centre the triangle covers must be among them. Bins
-  // that classifyBlock calls outside have none (BlockClassification... checks that); any other
-  // left out is checked pixel by pixel. Huge triangles (randomBlockTriangle) and ones of a few bins
-  // with vertices on pixel centres half the time, so that edges pass through the rows' centres.
+  // that classifyBlock calls outside have none (BlockClassificationAndSteppedEdgesAgreeWithCovers
+  // checks that); any other left out is checked pixel by pixel. Huge triangles
+  // (randomBlockTriangle), ones of a few bins with vertices on pixel centres half the time (edges
+  // through the rows' centres), and ones with vertices where bins begin or end; both windings.
   std::mt19937 rng(31);
   std::uniform_int_distribution<int> centre(0, 1023), offset(-150, 150), subpixel(0, 255), bin(0, 31), side(0, 1);
   long inRange = 0, reached = 0;
@@ -272,7 +273,7 @@ TEST(GpuMaths, BinRowRangeKeepsEveryBinWithACoveredPixel) {
         const int fraction = trial % 2 == 0 ? 128 : subpixel(rng);
         vertex = ivec2((c.x + offset(rng)) * 256 + fraction, (c.y + offset(rng)) * 256 + fraction);
       }
-      if (!setupEdges(v[0], v[1], v[2], trial % 3 == 0, 1024, 1024, s)) continue;
+      if (!setupEdges(v[0], v[1], v[2], trial / 3 % 2 == 0, 1024, 1024, s)) continue;
     }
     TriangleSetup t{};
     const LargeTriangle large = largeTriangle(t, s);
