@@ -5,6 +5,7 @@
 #include "scene/mapped_file.h"
 #include "scene/normals.h"
 #include "scene/polygon.h"
+#include "scene/regular_file.h"
 #include "scene/scene_json.h"
 #include "scene/text_words.h"
 
@@ -17,7 +18,9 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
+#include <filesystem>
+#include <istream>
+#include <map>
 #include <sstream>
 #include <unordered_map>
 
@@ -95,10 +98,8 @@ bool isCorner(std::string_view corner) {
 // and vt lines is a plain decimal number, a v line has x, y and z, a face has three corners or
 // more and every corner index is one (in 32 bits); and the file is text. Returns the faces' corner
 // counts, in file order (tinyobjloader keeps only their low 8 bits).
-std::vector<uint32_t> checkLines(const std::string& path, const std::string& where) {
+std::vector<uint32_t> checkLines(std::string_view text, const std::string& path, const std::string& where) {
   std::vector<uint32_t> faceSizes;
-  const MappedFile file(path, where);
-  const std::string_view text = file.bytes();
   if (text.find('\0') != std::string_view::npos)
     fail(where, path, "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
   size_t lineNumber = 0;
@@ -130,21 +131,63 @@ std::vector<uint32_t> checkLines(const std::string& path, const std::string& whe
   return faceSizes;
 }
 
+// The file's bytes as a stream, read where they lie (no copy).
+class BytesStream : private std::streambuf, public std::istream {
+ public:
+  explicit BytesStream(std::string_view bytes) : std::istream(this) {
+    char* begin = const_cast<char*>(bytes.data());  // only read: std::streambuf's get area is char*
+    setg(begin, begin, begin + bytes.size());
+  }
+};
+
+// The material libraries an OBJ names (mtllib), resolved against its folder as tinyobjloader
+// resolves them, and read only if they are regular files (regular_file.h): a FIFO or a device
+// named there would block or never end. A library that is missing is passed over, as every OBJ
+// reader does (materials do not change how phongvk renders an OBJ); one that is not a regular file
+// is an error.
+class MaterialLibraries : public tinyobj::MaterialReader {
+ public:
+  MaterialLibraries(std::string folder, const std::string& path, const std::string& where)
+      : folder_(std::move(folder)), path_(path), where_(where) {}
+
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* byName, std::string* warning, std::string* error) override {
+    const std::string library = name.empty() || name[0] == '/' || folder_.empty() ? name : folder_ + "/" + name;
+    std::error_code missing;
+    if (!std::filesystem::exists(library, missing)) return false;
+    std::string why;
+    const std::optional<RegularFile> file = RegularFile::open(library, why);
+    if (!file) fail(where_, path_, "mtllib '" + name + "': " + why);
+    const std::string text = file->read();
+    BytesStream in(text);
+    tinyobj::LoadMtl(byName, materials, &in, warning, error);
+    return true;
+  }
+
+ private:
+  std::string folder_;
+  const std::string& path_;
+  const std::string& where_;
+};
+
 ObjData parse(const std::string& path, const std::string& where) {
-  if (!std::ifstream(path)) fail(where, path, "cannot open the file");
-  const std::vector<uint32_t> faceSizes = checkLines(path, where);
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = false;  // polygons are cut by ear clipping (polygon.h), not fanned
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path, config))
-    fail(where, path, "not a valid OBJ file: " + firstLine(reader.Error()));
+  const MappedFile file(path, where);
+  const std::vector<uint32_t> faceSizes = checkLines(file.bytes(), path, where);
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warning, error;
+  BytesStream in(file.bytes());
+  MaterialLibraries libraries(std::filesystem::path(path).parent_path().string(), path, where);
+  // Polygons are cut by ear clipping (polygon.h), not fanned: no triangulation here.
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &libraries, false, false))
+    fail(where, path, "not a valid OBJ file: " + firstLine(error));
   // tinyobjloader skips a quad with a bad index, with only this warning.
-  if (reader.Warning().find("invalid vertex index") != std::string::npos)
+  if (warning.find("invalid vertex index") != std::string::npos)
     fail(where, path, "a face's vertex index is out of range");
-  ObjData data{reader.GetAttrib().vertices, reader.GetAttrib().normals, {}, faceSizes};
+  ObjData data{attrib.vertices, attrib.normals, {}, faceSizes};
   size_t faces = 0;
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+  for (const tinyobj::shape_t& shape : shapes) {
     data.corners.insert(data.corners.end(), shape.mesh.indices.begin(), shape.mesh.indices.end());
     for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++faces) {
       // tinyobjloader's count is the low 8 bits of ours (a face of 300 corners: 44): ours is kept.

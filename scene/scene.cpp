@@ -7,12 +7,9 @@
 #include "scene/scene_sections.h"
 
 #include <array>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 namespace phongvk {
 namespace {
@@ -84,13 +81,10 @@ SceneSpec withRenderOptions(SceneSpec scene, const std::string& json) {
 }
 
 std::string readSceneText(const std::string& path) {
-  if (auto reason = unreadableReason(path)) {
-    throw SceneError(path + ": cannot read file: " + *reason);
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (!in.is_open()) throw SceneError(path + ": cannot read file: " + std::strerror(errno));
-  return text;
+  std::string why;
+  const std::optional<RegularFile> file = RegularFile::open(path, why);
+  if (!file) throw SceneError(path + ": cannot read file: " + why);
+  return file->read();
 }
 
 SceneSpec loadSceneSpec(const std::string& path) {

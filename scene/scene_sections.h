@@ -5,6 +5,7 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "scene/regular_file.h"
 #include "scene/scene_json.h"
 
 #include <optional>
@@ -29,10 +30,6 @@ glm::dvec3 point(const Node& node);
 double length(const Node& node);  // > 0 and <= MAX_COORDINATE
 // A direction the camera basis can normalize: length neither zero nor overflowing.
 glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction);
-// Why `path` cannot be read as a regular file, or nothing if it can. Checks the type before
-// opening: opening a FIFO for reading would block.
-std::optional<std::string> unreadableReason(const std::string& path);
-
 // ---- sections ----
 CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
 std::vector<Light> readLights(const Node& node);  // scene_lighting.cpp

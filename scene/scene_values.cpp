@@ -1,13 +1,7 @@
 // scene_values.cpp — the value readers the scene file's sections share (scene_sections.h).
 #include "scene/scene_sections.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 
 namespace phongvk::scenejson {
 
@@ -36,17 +30,6 @@ glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction) {
     node.fail("must have a non-zero finite length, got length " + formatNumber(length));
   }
   return direction;
-}
-
-std::optional<std::string> unreadableReason(const std::string& path) {
-  struct stat info;
-  if (::stat(path.c_str(), &info) != 0) return std::strerror(errno);
-  if (S_ISDIR(info.st_mode)) return std::strerror(EISDIR);
-  if (!S_ISREG(info.st_mode)) return std::string("not a regular file");
-  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return std::strerror(errno);
-  ::close(fd);
-  return std::nullopt;
 }
 
 }  // namespace phongvk::scenejson

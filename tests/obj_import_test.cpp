@@ -138,7 +138,7 @@ TEST(ObjMesh, PlainNumbersInEveryFormAreRead) {
 
 TEST(ObjMesh, MissingFileIsAnError) {
   const std::string path = test::makeTempDir() + "/missing.obj";
-  EXPECT_EQ(buildError(objObject(path)), "objects[6].file: " + path + ": cannot open the file");
+  EXPECT_EQ(buildError(objObject(path)), "objects[6].file: " + path + ": cannot open the file: No such file or directory");
 }
 
 }  // namespace
