@@ -172,7 +172,11 @@ std::vector<PathStep> parseTrackPath(const Node& node) {
 }
 
 SceneSequence SceneSequence::load(const std::string& path) {
-  if (isModelFile(path)) return SceneSequence(modelScene(path), path, "");
+  if (isModelFile(path)) {
+    SceneSequence model(modelScene(path), path, "");
+    model.modelAlone_ = true;
+    return model;
+  }
   return SceneSequence(parseJson(readSceneText(path), path), path,
                        std::filesystem::path(path).parent_path().string());
 }
@@ -207,7 +211,9 @@ SceneSpec SceneSequence::frame(int frame) const {
   // The frame's JSON tree is read as it is: no text in between.
   const std::string source = animated_ ? path_ + ": frame " + std::to_string(frame) : path_;
   const Json json = frameJson(frame);
-  return readScene(Node(json, "", source), path_, baseDir_, objectsLater_);
+  SceneSpec spec = readScene(Node(json, "", source), path_, baseDir_, objectsLater_);
+  spec.modelAlone = modelAlone_;
+  return spec;
 }
 
 bool SceneSequence::geometryDiffers(int a, int b) const {

@@ -73,6 +73,7 @@ class SceneSequence {
   int frames_ = 1;
   bool animated_ = false;  // the file has an "animate" block (its messages then name the frame)
   bool objectsLater_ = false;
+  bool modelAlone_ = false;  // a mesh file given alone (model_scene.h): its frames say so
   std::vector<Track> tracks_;
 };
 

@@ -4,7 +4,9 @@
 #include "scene/gltf_import.h"
 
 #include "scene/mesh_import.h"
+#include "scene/regular_file.h"
 #include "scene/scene.h"
+#include "scene/scene_json.h"
 
 // The implementation is compiled here, with hidden visibility like the rest of phongvk, rather than
 // taken from Debian's libtinygltf.so: tinygltf is a header-only library, and another build of its
@@ -18,42 +20,39 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+#include <filesystem>
 #include <optional>
 
 namespace phongvk {
 namespace {
 
-constexpr int kMaxNodeDepth = 256;  // deeper (or cyclic) node trees are refused
+constexpr int kMaxNodeDepth = 256;  // deeper node trees are refused
+// How far from 1 a rotation quaternion's length may be: exporters write 6 to 9 digits.
+constexpr double kUnitTolerance = 1e-3;
 
 [[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
   throw SceneError(where + ": " + path + ": " + why);
 }
 
-// Whether a file tinygltf looks for is there, without opening it (tinygltf's own check opens it).
-bool isRegularFile(const std::string& path, void*) {
-  struct stat info;
-  return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+// Whether a file tinygltf looks for is there, of whatever kind: readRegularFile then says what is
+// wrong with one that is not a regular file (tinygltf would say "not found").
+bool fileExists(const std::string& path, void*) {
+  std::error_code error;
+  return std::filesystem::exists(path, error);
 }
 
-// The file itself and any buffer it names: regular files only (a buffer URI naming a FIFO would
-// block the read forever, a device would never end), read whole.
+// The file itself and any buffer it names: regular files only (regular_file.h), read whole.
 bool readRegularFile(std::vector<unsigned char>* out, std::string* error, const std::string& path, void*) {
-  if (!isRegularFile(path, nullptr)) {
-    if (error) *error += "'" + path + "' is not a readable regular file\n";
+  std::string why;
+  const std::optional<RegularFile> file = RegularFile::open(path, why);
+  if (!file) {
+    if (error) *error += "'" + path + "': " + why + "\n";
     return false;
   }
-  std::ifstream in(path, std::ios::binary);
-  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (in.bad()) {
-    if (error) *error += "cannot read '" + path + "'\n";
-    return false;
-  }
+  const std::string bytes = file->read();
+  out->assign(bytes.begin(), bytes.end());
   return true;
 }
 
@@ -83,10 +82,15 @@ class Accessor {
     const size_t element = size_t(components_) * size_t(componentSize_);
     stride_ = view.byteStride != 0 ? view.byteStride : element;
     if (stride_ < element) bad("its stride is smaller than an element");
-    const uint64_t start = uint64_t(view.byteOffset) + a.byteOffset;
-    const uint64_t end = count_ == 0 ? start : start + uint64_t(stride_) * (count_ - 1) + element;
-    if (view.byteOffset + view.byteLength > buffer.size() || a.byteOffset + (end - start) > view.byteLength)
-      bad("runs past the end of its buffer");
+    // Every sum and product below is checked before it is made: offsets and counts near 2^64
+    // would otherwise wrap around and pass.
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
+      bad("its buffer view runs past the end of its buffer");
+    if (a.byteOffset > view.byteLength) bad("runs past the end of its buffer view");
+    const size_t room = view.byteLength - a.byteOffset;  // bytes from the accessor's start to the view's end
+    if (count_ > 0 && (element > room || count_ - 1 > (room - element) / stride_))
+      bad("runs past the end of its buffer view (" + std::to_string(count_) + " elements)");
+    const size_t start = view.byteOffset + a.byteOffset;
     data_ = buffer.data() + start;
   }
 
@@ -107,6 +111,10 @@ class Accessor {
   }
 
   bool isInteger() const { return componentType_ != TINYGLTF_COMPONENT_TYPE_FLOAT && componentType_ != TINYGLTF_COMPONENT_TYPE_DOUBLE; }
+  bool isUnsignedInteger() const {
+    return componentType_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || componentType_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+           componentType_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+  }
 
  private:
   template <typename T>
@@ -123,7 +131,22 @@ class Accessor {
   bool normalized_ = false;
 };
 
-glm::dmat4 nodeMatrix(const tinygltf::Node& node) {
+// The node's transform: its matrix, or translation, rotation and scale. Arrays of another length
+// and rotations that are not unit quaternions are errors (the specification's rules), not a guess.
+glm::dmat4 nodeMatrix(const tinygltf::Node& node, const std::string& name, const std::string& path, const std::string& where) {
+  const auto needs = [&](const std::vector<double>& values, size_t size, const char* key) {
+    if (!values.empty() && values.size() != size)
+      fail(where, path, name + "." + key + " has " + std::to_string(values.size()) + " numbers, not " + std::to_string(size));
+  };
+  needs(node.matrix, 16, "matrix");
+  needs(node.translation, 3, "translation");
+  needs(node.rotation, 4, "rotation");
+  needs(node.scale, 3, "scale");
+  if (node.rotation.size() == 4) {
+    const double length = glm::length(glm::dvec4(node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]));
+    if (!(std::abs(length - 1.0) <= kUnitTolerance))
+      fail(where, path, name + ".rotation is not a unit quaternion (its length is " + scenejson::formatNumber(length) + ")");
+  }
   if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glm
   glm::dmat4 m(1.0);
   if (node.translation.size() == 3) m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
@@ -141,10 +164,17 @@ class Reader {
       : model_(model), baseColors_(baseColors), path_(path), where_(where) {}
 
   void node(int index, const glm::dmat4& parent, int depth) {
-    if (depth > kMaxNodeDepth) fail(where_, path_, "the node tree is deeper than " + std::to_string(kMaxNodeDepth) + " (or has a cycle)");
+    const std::string name = "nodes[" + std::to_string(index) + "]";
+    if (depth > kMaxNodeDepth) fail(where_, path_, "the node tree is deeper than " + std::to_string(kMaxNodeDepth));
     if (index < 0 || size_t(index) >= model_.nodes.size()) fail(where_, path_, "node " + std::to_string(index) + " does not exist");
+    // The specification asks for a tree: a node reached twice (two parents, a cycle, or a root that
+    // is also a child) would multiply the meshes below it, 2^40 times for 40 shared levels.
+    if (visited_.empty()) visited_.assign(model_.nodes.size(), false);
+    if (visited_[size_t(index)])
+      fail(where_, path_, name + " is reached twice (nodes must form a tree: no node may have two parents or be its own ancestor)");
+    visited_[size_t(index)] = true;
     const tinygltf::Node& n = model_.nodes[size_t(index)];
-    const glm::dmat4 transform = parent * nodeMatrix(n);
+    const glm::dmat4 transform = parent * nodeMatrix(n, name, path_, where_);
     if (n.mesh >= 0) {
       if (size_t(n.mesh) >= model_.meshes.size()) fail(where_, path_, "node " + std::to_string(index) + " names a mesh that does not exist");
       for (const tinygltf::Primitive& p : model_.meshes[size_t(n.mesh)].primitives) primitive(p, transform);
@@ -162,7 +192,8 @@ class Reader {
       return list;
     }
     const Accessor a(model_, p.indices, "indices", path_, where_);
-    if (!a.isInteger() || a.components() != 1) fail(where_, path_, "indices are not integers");
+    if (!a.isUnsignedInteger() || a.components() != 1)
+      fail(where_, path_, "indices (accessor " + std::to_string(p.indices) + ") are not unsigned integers (5121, 5123 or 5125 scalars)");
     for (size_t i = 0; i < a.count(); ++i) {
       const double v = a.at(i, 0);
       if (!(v < double(vertices))) fail(where_, path_, "index " + std::to_string(i) + " is " + std::to_string(uint64_t(v)) + ", but there are " + std::to_string(vertices) + " vertices");
@@ -189,7 +220,9 @@ class Reader {
   }
 
   void primitive(const tinygltf::Primitive& p, const glm::dmat4& transform) {
-    const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+    const int mode = p.mode;
+    if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
+      fail(where_, path_, "a primitive's mode is " + std::to_string(mode) + ", not a glTF primitive mode (0 to 6)");
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) return;
     const auto position = p.attributes.find("POSITION");
     if (position == p.attributes.end()) fail(where_, path_, "a primitive has no POSITION");
@@ -250,19 +283,36 @@ class Reader {
   const std::string& path_;
   const std::string& where_;
   std::vector<MeshPart> parts_;
+  std::vector<bool> visited_;  // nodes reached so far
 };
+
+// glTF 2.x (a later minor version is read as 2.0, as the specification allows), and no required
+// extension: phongvk implements none, and a file that requires one (Draco compression, quantized
+// positions) cannot be read right without it.
+void checkAsset(const tinygltf::Model& model, const std::string& path, const std::string& where) {
+  const std::string& version = model.asset.version;
+  if (version.rfind("2.", 0) != 0)
+    fail(where, path, "asset.version is '" + version + "'; phongvk reads glTF 2.0 files (convert a glTF 1.0 file to 2.0 first)");
+  if (!model.extensionsRequired.empty()) {
+    std::string names;
+    for (const std::string& name : model.extensionsRequired) names += (names.empty() ? "" : ", ") + name;
+    fail(where, path, "requires the extension" + std::string(model.extensionsRequired.size() > 1 ? "s " : " ") + names +
+                          ", which phongvk does not implement");
+  }
+}
 
 }  // namespace
 
 Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std::string& where) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(skipImage, nullptr);
-  loader.SetFsCallbacks({isRegularFile, tinygltf::ExpandFilePath, readRegularFile, tinygltf::WriteWholeFile, nullptr});
+  loader.SetFsCallbacks({fileExists, tinygltf::ExpandFilePath, readRegularFile, tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string error, warning;
   const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
                              : loader.LoadASCIIFromFile(&model, &error, &warning, path);
   if (!loaded) fail(where, path, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " + error.substr(0, error.find('\n')));
+  checkAsset(model, path, where);
   if (model.scenes.empty()) fail(where, path, "no scene");
   const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
   if (size_t(sceneIndex) >= model.scenes.size()) fail(where, path, "the default scene does not exist");

@@ -4,6 +4,8 @@
 
 #include "scene/mesh.h"
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
 namespace phongvk {
@@ -15,5 +17,10 @@ namespace phongvk {
 // specification asks. COLOR_0 as 8 bits a channel; with `baseColors`, each primitive's base
 // colour factor multiplies it (or is its colour). Throws SceneError "<where>: <path>: <why>".
 Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std::string& where);
+
+// The triangles importGltf will build from `path`, counted from the JSON alone (gltf_estimate.cpp):
+// every primitive's index (or position) count, as often as the node tree places its mesh, whatever
+// the size of the buffers. Nothing when the JSON cannot be read (importGltf then says why).
+std::optional<uint64_t> gltfTriangles(const std::string& path, bool binary);
 
 }  // namespace phongvk

@@ -5,6 +5,7 @@
 #include "scene/mapped_file.h"
 #include "scene/obj_import.h"
 #include "scene/ply_file.h"
+#include "scene/regular_file.h"
 #include "scene/stl_file.h"
 #include "scene/scene.h"
 
@@ -12,7 +13,6 @@
 #include <cctype>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 namespace phongvk {
@@ -60,20 +60,25 @@ const char* formatName(MeshFormat format) {
   return "?";
 }
 
+uint64_t meshFileTriangles(const std::string& path, MeshFormat format, uint64_t bytes) {
+  if (format == MeshFormat::Gltf || format == MeshFormat::Glb) {
+    if (const std::optional<uint64_t> triangles = gltfTriangles(path, format == MeshFormat::Glb)) return *triangles;
+  }
+  return bytes / 12;
+}
+
 bool usuallyYUp(MeshFormat format) {
   return format == MeshFormat::Obj || format == MeshFormat::Gltf || format == MeshFormat::Glb;
 }
 
 DetectedFormat detectMeshFormat(const std::string& path) {
   const auto problem = [&](const std::string& why) { return DetectedFormat{std::nullopt, path + ": " + why}; };
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return problem("cannot open the file");
-  std::string head(256, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(size_t(in.gcount()));
-  std::error_code error;
-  const uint64_t size = std::filesystem::file_size(path, error);
-  const std::optional<MeshFormat> byContent = formatOfContent(head, error ? 0 : size);
+  std::string unreadable;
+  const std::optional<RegularFile> file = RegularFile::open(path, unreadable);
+  if (!file) return problem("cannot open the file: " + unreadable);
+  const std::string head = file->read(256);
+  const uint64_t size = file->size();
+  const std::optional<MeshFormat> byContent = formatOfContent(head, size);
   const std::optional<MeshFormat> byExtension = formatOfExtension(path);
   if (byContent && byExtension && *byContent != *byExtension)
     return problem(std::string("the extension says ") + formatName(*byExtension) + " but the content is " +

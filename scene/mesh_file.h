@@ -34,6 +34,12 @@ DetectedFormat detectMeshFormat(const std::string& path);
 // "<where>: <path>: <why>".
 Mesh importMeshFile(const std::string& path, MeshFormat format, bool baseColors, const std::string& where);
 
+// The triangles a mesh file of `bytes` will build, estimated before it is read, for the memory
+// estimate: glTF and GLB count them from the JSON (gltf_import.h gltfTriangles: external buffers and
+// instancing included); the other formats hold every triangle they build, 12 bytes a triangle at
+// least, so their size bounds it.
+uint64_t meshFileTriangles(const std::string& path, MeshFormat format, uint64_t bytes);
+
 // The up axis a model in this format usually has: y for glTF (the format says so) and OBJ (most
 // tools' export default), z for PLY and STL (scanners, CAD and 3D printing).
 bool usuallyYUp(MeshFormat format);

@@ -14,7 +14,9 @@ bool isModelFile(const std::string& path) {
 }
 
 scenejson::Json modelScene(const std::string& path) {
-  const MeshFormat format = meshFormat(path, "model");
+  const DetectedFormat detected = detectMeshFormat(path);
+  if (!detected.format) throw SceneError(detected.problem);  // "<path>: <why>": the user's file alone
+  const MeshFormat format = *detected.format;
   const std::string file = std::filesystem::absolute(path).string();
   return scenejson::Json{
       {"camera", {{"fit", true}, {"fov", 40}, {"width", 960}, {"height", 720}}},

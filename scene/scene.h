@@ -53,6 +53,13 @@ struct CameraSpec {
 // and squared distances the renderers take in 32-bit float cannot overflow.
 inline constexpr double MAX_COORDINATE = 1e15;
 
+// The most lights a scene may have. The compute port lights a vertex (Gouraud) or a pixel (flat
+// and Phong shading, each of a bin's 16 tiles in turn) in a loop over the lights, and lavapipe
+// allows one shader invocation 65,535 loop iterations in all: a screen-filling dense mesh with
+// 2,048 lights already ran out with Phong shading, where the reference renders it. 1,024 renders
+// in every mode on both renderers, and is far beyond what a Phong scene lights itself with.
+inline constexpr size_t MAX_LIGHTS = 1024;
+
 // A file's size and modification time: a renderer rebuilds a mesh whose file changed since it
 // built it (sameGeometry, scene_data.h).
 struct FileVersion {
@@ -81,6 +88,7 @@ struct Object {
   std::vector<glm::dvec3> points;    // polyhedron: convex hull of these
   std::string file;                  // mesh: OBJ, PLY, STL, glTF or GLB path, resolved against the scene folder
   FileVersion fileVersion;           // mesh: the file as it was when the scene was loaded
+  uint64_t fileTriangles = 0;        // mesh: what the file will build, estimated then (memory_estimate.h)
   std::shared_ptr<const Mesh> arrays;  // mesh: given as arrays (mesh_arrays.h) instead of a file
   bool baseColors = false;           // mesh: a glTF file's base colours apply (it names no material)
   glm::dvec3 translate = {0, 0, 0};  // mesh: the origin of its local frame
@@ -110,6 +118,9 @@ struct SceneSpec {
   int samples = 1;  // per pixel: 1, 4, 9 or 16
   // Which contiguous share of the built triangles to keep (sharePart of shareParts, near-equal
   // ranges in file order), for one process of a scene split across several (phongvk render --mpi).
+  // A mesh file given alone (model_scene.h): its messages name that file only, not the scene
+  // phongvk made around it ("m.gltf: index 7 is ...", not "m.gltf: objects[0].file: /abs/m.gltf: ...").
+  bool modelAlone = false;
   int sharePart = 0;
   int shareParts = 1;
 };

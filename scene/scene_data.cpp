@@ -35,7 +35,10 @@ std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, si
       meshes.push_back(buildObjectMesh(object));
     } catch (const SceneError& error) {  // the object's JSON path and any inner file: the scene file first
       if (scene.path.empty()) throw;
-      throw SceneError(scene.path + ": " + error.what());
+      std::string why = error.what();
+      const std::string inner = object.jsonPath + ".file: " + object.file + ": ";
+      if (scene.modelAlone && why.rfind(inner, 0) == 0) why.erase(0, inner.size());
+      throw SceneError(scene.path + ": " + why);
     }
     vertices += meshes.back().mesh.positions.size();
     triangles += meshes.back().mesh.triangles.size();

@@ -28,6 +28,8 @@ Light readLight(const Node& node) {
 
 std::vector<Light> readLights(const Node& node) {
   requireArray(node);
+  if (node.json().size() > MAX_LIGHTS)
+    node.fail("a scene has at most " + std::to_string(MAX_LIGHTS) + " lights, this one " + std::to_string(node.json().size()));
   std::vector<Light> lights;
   for (size_t i = 0; i < node.json().size(); ++i) lights.push_back(readLight(node.element(i)));
   return lights;

@@ -61,18 +61,7 @@ std::vector<glm::dvec3> readPoints(const Node& node) {
   return points;
 }
 
-// Only checks that the file can be read and that its content and extension agree on a format: the
-// mesh builder parses it.
-std::string resolveMeshFile(const Node& node, const std::string& baseDir) {
-  std::string file = string(node);
-  if (file.empty()) node.fail("must name a file, got an empty string");
-  // An absolute `file` replaces baseDir here.
-  std::string resolved = (std::filesystem::path(baseDir) / file).string();
-  if (auto reason = unreadableReason(resolved)) node.fail("cannot read '" + file + "': " + *reason);
-  const DetectedFormat format = detectMeshFormat(resolved);
-  if (!format.format) node.fail(format.problem);
-  return resolved;
-}
+
 
 FileVersion fileVersion(const std::string& path) {
   std::error_code error;
@@ -81,6 +70,20 @@ FileVersion fileVersion(const std::string& path) {
   const auto modified = std::filesystem::last_write_time(path, error);
   if (!error) version.modified = std::chrono::duration_cast<std::chrono::nanoseconds>(modified.time_since_epoch()).count();
   return version;
+}
+
+// The file's path (resolved against baseDir) into `object.file`, its version, and the triangles it
+// will build (mesh_file.h meshFileTriangles).
+void resolveMeshFile(const Node& node, const std::string& baseDir, Object& object) {
+  std::string file = string(node);
+  if (file.empty()) node.fail("must name a file, got an empty string");
+  // An absolute `file` replaces baseDir here.
+  object.file = (std::filesystem::path(baseDir) / file).string();
+  if (auto reason = unreadableReason(object.file)) node.fail("cannot read '" + file + "': " + *reason);
+  const DetectedFormat format = detectMeshFormat(object.file);
+  if (!format.format) node.fail(format.problem);
+  object.fileVersion = fileVersion(object.file);
+  object.fileTriangles = meshFileTriangles(object.file, *format.format, object.fileVersion.bytes);
 }
 
 // Each geometry key means the same for every shape that takes it, and checkObjectKeys has
@@ -95,8 +98,7 @@ void readGeometry(const Node& node, Object& object, const std::string& baseDir) 
   if (auto translate = node.find("translate")) object.translate = point(*translate);
   if (object.shape == Shape::Polyhedron) object.points = readPoints(node.require("points"));
   if (object.shape == Shape::Mesh) {
-    object.file = resolveMeshFile(node.require("file"), baseDir);
-    object.fileVersion = fileVersion(object.file);
+    resolveMeshFile(node.require("file"), baseDir, object);
   }
 }
 

@@ -79,15 +79,26 @@ MeshPart readAscii(std::string_view bytes, const std::string& path, const std::s
   Words words(bytes);
   MeshPart part;
   uint64_t facet = 0;
-  int corners = 0;  // vertices of the current facet so far
+  int corners = 0;          // vertices of the current facet so far
+  bool inFacet = false;     // between "facet" and "endfacet"
+  bool inSolid = false;     // between "solid" and "endsolid"
   const auto bad = [&](const std::string& why) {
     fail(where, path, "line " + std::to_string(words.line()) + " (facet " + std::to_string(facet) + "): " + why);
   };
   std::string_view word;
   while (words.next(word)) {
     if (word == "solid") {
+      inSolid = true;
       words.skipLine();  // the solid's name
+    } else if (word == "endsolid") {
+      if (inFacet) bad("'endsolid' inside a facet");
+      inSolid = false;
+      words.skipLine();
+    } else if (word == "facet") {
+      if (inFacet) bad("a facet inside a facet (an 'endfacet' is missing)");
+      inFacet = true;
     } else if (word == "vertex") {
+      if (!inFacet) bad("a vertex outside a facet");
       if (corners == 3) bad("a facet with more than three vertices");
       float xyz[3];
       for (float& c : xyz) {
@@ -102,16 +113,20 @@ MeshPart readAscii(std::string_view bytes, const std::string& path, const std::s
       part.positions.push_back(checked(glm::vec3(xyz[0], xyz[1], xyz[2]), facet, path, where));
       ++corners;
     } else if (word == "endfacet") {
+      if (!inFacet) bad("'endfacet' without its 'facet'");
       if (corners != 3) bad("a facet with " + std::to_string(corners) + " vertices");
+      inFacet = false;
       const uint32_t first = uint32_t(part.positions.size() - 3);
       part.triangles.push_back(glm::uvec3(first, first + 1, first + 2));
       corners = 0;
       ++facet;
     }
-    // "facet normal n n n", "outer loop", "endloop", "endsolid name": nothing to keep (the normal's
-    // numbers are words of their own, skipped here).
+    // "normal n n n", "outer loop", "endloop": nothing to keep (the normal's numbers are words of
+    // their own, skipped here).
   }
-  if (corners != 0) bad("the file ends inside a facet");
+  // A file cut short (a copy or download that stopped) is an error, not the facets before the cut.
+  if (inFacet) bad("the file ends inside a facet (is it cut short?)");
+  if (inSolid) bad("the file ends before 'endsolid' (is it cut short?)");
   return part;
 }
 
