@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 
 namespace phongvk {
@@ -25,18 +26,21 @@ void Renderer::Impl::frame(const SceneSpec& spec) {
 
 void Renderer::Impl::prepare(const Scene& scene) {
   const SceneSpec& spec = scene.spec();
+  const View view = makeView(spec.camera);
+  const uint64_t samples = uint64_t(view.width) * uint64_t(view.height) * uint64_t(spec.samples);
   if (data_ && sameGeometry(*builtFrom_, spec)) {
+    checkBuiltSceneMemory(spec, data_->triangles.size(), samples);  // this frame's size and samples
     const size_t materials = data_->materials.size(), lights = data_->lights.size();
     refreshShading(*data_, spec);
     frame(spec);
     // A backend's buffers are sized for the counts it was built with.
     if (data_->materials.size() == materials && data_->lights.size() == lights) return;
   }
-  const View view = makeView(spec.camera);
-  checkSceneMemory(spec, uint64_t(view.width) * uint64_t(view.height) * uint64_t(spec.samples));
+  checkSceneMemory(spec, samples);
   const auto start = Clock::now();
   data_.reset();  // the old meshes go before the new ones are built
   data_ = buildSceneData(spec);
+  checkBuiltSceneMemory(spec, data_->triangles.size(), samples);
   frame(spec);
   buildMs_ += msSince(start);
   upload(*data_);
@@ -49,6 +53,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
 // (downscale: the rounded mean of each side x side block): both backends, the same bytes. The
 // keys stay per sample.
 RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image storage) {
+  const std::lock_guard<std::mutex> one(busy_);
   prepare(scene);
   const View view = makeView(camera_);
   const int side = sampleGridSide(data_->samples);
@@ -65,6 +70,7 @@ RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image sto
 }
 
 RendererStats Renderer::Impl::stats() const {
+  const std::lock_guard<std::mutex> one(busy_);
   RendererStats s;
   s.sceneBuilds = sceneBuilds_;
   s.framesRendered = framesRendered_;
@@ -144,6 +150,13 @@ DiffResult diff(const Scene& scene, Renderer& renderer) {
 }
 
 void setMemoryLimit(uint64_t bytes) { setSceneMemoryLimit(bytes); }
+
+void checkSceneMemory(const Scene& scene) {
+  const View view = makeView(scene.spec().camera);
+  checkSceneMemory(scene.spec(), uint64_t(view.width) * uint64_t(view.height) * uint64_t(scene.spec().samples));
+}
+
+uint64_t memoryLimitBytes(const std::string& gib, const std::string& what) { return parseMemoryLimit(gib, what); }
 
 void checkOutputMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
                        const std::string& remedy) {

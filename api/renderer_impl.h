@@ -7,6 +7,7 @@
 #include "scene/scene_data.h"
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -44,6 +45,9 @@ class Renderer::Impl {
   // Lights at the camera placed, the camera fitted, where the scene asks for it.
   void frame(const SceneSpec& spec);
 
+  // Held by render and stats: a renderer used from several threads renders one frame at a time
+  // (its device buffers and the scene it built are one frame's).
+  mutable std::mutex busy_;
   std::optional<SceneData> data_;
   std::shared_ptr<const SceneSpec> builtFrom_;  // the scene data_'s meshes were built from
   CameraSpec camera_;

@@ -48,21 +48,30 @@ Scene sizedAsAsked(const Scene& scene, const ViewOptions& options) {
   return rendered.withImageSize(options.width, options.height);
 }
 
+Scene frameAsAsked(const Scene& sequence, int index, const ViewOptions& options) {
+  const std::string prefix = sequence.path() + ": frame " + std::to_string(index) + ": ";
+  try {
+    const Scene frame = sizedAsAsked(sequence.frame(index), options);
+    checkSceneMemory(frame);
+    return frame;
+  } catch (const SceneError& error) {
+    // The frame's own checks name the file and the frame already; the size, render options and
+    // memory checks name the file alone.
+    const std::string what = error.what(), file = sequence.path() + ": ";
+    if (sequence.frameCount() == 1 || what.rfind(prefix, 0) == 0) throw;
+    throw SceneError(prefix + (what.rfind(file, 0) == 0 ? what.substr(file.size()) : what));
+  }
+}
+
 Scene loadEveryFrameValidated(const ViewOptions& options) {
   const Scene scene = loadScene(options.scene);
-  for (int i = 1; i < scene.frameCount(); ++i) {
-    try {
-      sizedAsAsked(scene.frame(i), options);
-    } catch (const SceneError& error) {
-      throw SceneError(scene.path() + ": frame " + std::to_string(i) + ": " + error.what());
-    }
-  }
-  return sizedAsAsked(scene, options);
+  for (int i = 1; i < scene.frameCount(); ++i) frameAsAsked(scene, i, options);
+  return frameAsAsked(scene, 0, options);
 }
 
 RendererOptions rendererOptions(const ViewOptions& options, const std::string& backend) {
   // The scene memory limit goes with the renderer, which checks every scene against it.
-  if (options.maxMemoryGb > 0) setMemoryLimit(uint64_t(options.maxMemoryGb * double(uint64_t(1) << 30)));
+  if (!options.maxMemoryGb.empty()) setMemoryLimit(memoryLimitBytes(options.maxMemoryGb, "--max-memory-gb"));
   const Backend chosen = parseBackend(backend);
   if (chosen == Backend::Cpu && options.device >= 0)
     throw UsageError("--device " + std::to_string(options.device) + " selects a Vulkan device, and --backend cpu uses none");

@@ -30,6 +30,11 @@ int guarded(const std::function<int()>& command);
 // (--shading, --specular, --samples), or as it is.
 Scene sizedAsAsked(const Scene& scene, const ViewOptions& options);
 
+// Frame `index` of `sequence` at the asked size, validated and checked against the memory limit
+// (a frame that grows past it fails before frame 0 is written). Throws SceneError
+// "<file>: frame N: ..." for a bad frame, naming the file and the frame once.
+Scene frameAsAsked(const Scene& sequence, int index, const ViewOptions& options);
+
 // The scene the options name, at the asked size, every frame of an animated scene validated first
 // (a radius that turns negative at frame 25 fails a one-frame render as it fails the sequence).
 // Throws SceneError "<file>: frame N: ..." for a bad frame.

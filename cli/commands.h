@@ -22,7 +22,7 @@ struct ViewOptions {
   int width = 0;        // with height: overrides the scene camera's image size
   int height = 0;
   int device = -1;      // Vulkan device index, -1 = best
-  double maxMemoryGb = 0;  // --max-memory-gb: the scene memory limit (0: the default, setMemoryLimit)
+  std::string maxMemoryGb;  // --max-memory-gb: the scene memory limit in GiB (empty: the default, setMemoryLimit)
   bool validate = false;
   int pngLevel = PNG_LEVEL_DEFAULT;  // deflate level of every PNG the command writes
   std::string shading;  // --shading, --specular, --samples: override the scene's "render" ("", 0: its own)

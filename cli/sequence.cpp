@@ -179,12 +179,7 @@ void printSummary(const SequenceOptions& options, const FrameRange& range, const
 std::vector<Scene> prepareFrames(const Scene& sequence, const FrameRange& range, const ViewOptions& options) {
   std::vector<Scene> frames;
   for (int64_t i = range.start; i < range.end; i += range.step) {  // 64-bit: a huge STEP may not overflow
-    const Scene scene = sequence.frame(int(i));
-    try {
-      frames.push_back(sizedAsAsked(scene, options));
-    } catch (const SceneError& error) {
-      throw SceneError(sequence.path() + ": frame " + std::to_string(i) + ": " + error.what());
-    }
+    frames.push_back(frameAsAsked(sequence, int(i), options));
   }
   return frames;
 }

@@ -17,18 +17,32 @@ inline constexpr uint64_t BYTES_PER_TRIANGLE = 112;
 // Per pixel: the image, the visibility keys and the GPU's colour and key buffers.
 inline constexpr uint64_t BYTES_PER_PIXEL = 32;
 
-// Triangles an object will have (mesh files: an upper bound from the file's size, 12 bytes a
-// triangle at least in any format).
+// Triangles an object will have (mesh files: mesh_file.h meshFileTriangles, estimated when the
+// scene was loaded).
 uint64_t estimatedTriangles(const Object& object);
 
 // The memory a scene may use: the machine's physical memory, or PHONGVK_MAX_MEMORY_GB (a number of
 // GiB, to raise or lower it), or what setSceneMemoryLimit set (0: back to those).
+// Throws SceneError for a PHONGVK_MAX_MEMORY_GB that parseMemoryLimit refuses.
 uint64_t memoryLimit();
+// The smallest limit that can be set, in GiB (about 1 MiB): below it no scene fits.
+inline constexpr double MIN_MEMORY_GIB = 0.001;
+// A limit in GiB as text ("4", "0.5", "1e3") in bytes; a value too large for 64 bits is no limit.
+// Throws SceneError "<what> is '<text>': expected a number of GiB, at least 0.001 ..." for
+// anything else: empty, not a number, NaN, below MIN_MEMORY_GIB.
+uint64_t parseMemoryLimit(const std::string& text, const std::string& what);
 void setSceneMemoryLimit(uint64_t bytes);
 
 // Throws SceneError "<file>: the scene needs about N GiB (...), more than the M GiB limit; most
-// of it: objects[2] (... triangles), ..." when the estimate exceeds memoryLimit().
+// of it: objects[2] (... triangles), ..." when the estimate exceeds memoryLimit(). `pixels`
+// counts every sample.
 void checkSceneMemory(const SceneSpec& scene, uint64_t pixels);
+
+// The same for a scene whose meshes are built: `triangles` as built. Every frame is checked so
+// (a renderer given the same geometry at a larger size or more samples, a sequence whose frames
+// grow), and every build before its upload (a mesh file of large polygons builds more triangles
+// than its size suggests).
+void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels);
 
 // Throws SceneError "<path>: <what> needs about N GiB (<detail>), more than the M GiB limit (...);
 // <remedy>" when `bytes` exceed memoryLimit(): the one message for the scene and what is made

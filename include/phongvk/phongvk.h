@@ -141,7 +141,9 @@ struct RendererStats {
 
 // Renders scenes on one backend. It keeps what it built and uploaded: rendering a scene with the
 // same geometry as the last one (another frame of a sequence, another camera, other materials or
-// lights) builds no meshes and sends only what changed. Not thread-safe; one Vulkan device each.
+// lights) builds no meshes and sends only what changed. One Vulkan device each. Calls from several
+// threads are serialized: the renderer renders one frame at a time (use one renderer a thread to
+// render in parallel).
 class PHONGVK_API Renderer {
  public:
   // Throws NoDeviceError when the GPU backends find no usable Vulkan device.
@@ -194,9 +196,18 @@ PHONGVK_API DiffResult diff(const Scene& scene, Renderer& renderer);
 PHONGVK_API double median(std::vector<double> values);
 
 // The memory a scene may take, estimated before anything is built (about 112 bytes a triangle and
-// 32 a pixel); a scene beyond it fails with SceneError naming the objects that take most. Default:
-// the machine's physical memory, or the environment's PHONGVK_MAX_MEMORY_GB. 0 restores the default.
+// 32 a pixel sample) and checked again on every frame; a scene beyond it fails with SceneError
+// naming the objects that take most. Default: the machine's physical memory, or the environment's
+// PHONGVK_MAX_MEMORY_GB (a SceneError when it is not a number of GiB). 0 restores the default.
 PHONGVK_API void setMemoryLimit(uint64_t bytes);
+// A limit in GiB as text ("4", "0.5"), as PHONGVK_MAX_MEMORY_GB and --max-memory-gb take it, in
+// bytes (a value past 64 bits is no limit). Throws SceneError "<what> is '<text>': expected a number
+// of GiB, at least 0.001 ..." for anything else (empty, not a number, NaN, too small).
+PHONGVK_API uint64_t memoryLimitBytes(const std::string& gib, const std::string& what);
+// Throws SceneError when `scene`, as it stands (its size and samples, its meshes estimated before
+// they are built), needs more than the memory limit: the check every renderer makes before it
+// builds, for a caller that wants it before rendering anything (every frame of a sequence first).
+PHONGVK_API void checkSceneMemory(const Scene& scene);
 // Outputs beside a scene that hold memory too (a sequence's contact sheet) against the same limit:
 // throws SceneError "<path>: <what> needs about N GiB (<detail>), more than the M GiB limit (...);
 // <remedy>" when `bytes` exceed it.
