@@ -22,11 +22,27 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
   width->needs(height);
   height->needs(width);
   command->add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            int index = -1;
+            return CLI::detail::lexical_cast(text, index) && index >= 0
+                       ? std::string()
+                       : "must be a device index, 0 or more (see 'phongvk devices'), got " + text;
+          },
+          "INDEX"));
   command->add_flag("--validate", options.validate, "Enable the Vulkan validation layers");
   command->add_option("--max-memory-gb", options.maxMemoryGb,
                       "Memory a scene may take, in GiB (default: the machine's memory, or PHONGVK_MAX_MEMORY_GB)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            try {
+              phongvk::memoryLimitBytes(text, "value");
+              return std::string();
+            } catch (const phongvk::SceneError& e) {
+              return std::string(e.what());
+            }
+          },
+          "GIB"));
   command->add_option("--shading", options.shading, "gouraud, flat or phong: overrides the scene's render.shading")
       ->check(CLI::IsMember({"gouraud", "flat", "phong"}));
   command->add_option("--specular", options.specular, "phong or blinn: overrides the scene's render.specular")
@@ -93,10 +109,9 @@ int main(int argc, char** argv) {
           [](const std::string& text) {
             double value = 0;
             const bool parsed = CLI::detail::lexical_cast(text, value);
-            return parsed && std::isfinite(value) && value >= 0 ? std::string() : "must be a finite number >= 0, got " + text;
+            return parsed && value >= 0 && value <= 255 ? std::string() : "must be a number from 0 to 255, got " + text;
           },
-          "NUMBER >= 0"))
-      ->check(CLI::Range(0.0, 255.0));
+          "0..255"));
 
   SequenceOptions sequence;
   CLI::App* sequenceCmd = app.add_subcommand("sequence", "Render the frames of an animated scene to numbered PNGs");

@@ -28,11 +28,17 @@ namespace fs = std::filesystem;
 
 // The file `path` names, through any symbolic links (a dangling link names the file it would
 // create). Refuses a loop of links.
+// Refuses a name too long for the system with its reason.
 fs::path resolved(const std::string& path) {
   fs::path target(path);
-  for (int hops = 0; fs::is_symlink(fs::symlink_status(target)); ++hops) {
+  std::error_code error;
+  for (int hops = 0;; ++hops) {
+    const fs::file_status status = fs::symlink_status(target, error);
+    if (error == std::errc::filename_too_long) refuse(path, error.message());  // the rest: the checks below say it better
+    if (!fs::is_symlink(status)) break;
     if (hops == 40) refuse(path, "too many levels of symbolic links");
-    const fs::path link = fs::read_symlink(target);
+    const fs::path link = fs::read_symlink(target, error);
+    if (error) refuse(path, error.message());
     target = link.is_absolute() ? link : target.parent_path() / link;
   }
   return target;
