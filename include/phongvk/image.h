@@ -90,9 +90,10 @@ PHONGVK_API void checkWritable(const std::string& path);
 PHONGVK_API Image readPng(const std::string& path);
 
 // Whether `path` is a regular file holding a whole PNG of width x height: the signature, an IHDR of
-// that size first, and the IEND chunk last (a file cut short lacks it). phongvk writes every PNG
-// whole (a temporary file, then a rename), so a frame that fails this came from elsewhere or from
-// another size. Reads 24 bytes at the start and 12 at the end, not the pixels.
+// that size first, every chunk's CRC right, and the IEND chunk last, at the end of the file (a file
+// cut short lacks it; one zeroed or overwritten in the middle fails a CRC). phongvk writes every
+// PNG whole (a temporary file, then a rename), so a frame that fails this came from elsewhere, from
+// another size, or was damaged since. Reads the file once; decodes no pixels.
 PHONGVK_API bool pngIsComplete(const std::string& path, int width, int height);
 
 }  // namespace phongvk
