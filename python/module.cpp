@@ -4,6 +4,8 @@
 // help() shows.
 #include <phongvk/phongvk.h>
 
+#include "json_writer.h"
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -42,6 +44,10 @@ Image imageFromArray(const py::array& array) {
                           std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
                               array.shape(), array.shape() + array.ndim()))))));
   }
+  if (array.shape(0) == 0 || array.shape(1) == 0) {
+    throw py::value_error("image: expected a non-empty uint8 array of shape (height, width, 3), got shape " +
+                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(array.shape(), array.shape() + 3))))));
+  }
   const auto contiguous = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(array);
   Image image(int(array.shape(1)), int(array.shape(0)));
   std::memcpy(image.rgb.data(), contiguous.data(), image.rgb.size());
@@ -71,83 +77,6 @@ std::vector<T> rowsOf3(const py::array& a, const char* name, char kind) {
 }
 
 // ---- scenes ----
-
-// Python values as JSON text: dicts, lists and tuples, strings, numbers (numpy's too, and arrays),
-// booleans, None. JSON has no NaN or infinity, so such a number is reported here, at its JSON path,
-// in the words the scene loader uses for a non-finite number.
-class JsonWriter {
- public:
-  explicit JsonWriter(std::string name) : name_(std::move(name)) {}
-
-  std::string write(const py::handle& value) {
-    value_(value, "");
-    return out_;
-  }
-
- private:
-  void value_(const py::handle& v, const std::string& path) {
-    if (v.is_none()) {
-      out_ += "null";
-    } else if (py::isinstance<py::bool_>(v)) {
-      out_ += v.cast<bool>() ? "true" : "false";
-    } else if (py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v)) {
-      number(v, path);
-    } else if (py::isinstance(v, py::module_::import("numpy").attr("generic"))) {
-      value_(v.attr("item")(), path);  // a numpy scalar as the Python value it holds
-    } else if (py::isinstance<py::str>(v)) {
-      out_ += py::module_::import("json").attr("dumps")(v).cast<std::string>();
-    } else if (py::isinstance<py::dict>(v)) {
-      object(py::reinterpret_borrow<py::dict>(v), path);
-    } else if (py::isinstance<py::array>(v)) {
-      value_(py::reinterpret_borrow<py::array>(v).attr("tolist")(), path);
-    } else if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
-      array(py::reinterpret_borrow<py::sequence>(v), path);
-    } else {
-      fail(path, "must be a JSON value (dict, list, str, number, bool or None), got " +
-                     std::string(py::str(py::type::of(v).attr("__name__"))));
-    }
-  }
-
-  void number(const py::handle& v, const std::string& path) {
-    if (py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v)) {
-      out_ += std::string(py::str(v));
-      return;
-    }
-    const double x = v.cast<double>();
-    if (!std::isfinite(x)) fail(path, "must be finite, got " + std::string(std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf"));
-    out_ += std::string(py::repr(py::float_(x)));  // the shortest text that reads back as x
-  }
-
-  void object(const py::dict& d, const std::string& path) {
-    out_ += "{";
-    bool first = true;
-    for (const auto& [key, value] : d) {
-      if (!py::isinstance<py::str>(key)) fail(path, "keys must be strings, got " + std::string(py::repr(key)));
-      out_ += first ? "" : ", ";
-      first = false;
-      const std::string k = key.cast<std::string>();
-      out_ += py::module_::import("json").attr("dumps")(key).cast<std::string>() + ": ";
-      value_(value, path.empty() ? k : path + "." + k);
-    }
-    out_ += "}";
-  }
-
-  void array(const py::sequence& s, const std::string& path) {
-    out_ += "[";
-    for (size_t i = 0; i < s.size(); ++i) {
-      out_ += i ? ", " : "";
-      value_(s[i], path + "[" + std::to_string(i) + "]");
-    }
-    out_ += "]";
-  }
-
-  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw SceneError((name_.empty() ? "" : name_ + ": ") + (path.empty() ? "top level" : path) + ": " + what);
-  }
-
-  std::string name_;
-  std::string out_;
-};
 
 Scene sceneFromDict(const py::dict& d, std::optional<std::string> baseDir) {
   const std::string json = JsonWriter("").write(d);
@@ -317,7 +246,7 @@ validate: turn the Vulkan validation layers on.
 A renderer keeps what it uploaded: rendering a scene with the same geometry as the last one (another
 camera, size, lights or materials, another frame of an orbit) builds and uploads no mesh again
 (stats["scene_builds"] counts the builds). The GIL is released while rendering, so renderers in
-other threads go on.)")
+other threads go on; one renderer used from several threads renders one frame at a time.)")
       .def(py::init([](const std::string& backend, std::optional<int> device, bool validate) {
              return std::make_unique<Renderer>(rendererOptions(backend, device, validate));
            }),

@@ -54,10 +54,6 @@ std::string childPath(const std::string& parent, std::string_view key);
 // stay short whatever a file holds.
 std::string shortened(std::string_view text, size_t max);
 
-// Objects and arrays nest at most this deep in a scene file (a scene needs 5); deeper is an error
-// before anything is built (a 200 KB file of 100,000 brackets would otherwise cost gigabytes).
-inline constexpr size_t MAX_JSON_DEPTH = 64;
-
 void requireObject(const Node& node);
 void requireArray(const Node& node);
 

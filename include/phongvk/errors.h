@@ -5,9 +5,15 @@
 
 #include "phongvk/export.h"
 
+#include <cstddef>
 #include <stdexcept>
 
 namespace phongvk {
+
+// Objects and arrays nest at most this deep in a scene (a scene file needs 5; Python dicts given to
+// scene_from_dict likewise); deeper is a SceneError before anything is built (a 200 KB file of
+// 100,000 brackets would otherwise cost gigabytes, a deep dict the interpreter's stack).
+inline constexpr size_t MAX_JSON_DEPTH = 64;
 
 // A scene that cannot be loaded or built. what() names the file, the JSON path and, for a mesh,
 // the inner file and line: "scenes/a.json: objects[2].material.ks: must be >= 0, got -1".
