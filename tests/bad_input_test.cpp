@@ -247,14 +247,14 @@ TEST(BadInputFiles, SceneFileThatIsAFolderOrAFifo) {
   const std::string fifo = dir + "/pipe.json";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   // Opening a FIFO for reading would block until a writer comes: refused before opening.
-  EXPECT_EQ(loadError(fifo), fifo + ": cannot read file: not a regular file");
+  EXPECT_EQ(loadError(fifo), fifo + ": cannot read file: a FIFO (named pipe), not a regular file");
 }
 
 TEST(BadInputFiles, MeshFileThatIsAFifo) {
   const std::string dir = test::makeTempDir();
   ASSERT_EQ(mkfifo((dir + "/mesh.obj").c_str(), 0600), 0);
   EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "mesh", "file": "mesh.obj"}])"), dir),
-            "a.json: objects[0].file: cannot read 'mesh.obj': not a regular file");
+            "a.json: objects[0].file: cannot read 'mesh.obj': a FIFO (named pipe), not a regular file");
 }
 
 // chmod 000 stops reads for everyone but root, and tests may run as root (CI containers do): the
@@ -375,7 +375,7 @@ TEST_F(BadCli, MeshBuildingErrorsNameTheSceneFile) {
 
 TEST_F(BadCli, OptionsThatCannotApply) {
   const std::string one = scene("one_pixel.json");
-  expectFailure("diff " + one + " --tolerance nan", 2, "--tolerance: must be a finite number >= 0, got nan");
+  expectFailure("diff " + one + " --tolerance nan", 2, "--tolerance: must be a number from 0 to 255, got nan");
   expectFailure("diff " + one + " --tolerance -1", 2, "--tolerance");
   expectFailure("render " + one + " --backend cpu --device 0 -o " + out_ + "/x.png", 2,
                 "error: --device 0 selects a Vulkan device, and --backend cpu uses none");
