@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds phongvk and runs the whole test suite (CTest over GoogleTest), then the same suite under
-# ASan + UBSan (scripts/sanitize.sh) and a bounded fuzzing run of the scene loader
-# (scripts/fuzz.sh). This is what CI runs (.ci/run) and what the README's test command runs.
+# ASan + UBSan (scripts/sanitize.sh) and a bounded fuzzing run of the scene loader, the mesh and
+# glTF importers and scene_from_dict's path (scripts/fuzz.sh). This is what CI runs (.ci/run) and
+# what the README's test command runs.
 # Run scripts/setup.sh first. Each stage prints how long it took.
 set -euo pipefail
 cd "$(dirname "$0")/.."
