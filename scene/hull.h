@@ -13,7 +13,10 @@ struct Hull {
   std::string error;  // why there is no hull ("the points are coplanar; ..."), or empty
 };
 
-// Incremental hull, O(n^2) in the worst case (polyhedra in scene files are small). Robust to
+// Incremental hull with conflict lists (each point not yet added is linked to a face it sees), in
+// O(n log n) expected time for n points in any order: sets of more than 4,096 distinct points are
+// added in a fixed pseudo-random order (the same hull on every run and machine); smaller ones in
+// the order given, as before, so their triangles and the order of them do not change. Robust to
 // duplicate points and to points on the hull's faces or edges: only the corners of the hull are
 // used, so a flat face is split into triangles between its corners, never into slivers, and no
 // triangle appears twice. Points within a tolerance relative to the set's extent (1e-9) of a face's
