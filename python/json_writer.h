@@ -88,9 +88,12 @@ class JsonWriter {
   }
 
   [[noreturn]] void notJson(const py::handle& v, const std::string& path) const {
-    fail(path, "must be a JSON value (dict, list, str, number, bool or None), got " +
-                   std::string(py::str(py::type::of(v).attr("__name__"))));
+    fail(path, "must be a JSON value (dict, list, str, number, bool or None), got " + typeName(v));
   }
+
+  // Named by type, not by value: the repr of an int of 5,000 digits raises, and one of a long
+  // string is no help in a message.
+  static std::string typeName(const py::handle& v) { return std::string(py::str(py::type::of(v).attr("__name__"))); }
 
   void number(const py::handle& v, const std::string& path) {
     if (py::isinstance<py::int_>(v) || py::isinstance<py::bool_>(v)) {
@@ -110,7 +113,7 @@ class JsonWriter {
     out_ += "{";
     bool first = true;
     for (const auto& [key, value] : d) {
-      if (!py::isinstance<py::str>(key)) fail(path, "keys must be strings, got " + std::string(py::repr(key)));
+      if (!py::isinstance<py::str>(key)) fail(path, "keys must be strings, got a key of type " + typeName(key));
       out_ += first ? "" : ", ";
       first = false;
       const std::string k = keyText(key, path);

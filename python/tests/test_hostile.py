@@ -115,3 +115,8 @@ def test_a_list_shared_down_40_levels_is_refused_not_written_2_to_the_40_times()
         shared = [shared, shared]
     with pytest.raises(phongvk.SceneError, match=r"the scene holds more than 4194304 values"):
         phongvk.scene_from_dict(scene_dict(extra=shared))
+
+
+def test_a_key_that_is_not_a_string_is_named_by_its_type():
+    with pytest.raises(phongvk.SceneError, match=r"^render: keys must be strings, got a key of type int$"):
+        phongvk.scene_from_dict(scene_dict(render={1 << 16000: 1}))
