@@ -76,6 +76,7 @@ class GpuBackend : public VulkanBackend {
   ~GpuBackend() override {
     const ContextLock lock(context_);
     renderer_.reset();
+    pipelines_.reset();
   }
 
   FrameTime lastFrameTime() const override {
@@ -87,37 +88,37 @@ class GpuBackend : public VulkanBackend {
  protected:
   void upload(const SceneData& data) override {
     const ContextLock lock(context_);
-    if (renderer_) {
-      shadedByEarlier_ += renderer_->framesShaded();
-      repeatedByEarlier_ += renderer_->framesRepeated();
-      compileMsByEarlier_ += renderer_->compileMs();
+    if (renderer_) {  // a new geometry: new scene buffers; the image's buffers and the pipelines stay
+      try {
+        renderer_->replaceScene(data);
+        return;
+      } catch (...) {
+        renderer_.reset();
+        throw;
+      }
     }
-    renderer_.reset();  // the old buffers go before the new ones are allocated
     GpuRendererOptions options;
     options.exactFloats = exactFloats_;
+    options.pipelines = pipelines_;
     renderer_.emplace(context_, data, options);
   }
   RenderOutput draw(const SceneData&, const FrameInputs& in, bool withKeys, Image storage) override {
     const ContextLock lock(context_);
     return renderer_->render(in, withKeys, std::move(storage));
   }
-  uint64_t framesShaded() const override { return shadedByEarlier_ + (renderer_ ? renderer_->framesShaded() : 0); }
-  uint64_t framesRepeated() const override {
-    return repeatedByEarlier_ + (renderer_ ? renderer_->framesRepeated() : 0);
-  }
+  uint64_t framesShaded() const override { return renderer_ ? renderer_->framesShaded() : 0; }
+  uint64_t framesRepeated() const override { return renderer_ ? renderer_->framesRepeated() : 0; }
   void addStartup(RendererStats& s) const override {
     VulkanBackend::addStartup(s);
     s.probeMs = probeMs_;
     s.probeCached = probeCached_;
-    s.pipelinesMs = compileMsByEarlier_ + (renderer_ ? renderer_->compileMs() : 0);
+    s.pipelinesMs = pipelines_->compileMs();
   }
 
  private:
   bool exactFloats_ = false;
-  std::optional<GpuRenderer> renderer_;
-  uint64_t shadedByEarlier_ = 0;  // by renderers replaced after a geometry change
-  uint64_t repeatedByEarlier_ = 0;
-  double compileMsByEarlier_ = 0;
+  std::shared_ptr<GpuPipelineSet> pipelines_ = std::make_shared<GpuPipelineSet>(context_);  // outlives renderer_
+  std::optional<GpuRenderer> renderer_;  // made for the first scene, given each new geometry after
   double probeMs_ = 0;
   bool probeCached_ = false;
 };

@@ -28,7 +28,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   const SceneSpec& spec = scene.spec();
   const View view = makeView(spec.camera);
   const uint64_t samples = uint64_t(view.width) * uint64_t(view.height) * uint64_t(spec.samples);
-  if (data_ && sameGeometry(*builtFrom_, spec)) {
+  if (data_ && builtFrom_ && sameGeometry(*builtFrom_, spec)) {
     checkBuiltSceneMemory(spec, data_->triangles.size(), samples);  // this frame's size and samples
     const size_t materials = data_->materials.size(), lights = data_->lights.size();
     refreshShading(*data_, spec);
@@ -39,6 +39,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   checkSceneMemory(spec, samples);
   const auto start = Clock::now();
   data_.reset();  // the old meshes go before the new ones are built
+  builtFrom_.reset();  // until the new ones are uploaded: a failed upload builds again next time
   data_ = buildSceneData(spec);
   checkBuiltSceneMemory(spec, data_->triangles.size(), samples);
   frame(spec);

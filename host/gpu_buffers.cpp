@@ -35,7 +35,7 @@ void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* 
 // Throws, before anything is allocated, when one of the scene's arrays exceeds a device limit:
 // arrays the passes only read are bound as texels alone (maxStorageBufferRange does not apply to
 // them); the shaded vertices and the clip list are written as storage buffers.
-void checkSceneFits(const VulkanContext& context, const SceneData& data) {
+void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   auto texels = [&](VkDeviceSize bytes, const char* what) { checkTexels(context, bytes / TEXEL_BYTES, what); };
   texels(data.vertices.size() * sizeof(VertexIn), "the vertices");
   texels(data.triangles.size() * sizeof(glm::uvec4), "the triangles");
@@ -67,8 +67,18 @@ bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::ve
 
 }  // namespace
 
+void GpuRenderer::checkSceneFits(const SceneData& data) const { checkSceneFitsDevice(context_, data); }
+
+// The buffers whose size does not depend on the scene or the image.
+void GpuRenderer::createFrameBuffers() {
+  createBuffer(frameBuffer_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
+  createBuffer(controlBuffer_, context_, sizeof(PassControl), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+               MemoryKind::HostVisible);
+  createBuffer(status_, context_, sizeof(FrameStatus), STORAGE, MemoryKind::HostVisible);
+}
+
+// The scene's buffers, made anew (the caller has checked that it fits: checkSceneFits).
 void GpuRenderer::uploadScene(const SceneData& data) {
-  checkSceneFits(context_, data);
   vertexCount_ = static_cast<uint32_t>(data.vertices.size());
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
   createTexelBuffer(vertices_, context_, data.vertices, MemoryKind::DeviceLocal);
@@ -80,16 +90,19 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   lastObjects_ = data.objects;
   lastMaterials_ = data.materials;
   lastLights_ = data.lights;
-  createBuffer(frameBuffer_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
-  createBuffer(controlBuffer_, context_, sizeof(PassControl), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-               MemoryKind::HostVisible);
-  createBuffer(status_, context_, sizeof(FrameStatus), STORAGE, MemoryKind::HostVisible);
   // Written by the shade pass as storage buffers, read by the others as texels.
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
   createTexelBuffer(shadedPositions_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
   createTexelBuffer(shadedColors_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
   createBuffer(clipList_, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+}
+
+void GpuRenderer::releaseScene() {
+  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shadedPositions_, &shadedColors_}) {
+    destroyTexelBuffer(*t, context_);
+  }
+  destroyBuffer(clipList_, context_);
 }
 
 // New keys are cleared by the first frame (keysDirty_). Where the host reads the colours from the
@@ -102,10 +115,7 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   const VkDeviceSize bins = VkDeviceSize(binsAcross(width)) * binsAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
   for (Buffer* b : {&keys_, &bins_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
-  // The large triangles' lists grow with the image (gpu_layout.h LARGE_*), and further when a frame needs more.
-  createLargeBuffers(uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS)),
-                     std::min<uint32_t>(std::max(triangleCount_, 1u),
-                                        uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS))));
+  createLargeBuffersFor(pixels);
   // With the colours in the key slots the host reads and resets the keys in place (Shared memory).
   createBuffer(keys_, context_, pixels * sizeof(uint64_t),
                STORAGE | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -129,6 +139,14 @@ void GpuRenderer::ensureColorBuffer(bool wholeImage) {
   destroyBuffer(colors_, context_);
   createBuffer(colors_, context_, bytes, STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::HostVisible);
   updateDescriptors();
+}
+
+// The large triangles' lists for an image of `pixels` and the scene's triangles: they grow with the
+// image (gpu_layout.h LARGE_*), and further when a frame needs more (prepareRetry).
+void GpuRenderer::createLargeBuffersFor(VkDeviceSize pixels) {
+  createLargeBuffers(uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS)),
+                     std::min<uint32_t>(std::max(triangleCount_, 1u),
+                                        uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS))));
 }
 
 // Room for `entries` bin entries and `setups` set-up records of large triangles, replacing any

@@ -1,5 +1,5 @@
 // gpu_pipelines.cpp — which passes a frame runs and with which specialization constants, compiled
-// once each, in parallel, and kept for the renderer's life.
+// once each, in parallel, and kept in the renderer's pipeline set (GpuPipelineSet).
 #include "host/gpu_renderer.h"
 
 #include "shaders/bin_large.spv.h"
@@ -69,8 +69,9 @@ std::vector<SpecConstant> shadeSpecs(const std::vector<MaterialData>& materials,
   return {{SPEC_LIGHT_COUNT, uint32_t(lightCount)}, {SPEC_SPECULAR, specular}, {SPEC_CONSTANT_ATTENUATION, constantAttenuation}};
 }
 
-std::vector<uint32_t> pipelineKey(uint32_t pass, const std::vector<SpecConstant>& specs) {
-  std::vector<uint32_t> key = {pass};
+// A set serves renderers of one build (exact or not) in practice; the key says which all the same.
+std::vector<uint32_t> pipelineKey(uint32_t pass, bool exact, const std::vector<SpecConstant>& specs) {
+  std::vector<uint32_t> key = {pass, exact};
   for (const SpecConstant& s : specs) key.insert(key.end(), {s.id, s.value});
   return key;
 }
@@ -86,8 +87,8 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   const auto start = std::chrono::steady_clock::now();
   std::vector<std::pair<std::vector<uint32_t>, std::future<ComputePipeline>>> pending;
   for (const PipelineRequest& r : requests) {
-    std::vector<uint32_t> key = pipelineKey(r.shader(), r.specs);
-    if (pipelines_.count(key) != 0) continue;
+    std::vector<uint32_t> key = pipelineKey(r.shader(), exactFloats_, r.specs);
+    if (pipelines_->byKey_.count(key) != 0) continue;
     const ShaderCode code = SHADERS[r.shader()][exactFloats_ ? 1 : 0];
     pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
                            return createComputePipeline(context_, code.spirv, code.bytes, SHARED_BINDINGS, 0, specs);
@@ -96,7 +97,7 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   std::exception_ptr failure;
   for (auto& [key, compiled] : pending) {
     try {
-      pipelines_[key] = compiled.get();
+      pipelines_->byKey_[key] = compiled.get();
     } catch (...) {
       if (!failure) failure = std::current_exception();
     }
@@ -104,12 +105,12 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   if (failure) std::rethrow_exception(failure);
   if (pending.empty()) return;
   savePipelineCache(context_);
-  compileMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  pipelines_->compileMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // The pipeline compilePipelines made for `request`.
 const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) const {
-  return pipelines_.at(pipelineKey(request.shader(), request.specs));
+  return pipelines_->byKey_.at(pipelineKey(request.shader(), exactFloats_, request.specs));
 }
 
 // Every pass's pipeline for frames with these materials and lights and the frame's interpolation,

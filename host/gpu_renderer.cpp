@@ -25,8 +25,15 @@ uint32_t groupCapFor(const VulkanContext& context) {
 
 }  // namespace
 
+GpuPipelineSet::~GpuPipelineSet() {
+  for (auto& [key, p] : byKey_) destroyComputePipeline(p, context_);
+}
+
 GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, const GpuRendererOptions& options)
-    : context_(context), exactFloats_(options.exactFloats ? *options.exactFloats : probeFloatOps(context).useExact()) {
+    : context_(context),
+      options_(options),
+      exactFloats_(options.exactFloats ? *options.exactFloats : probeFloatOps(context).useExact()),
+      pipelines_(options.pipelines ? options.pipelines : std::make_shared<GpuPipelineSet>(context)) {
   groupCap_ = options.firstGroupCap != 0 ? std::min(options.firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
   listChunk_ = options.firstListChunk;
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
@@ -39,17 +46,11 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
   colorsInKeys_ = options.output == ColorOutput::InKeySlots ||
                   (options.output == ColorOutput::Auto && hasSharedMemory(context_));
   try {
-    // What the scene's frames will use, all at once; the raster pass's set layout serves every
-    // pass (updateDescriptors).
-    FrameData modes{};
-    modes.interpolation = data.interpolation;
-    modes.shading = data.shading;
-    modes.specular = data.specular;
-    const std::vector<PipelineRequest> requests = requestsFor(data.materials, data.lights.size(), modes, false);
-    compilePipelines(requests);
-    current_[RASTER] = pipeline(requests[RASTER]);
+    checkSceneFits(data);
+    compileSceneModes(data);
     createDescriptorArena(arena_, context_, 1, std::size(SHARED_BINDINGS));
     createTimestampPool(timestamps_, context_, TIMESTAMP_SLOTS);
+    createFrameBuffers();
     uploadScene(data);
   } catch (...) {
     release();
@@ -58,6 +59,31 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
 }
 
 GpuRenderer::~GpuRenderer() { release(); }
+
+// What the scene's frames will use, compiled all at once; the raster pass's set layout serves
+// every pass (updateDescriptors).
+void GpuRenderer::compileSceneModes(const SceneData& data) {
+  FrameData modes{};
+  modes.interpolation = data.interpolation;
+  modes.shading = data.shading;
+  modes.specular = data.specular;
+  const std::vector<PipelineRequest> requests = requestsFor(data.materials, data.lights.size(), modes, false);
+  compilePipelines(requests);
+  current_[RASTER] = pipeline(requests[RASTER]);
+}
+
+void GpuRenderer::replaceScene(const SceneData& data) {
+  checkSceneFits(data);  // before anything is released
+  releaseScene();        // the old meshes go before the new ones are allocated
+  compileSceneModes(data);
+  uploadScene(data);
+  groupCap_ = options_.firstGroupCap != 0 ? std::min(options_.firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
+  listChunk_ = options_.firstListChunk;
+  if (width_ != 0) createLargeBuffersFor(VkDeviceSize(width_) * height_);  // sized for this scene's triangles
+  keysDirty_ = true;
+  framesSent_ = 0;  // the next frame sends and shades everything
+  updateDescriptors();
+}
 
 void GpuRenderer::release() {
   for (Buffer* b : {&frameBuffer_, &controlBuffer_, &clipList_, &keys_, &bins_, &colors_, &keyReadback_, &status_}) {
@@ -69,8 +95,6 @@ void GpuRenderer::release() {
   }
   destroyTimestampPool(timestamps_, context_);
   destroyDescriptorArena(arena_, context_);
-  for (auto& [key, p] : pipelines_) destroyComputePipeline(p, context_);
-  pipelines_.clear();
 }
 
 RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image storage) {

@@ -12,6 +12,7 @@
 #include "shaders/gpu_layout.h"
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -42,6 +43,28 @@ enum class WorkLayout { Auto, Cpu, Gpu };
 // Tests force either.
 enum class ColorOutput { Auto, InKeySlots, ColorBuffer };
 
+// The compute port's pipelines, by pass, specialization and build (`_exact` or not): compiled once
+// and kept for as long as whoever holds them. A renderer keeps its own unless given a set; the
+// public Renderer gives every GpuRenderer it makes one set, so a new geometry (a new GpuRenderer:
+// its buffers and descriptors) compiles no pipeline again.
+class GpuPipelineSet {
+ public:
+  explicit GpuPipelineSet(const VulkanContext& context) : context_(context) {}
+  ~GpuPipelineSet();
+  GpuPipelineSet(const GpuPipelineSet&) = delete;
+  GpuPipelineSet& operator=(const GpuPipelineSet&) = delete;
+
+  const VulkanContext& context() const { return context_; }
+  // Time spent compiling the set's pipelines so far.
+  double compileMs() const { return compileMs_; }
+
+ private:
+  friend class GpuRenderer;  // compiles into it (gpu_pipelines.cpp)
+  const VulkanContext& context_;
+  std::map<std::vector<uint32_t>, ComputePipeline> byKey_;
+  double compileMs_ = 0;
+};
+
 struct GpuRendererOptions {
   WorkLayout layout = WorkLayout::Auto;
   ColorOutput output = ColorOutput::Auto;
@@ -55,6 +78,8 @@ struct GpuRendererOptions {
   // probeFloatOps(context).useExact() says for the device (host/float_probe.h). Unset, the
   // renderer runs the probe itself; a caller that builds several renderers probes once and says.
   std::optional<bool> exactFloats;
+  // Pipelines to compile into and take from (made on the same context); none: the renderer's own.
+  std::shared_ptr<GpuPipelineSet> pipelines;
 };
 
 class GpuRenderer {
@@ -73,13 +98,22 @@ class GpuRenderer {
   // `storage`'s pixels (reused when large enough, so a loop of frames allocates none).
   RenderOutput render(const FrameInputs& in, bool withKeys = false, Image storage = {});
 
+  // Another scene (a new geometry, or other material or light counts) in place of the uploaded
+  // one: its buffers are made anew and the pipelines it needs compiled (none that the pipeline set
+  // has), while the image's buffers, the descriptor arena, the timestamps and the pipelines stay.
+  // The next frame renders as a fresh renderer's first would: everything sent and shaded, the
+  // workgroup cap and list chunks as the options set them. Throws as the constructor; after a
+  // throw the renderer must not render again.
+  void replaceScene(const SceneData& data);
+
   // Frames rendered again so far (render), for tests and the benchmark.
   uint64_t framesRepeated() const { return framesRepeated_; }
   // 0, or how many entries of each bin's large-triangle list resolve takes per round since a frame
   // had lists too long for the device's loop budget (gpu_layout.h LIST_CHUNK_FIRST).
   uint32_t listChunk() const { return listChunk_; }
-  // Time spent compiling pipelines so far, construction included.
-  double compileMs() const { return compileMs_; }
+  // Time spent compiling its pipeline set's pipelines so far, construction included (a shared set:
+  // by every renderer that compiled into it).
+  double compileMs() const { return pipelines_->compileMs(); }
 
   const PassTimes& lastPassTimes() const { return times_; }
 
@@ -124,8 +158,13 @@ class GpuRenderer {
   void selectPipelines(const FrameInputs& in);
 
   // Buffers, uploads and what changed since the last frame (gpu_buffers.cpp).
+  void checkSceneFits(const SceneData& data) const;  // throws, naming the device limit, before anything is made
+  void compileSceneModes(const SceneData& data);
+  void createFrameBuffers();
   void uploadScene(const SceneData& data);
+  void releaseScene();
   void ensureImageBuffers(uint32_t width, uint32_t height);
+  void createLargeBuffersFor(VkDeviceSize pixels);
   void ensureColorBuffer(bool wholeImage);
   void createLargeBuffers(uint32_t entries, uint32_t setups);
   void updateDescriptors();
@@ -140,7 +179,8 @@ class GpuRenderer {
   Image readImage(Image storage);
 
   const VulkanContext& context_;
-  bool exactFloats_ = false;   // the passes' _exact builds
+  GpuRendererOptions options_;  // as made: replaceScene starts from them again
+  bool exactFloats_ = false;    // the passes' _exact builds
   uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
   bool binPass_ = false;       // SPEC_BIN_PASS: WorkLayout::Gpu runs the bin pass
   bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
@@ -148,9 +188,8 @@ class GpuRenderer {
   uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
   uint32_t listChunk_ = 0;     // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many entries a round
   uint64_t framesRepeated_ = 0;
-  double compileMs_ = 0;
-  std::map<std::vector<uint32_t>, ComputePipeline> pipelines_;  // by pass + specialization
-  ComputePipeline current_[PASS_COUNT];                         // this frame's (not owned)
+  std::shared_ptr<GpuPipelineSet> pipelines_;  // compiled ones, kept across renderers (GpuRendererOptions)
+  ComputePipeline current_[PASS_COUNT];         // this frame's (owned by pipelines_)
   DescriptorArena arena_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   TimestampPool timestamps_;

@@ -54,6 +54,43 @@ TEST(Api, RendererKeepsItsMeshesWhileTheGeometryStaysTheSame) {
   EXPECT_EQ(gpu.stats().triangles, 960u);  // a 32-segment sphere
 }
 
+// A new geometry each frame (a deforming mesh, a dataset of models) reuses the renderer: new
+// scene buffers, the same image buffers and pipelines. Every frame gives the reference's bytes and
+// keys, whichever geometry came before (more or fewer triangles, other light and material counts,
+// other shading), and once every variant has been compiled, new geometry compiles nothing.
+TEST(Api, ANewGeometryEachFrameRendersAsTheReferenceAndCompilesNothingAgain) {
+  Renderer gpu(validatedGpu());
+  Renderer cpu(Backend::Cpu);
+  const auto frame = [](int k) {
+    const std::string lights = k % 3 == 0 ? R"([{"position": [2, -3, 3]}])"
+                                          : R"([{"position": [2, -3, 3]}, {"position": [-2, -1, 2], "color": [1, 0.5, 0]}])";
+    Scene s = parseScene(R"({"camera": {"position": [2, -1.5, 1], "look_at": [0, 0, 0], "width": 160, "height": 120},
+        "lights": )" + lights + R"(, "objects": [], "render": {"shading": ")" + (k % 4 == 1 ? "phong" : "gouraud") + R"("}})",
+                         "frame.json", ".", true);
+    MeshArrays mesh;  // a fan of k + 3 triangles around the origin, scaled per frame
+    const int n = 3 + 5 * (k % 5);
+    mesh.positions = {0, 0, 0.3f};
+    for (int i = 0; i <= n; ++i) {
+      const float a = float(i) * 6.0f / float(n), r = 0.6f + 0.02f * float(k);
+      mesh.positions.insert(mesh.positions.end(), {r * std::cos(a), r * std::sin(a), 0});
+    }
+    for (int i = 0; i < n; ++i) mesh.triangles.insert(mesh.triangles.end(), {0, i + 1, i + 2});
+    s.addMesh(mesh);
+    return s;
+  };
+  double compiled = 0;
+  for (int k = 0; k < 24; ++k) {
+    const Scene s = frame(k);
+    const RenderOutput a = gpu.renderWithKeys(s), b = cpu.renderWithKeys(s);
+    EXPECT_TRUE(a.image.rgb == b.image.rgb) << "frame " << k;
+    EXPECT_TRUE(a.keys == b.keys) << "frame " << k;
+    if (k == 12) compiled = gpu.stats().pipelinesMs;  // every variant the frames use has been seen
+  }
+  EXPECT_EQ(gpu.stats().sceneBuilds, 24u);
+  EXPECT_EQ(gpu.stats().pipelinesMs, compiled);  // frames 13 to 23: new geometry, no pipeline compiled
+  EXPECT_EQ(gpu.stats().validationMessages, 0u);
+}
+
 TEST(Api, BadSceneIsASceneErrorNamingTheFileAndThePath) {
   try {
     parseScene(R"({"camera": {"position": [0, 0, 0], "direction": [1, 0, 0]},
