@@ -69,6 +69,8 @@ void runBench(const BenchOptions& options) {
     report.endToEnd = runEndToEnd(options.cli, options.sourceDir, options.quick, options.only);
     std::printf("mesh files:\n");
     report.meshLoads = runMeshLoads(options.quick);
+    std::printf("a new mesh each frame:\n");
+    report.geometryChanges = runGeometryChanges(options.quick);
     if (report.plotNote.empty()) {
       report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
     }

@@ -104,6 +104,36 @@ std::string meshLoadTarget(const std::vector<MeshLoadRun>& runs) {
               misses.empty() ? "–" : misses});
 }
 
+std::string geometryChangeTarget(const std::vector<GeometryChangeRun>& runs) {
+  return runsTargetRow<GeometryChangeRun>(
+      "a new mesh each frame, less its build, <= " + number(GEOMETRY_CHANGE_TARGET, 1) +
+          "x a frame of fixed geometry, and no pipeline compiled again (public Renderer)",
+      runs, [](const GeometryChangeRun& x) { return x.ratio() <= GEOMETRY_CHANGE_TARGET && x.pipelinesMs == 0; },
+      [](const GeometryChangeRun& x) { return x.ratio(); });
+}
+
+std::string geometryChangeSection(const Report& r) {
+  std::string s = "## A new mesh each frame\n\nThe public `Renderer` given a wavy grid of the same triangle count "
+                  "each frame (its scene made before the clock starts), against frames of fixed geometry whose "
+                  "specular model alternates (so each is shaded again), " +
+                  std::to_string(r.quick ? 1 : GEOMETRY_CHANGE_ROUNDS) + " interleaved rounds of " +
+                  std::to_string(GEOMETRY_CHANGE_FRAMES) + " frames each way, medians. \"Build\" "
+                  "is the renderer's mesh build within the new-mesh frame (normals, flat arrays); \"pipelines\" the "
+                  "time spent compiling pipelines during the new-mesh frames.\n\n";
+  s += header({"backend", "triangles", "image", "fixed ms", "new mesh ms", "build ms", "new mesh less build / fixed",
+               "pipelines ms"});
+  for (const GeometryChangeRun& x : r.geometryChanges) {
+    const std::string image = std::to_string(x.width) + "x" + std::to_string(x.height);
+    if (!x.failure.empty()) {
+      s += row({x.backend, std::to_string(x.triangles), image, x.failure, "–", "–", "–", "–"});
+      continue;
+    }
+    s += row({x.backend, std::to_string(x.triangles), image, number(x.fixedMs, 2), number(x.newMeshMs, 2),
+              number(x.buildMs, 2), ratio(x.ratio()), number(x.pipelinesMs, 1)});
+  }
+  return s + "\n";
+}
+
 std::string endToEndTargets(const EndToEnd& e) {
   return runsTargetRow<SequenceRun>(
              "`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
@@ -143,6 +173,7 @@ std::string targetTable(const Report& r) {
             setup.met ? "**yes**" : "**no**", setup.result});
   s += endToEndTargets(r.endToEnd);
   s += meshLoadTarget(r.meshLoads);
+  s += geometryChangeTarget(r.geometryChanges);
   s += "\nSpeed ratios are wall clock (the render call, as a user of either backend waits for it); ";
   s += "each scene's misses and what its time or memory went to are listed under the suite.\n\n";
   return s;
@@ -335,7 +366,7 @@ std::string method(const Report& r) {
 
 std::string formatReport(const Report& report) {
   return preamble(report) + machine(report) + targetTable(report) + suite(report) + setupSection(report) +
-         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) +
+         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) +
          method(report);
 }
 

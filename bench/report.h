@@ -4,6 +4,7 @@
 
 #include "end_to_end.h"
 #include "error_sweep.h"
+#include "geometry_change.h"
 #include "machine.h"
 #include "mesh_load.h"
 #include "scene_bench.h"
@@ -25,6 +26,7 @@ struct Report {
   SweepResult sweep;
   EndToEnd endToEnd;
   std::vector<MeshLoadRun> meshLoads;
+  std::vector<GeometryChangeRun> geometryChanges;
   std::string plotLink;  // the plot, relative to the report; empty when there is none
   std::string plotNote;  // why there is no plot
 };
