@@ -96,7 +96,7 @@ void Renderer::render(const Scene& scene, Image& image) { image = impl_->render(
 
 RenderOutput Renderer::renderWithKeys(const Scene& scene) {
   if (impl_->backend() == Backend::Graphics) {
-    throw std::invalid_argument("the graphics backend has no visibility keys; use the gpu or cpu backend");
+    throw ArgumentError("the graphics backend has no visibility keys; use the gpu or cpu backend");
   }
   return impl_->render(scene, true);
 }
@@ -131,7 +131,7 @@ Backend parseBackend(const std::string& name) {
   if (name == "gpu") return Backend::Gpu;
   if (name == "cpu") return Backend::Cpu;
   if (name == "graphics" || name == "raster") return Backend::Graphics;
-  throw std::invalid_argument("unknown backend '" + name + "' (gpu, cpu or graphics)");
+  throw ArgumentError("unknown backend '" + name + "' (gpu, cpu or graphics)");
 }
 
 DiffResult diff(const Scene& scene, const RendererOptions& gpuOptions) {

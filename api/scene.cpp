@@ -51,7 +51,7 @@ int Scene::frameCount() const { return sequence_ ? sequence_->frameCount() : 1; 
 
 Scene Scene::frame(int index) const {
   if (index < 0 || index >= frameCount()) {
-    throw std::out_of_range((path().empty() ? "" : path() + ": ") + "frame " + std::to_string(index) +
+    throw RangeError((path().empty() ? "" : path() + ": ") + "frame " + std::to_string(index) +
                             " is out of range: the scene has " + std::to_string(frameCount()) + " frames");
   }
   if (!sequence_) return *this;

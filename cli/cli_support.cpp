@@ -30,6 +30,8 @@ int guarded(const std::function<int()>& command) {
     return report(e, EXIT_BAD_INPUT);
   } catch (const NoDeviceError& e) {
     return report(e, EXIT_NO_DEVICE);
+  } catch (const ArgumentError& e) {
+    return report(e, EXIT_BAD_INPUT);
   } catch (const std::exception& e) {
     return report(e, EXIT_FAILURE_OTHER);
   }

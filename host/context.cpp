@@ -78,7 +78,7 @@ void destroyContext(VulkanContext& context) {
 void checkDeviceLimit(const VulkanContext& context, const std::string& what, uint64_t need, const std::string& unit,
                       const char* limitName, uint64_t limit) {
   if (need <= limit) return;
-  throw std::runtime_error("scene too large for " + context.info.name + ": " + what + " need " +
+  throw DeviceError("scene too large for " + context.info.name + ": " + what + " need " +
                            std::to_string(need) + (unit.empty() ? "" : " " + unit) + ", more than " + limitName +
                            " (" + std::to_string(limit) + ")");
 }

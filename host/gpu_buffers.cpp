@@ -58,7 +58,7 @@ bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::ve
                      const char* what) {
   if (sameBytes(next, last)) return false;
   if (next.size() != last.size() && !last.empty()) {
-    throw std::invalid_argument(std::string("a frame may not change the number of ") + what);
+    throw ArgumentError(std::string("a frame may not change the number of ") + what);
   }
   if (!next.empty()) uploadToBuffer(context, buffer, next.data(), next.size() * sizeof(T));
   last = next;

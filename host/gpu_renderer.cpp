@@ -41,7 +41,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
   resolveTiles_ = cpuLayout ? 1u : 8u;
   binPass_ = !cpuLayout;
   if (options.output == ColorOutput::InKeySlots && !hasSharedMemory(context_)) {
-    throw std::invalid_argument("colours in the key slots need memory that is device local and host cached");
+    throw ArgumentError("colours in the key slots need memory that is device local and host cached");
   }
   colorsInKeys_ = options.output == ColorOutput::InKeySlots ||
                   (options.output == ColorOutput::Auto && hasSharedMemory(context_));
@@ -167,7 +167,7 @@ void GpuRenderer::prepareRetry(uint32_t statusFlags) {
   } else if (listChunk_ == 0u || listChunk_ > LIST_CHUNK_MIN) {
     listChunk_ = listChunk_ == 0u ? LIST_CHUNK_FIRST : listChunk_ / 4u;  // render selects its pipelines
   } else {
-    throw std::runtime_error("scene too large for " + context_.info.name +
+    throw DeviceError("scene too large for " + context_.info.name +
                              ": a pass needs more loop iterations per invocation than the device allows, even with " +
                              std::to_string(groupCap_) + " workgroups and the large triangles' lists taken " +
                              std::to_string(listChunk_) + " entries at a time");

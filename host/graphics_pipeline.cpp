@@ -30,7 +30,7 @@ void checkFormat(const VulkanContext& context, VkFormat format, VkImageUsageFlag
   if (usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) need |= VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;
   if (usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) need |= VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
   if ((have & need) != need)
-    throw std::runtime_error(context.info.name + " cannot render to VkFormat " + std::to_string(format) +
+    throw DeviceError(context.info.name + " cannot render to VkFormat " + std::to_string(format) +
                              " (format features " + std::to_string(have) + ", need " + std::to_string(need) + ")");
 }
 

@@ -93,7 +93,7 @@ void checkGraphicsQueue(const VulkanContext& context) {
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(context.physicalDevice, &count, families.data());
   if (!(families.at(context.queueFamily).queueFlags & VK_QUEUE_GRAPHICS_BIT))
-    throw std::runtime_error("the graphics backend needs graphics on " + context.info.name + "'s queue family " +
+    throw DeviceError("the graphics backend needs graphics on " + context.info.name + "'s queue family " +
                              std::to_string(context.queueFamily) + ", which only has compute");
 }
 
@@ -102,7 +102,7 @@ void checkImageSize(const VulkanContext& context, uint32_t width, uint32_t heigh
   const uint32_t limit = std::min(limits.maxImageDimension2D, std::min(limits.maxFramebufferWidth,
                                                                        limits.maxFramebufferHeight));
   if (width == 0 || height == 0 || width > limit || height > limit)
-    throw std::runtime_error("image size " + std::to_string(width) + "x" + std::to_string(height) +
+    throw DeviceError("image size " + std::to_string(width) + "x" + std::to_string(height) +
                              " is not between 1 and " + context.info.name + "'s largest framebuffer (" +
                              std::to_string(limit) + ")");
 }
@@ -128,7 +128,7 @@ template <typename T>
 void uploadSameSize(const VulkanContext& context, Buffer& buffer, const std::vector<T>& data, size_t expected,
                     const char* what) {
   if (data.size() != expected)
-    throw std::invalid_argument(std::string("a frame may not change the number of ") + what);
+    throw ArgumentError(std::string("a frame may not change the number of ") + what);
   if (!data.empty()) uploadToBuffer(context, buffer, data.data(), data.size() * sizeof(T));
 }
 
@@ -256,7 +256,7 @@ void GraphicsRenderer::State::uploadFrame(const FrameInputs& in) {
 
 VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, bool cullBack) {
   if (interpolation != INTERP_PERSPECTIVE && interpolation != INTERP_SCREEN)
-    throw std::invalid_argument("unknown interpolation mode " + std::to_string(interpolation));
+    throw ArgumentError("unknown interpolation mode " + std::to_string(interpolation));
   VkPipeline& pipeline = pipelines[interpolation][cullBack];
   if (pipeline) return pipeline;
   GraphicsPipelineInfo info;

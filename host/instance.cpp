@@ -172,7 +172,7 @@ const VkValidationFeatureEnableEXT kValidationFeatures[] = {
 void enableValidation(VkInstanceCreateInfo& info, std::vector<const char*>& extensions,
                       VkDebugUtilsMessengerCreateInfoEXT& messenger, VkValidationFeaturesEXT& features) {
   if (!hasLayer(kValidationLayer))
-    throw std::runtime_error(std::string("validation was requested but ") + kValidationLayer +
+    throw DeviceError(std::string("validation was requested but ") + kValidationLayer +
                              " is not installed; install vulkan-validationlayers");
   info.enabledLayerCount = 1;
   info.ppEnabledLayerNames = &kValidationLayer;

@@ -55,7 +55,7 @@ void countAllocation(const VulkanContext& context, VkDeviceSize bytes) {
 
 void checkRange(const Buffer& buffer, VkDeviceSize offset, size_t bytes) {
   if (offset > buffer.size || bytes > buffer.size - offset)
-    throw std::out_of_range("buffer access of " + std::to_string(bytes) + " bytes at offset " + std::to_string(offset) +
+    throw RangeError("buffer access of " + std::to_string(bytes) + " bytes at offset " + std::to_string(offset) +
                             " exceeds the buffer's " + std::to_string(buffer.size) + " bytes");
 }
 

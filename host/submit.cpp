@@ -107,7 +107,7 @@ void resetTimestamps(VkCommandBuffer cmd, const TimestampPool& pool) {
 void writeTimestamp(VkCommandBuffer cmd, const TimestampPool& pool, uint32_t slot) {
   if (!pool.pool) return;
   if (slot >= pool.count)
-    throw std::out_of_range("timestamp slot " + std::to_string(slot) + " >= " + std::to_string(pool.count));
+    throw RangeError("timestamp slot " + std::to_string(slot) + " >= " + std::to_string(pool.count));
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool.pool, slot);
 }
 

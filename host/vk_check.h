@@ -6,6 +6,8 @@
 // VK_ERROR_OUT_OF_DEVICE_MEMORY"), so a failure names the place, the call and the reason.
 #pragma once
 
+#include "phongvk/errors.h"
+
 #include <volk.h>
 
 #include <stdexcept>
@@ -15,9 +17,9 @@ namespace phongvk {
 
 // A Vulkan call returned something other than VK_SUCCESS. `result` keeps the code for callers
 // that react to a specific one (VK_ERROR_DEVICE_LOST, VK_TIMEOUT).
-class VulkanError : public std::runtime_error {
+class VulkanError : public DeviceError {
  public:
-  VulkanError(const std::string& message, VkResult result) : std::runtime_error(message), result(result) {}
+  VulkanError(const std::string& message, VkResult result) : DeviceError(message), result(result) {}
   VkResult result;
 };
 

@@ -1,4 +1,5 @@
 #include "phongvk/compare.h"
+#include "phongvk/errors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +51,7 @@ double DiffStats::identicalFraction() const {
 DiffStats compareImages(const Image& a, const Image& b, const std::vector<uint64_t>& keysA,
                         const std::vector<uint64_t>& keysB) {
   if (a.width != b.width || a.height != b.height) {
-    throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
+    throw ArgumentError("images differ in size: " + std::to_string(a.width) + "x" + std::to_string(a.height) +
                                 " vs " + std::to_string(b.width) + "x" + std::to_string(b.height));
   }
   DiffStats s;

@@ -19,7 +19,7 @@ namespace phongvk {
 Image readPng(const std::string& path) {
   int w = 0, h = 0, channels = 0;
   uint8_t* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
-  if (!data) throw std::runtime_error("cannot read PNG '" + path + "': " + stbi_failure_reason());
+  if (!data) throw Error("cannot read PNG '" + path + "': " + stbi_failure_reason());
   Image image(w, h);
   std::memcpy(image.rgb.data(), data, image.rgb.size());
   stbi_image_free(data);

@@ -65,7 +65,7 @@ void filterRows(const Image& image, std::vector<uint8_t>& filtered) {
 
 void checkImage(const Image& image) {
   if (image.width <= 0 || image.height <= 0 || image.rgb.size() != size_t(image.width) * image.height * 3) {
-    throw std::invalid_argument("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+    throw ArgumentError("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                                 " image holding " + std::to_string(image.rgb.size()) + " bytes as PNG");
   }
 }
@@ -82,7 +82,7 @@ struct PngEncoder::State {
 
 PngEncoder::PngEncoder(int level) : state_(std::make_unique<State>()) {
   if (level < PNG_LEVEL_MIN || level > PNG_LEVEL_MAX) {
-    throw std::invalid_argument("PNG level " + std::to_string(level) + " is out of range: " +
+    throw ArgumentError("PNG level " + std::to_string(level) + " is out of range: " +
                                 std::to_string(PNG_LEVEL_MIN) + " (no compression) to " +
                                 std::to_string(PNG_LEVEL_MAX) + " (smallest files)");
   }
@@ -117,7 +117,7 @@ const std::vector<uint8_t>& PngEncoder::encode(const Image& image) {
     s.deflated.resize(libdeflate_zlib_compress_bound(s.compressor, s.filtered.size()));
     deflatedBytes = libdeflate_zlib_compress(s.compressor, s.filtered.data(), s.filtered.size(), s.deflated.data(),
                                              s.deflated.size());
-    if (deflatedBytes == 0) throw std::runtime_error("PNG encoding failed: deflate output exceeded its bound");
+    if (deflatedBytes == 0) throw Error("PNG encoding failed: deflate output exceeded its bound");
   }
   s.png.assign(std::begin(PNG_SIGNATURE), std::end(PNG_SIGNATURE));
   appendHeader(s.png, image);

@@ -10,7 +10,7 @@ namespace phongvk {
 Visibility visibilityOf(const RenderOutput& out) {
   const size_t pixels = size_t(out.image.width) * out.image.height;
   if (out.keys.size() != pixels) {
-    throw std::invalid_argument("a visibility buffer needs the render's keys (renderWithKeys), one per pixel");
+    throw ArgumentError("a visibility buffer needs the render's keys (renderWithKeys), one per pixel");
   }
   Visibility v;
   v.width = out.image.width;

@@ -175,13 +175,18 @@ PYBIND11_MODULE(_phongvk, m) {
   using namespace phongvk::python;
   m.doc() = "phongvk's compiled core; import phongvk, not this module.";
 
-  // C++ failures as Python exceptions: a bad scene is a ValueError, an unwritable file an OSError,
-  // a missing Vulkan device a RuntimeError. Anything else (a Vulkan call that failed, a device
-  // limit) is a RuntimeError naming the cause.
-  // (std::invalid_argument, a bad array, is a ValueError; std::out_of_range an IndexError.)
-  py::register_exception<SceneError>(m, "SceneError", PyExc_ValueError);
-  py::register_exception<OutputError>(m, "OutputError", PyExc_OSError);
-  py::register_exception<NoDeviceError>(m, "NoDeviceError", PyExc_RuntimeError);
+  // C++ failures as Python exceptions, all under phongvk.Error: a bad scene is also a ValueError,
+  // a bad argument a ValueError (an index past the end an IndexError), an unwritable file an
+  // OSError, a missing Vulkan device or a device limit a RuntimeError. Subclasses are registered
+  // after their bases: pybind11 tries the last registered translator first.
+  const py::object error = py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+  const auto under = [&](PyObject* python) { return py::make_tuple(error, py::handle(python)); };
+  py::register_exception<SceneError>(m, "SceneError", under(PyExc_ValueError));
+  const py::object argument = py::register_exception<ArgumentError>(m, "ArgumentError", under(PyExc_ValueError));
+  py::register_exception<RangeError>(m, "RangeError", py::make_tuple(argument, py::handle(PyExc_IndexError)));
+  py::register_exception<OutputError>(m, "OutputError", under(PyExc_OSError));
+  py::register_exception<NoDeviceError>(m, "NoDeviceError", under(PyExc_RuntimeError));
+  py::register_exception<DeviceError>(m, "DeviceError", under(PyExc_RuntimeError));
 
   m.attr("__version__") = version();
   m.attr("__revision__") = revision();

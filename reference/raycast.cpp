@@ -15,7 +15,7 @@ namespace {
 const Object& theSphere(const SceneSpec& scene) {
   if (scene.objects.size() != 1 ||
       (scene.objects[0].shape != Shape::Sphere && scene.objects[0].shape != Shape::Icosphere)) {
-    throw std::invalid_argument(scene.path + ": the analytic ground truth needs a scene of exactly one sphere or icosphere");
+    throw ArgumentError(scene.path + ": the analytic ground truth needs a scene of exactly one sphere or icosphere");
   }
   return scene.objects[0];
 }

@@ -13,7 +13,7 @@ namespace {
 using scenejson::formatNumber;
 
 [[noreturn]] void failRow(const char* array, size_t row, const std::string& what) {
-  throw std::invalid_argument(std::string(array) + ": row " + std::to_string(row) + " " + what);
+  throw ArgumentError(std::string(array) + ": row " + std::to_string(row) + " " + what);
 }
 
 // Appended piece by piece: GCC 12 warns (-Wrestrict, a known false positive) on "[" + a + ...
@@ -25,12 +25,12 @@ std::string rowText(const std::vector<float>& xyz, size_t row) {
 
 void checkCounts(const MeshArrays& a) {
   if (a.positions.size() % 3 != 0 || a.triangles.size() % 3 != 0 || a.normals.size() % 3 != 0) {
-    throw std::invalid_argument("vertices, faces and normals hold 3 values a row");
+    throw ArgumentError("vertices, faces and normals hold 3 values a row");
   }
-  if (a.positions.empty()) throw std::invalid_argument("vertices: the mesh has no vertices");
-  if (a.triangles.empty()) throw std::invalid_argument("faces: the mesh has no faces");
+  if (a.positions.empty()) throw ArgumentError("vertices: the mesh has no vertices");
+  if (a.triangles.empty()) throw ArgumentError("faces: the mesh has no faces");
   if (!a.normals.empty() && a.normals.size() != a.positions.size()) {
-    throw std::invalid_argument("normals: expected one row per vertex (" + std::to_string(a.positions.size() / 3) +
+    throw ArgumentError("normals: expected one row per vertex (" + std::to_string(a.positions.size() / 3) +
                                 "), got " + std::to_string(a.normals.size() / 3));
   }
 }
@@ -79,7 +79,7 @@ Mesh meshFromArrays(const MeshArrays& a) {
     if (glm::cross(p1 - p0, p2 - p0) == glm::dvec3(0.0)) continue;  // zero area: draws nothing, as from a file
     mesh.triangles.push_back(t);
   }
-  if (mesh.triangles.empty()) throw std::invalid_argument("faces: every triangle is degenerate (zero area)");
+  if (mesh.triangles.empty()) throw ArgumentError("faces: every triangle is degenerate (zero area)");
   if (mesh.normals.empty()) computeVertexNormals(mesh);
   return mesh;
 }

@@ -101,13 +101,20 @@ TEST(Api, BadSceneIsASceneErrorNamingTheFileAndThePath) {
     EXPECT_STREQ(e.what(), "inline.json: objects[0].material.ks: must be >= 0, got -1");
   }
   EXPECT_THROW(loadScene(source("scenes/no_such_scene.json")), SceneError);
-  const std::runtime_error* base = nullptr;
-  try {
-    loadScene("");
-  } catch (const SceneError& e) {
-    base = &e;  // SceneError is a std::runtime_error, as the CLI and other callers catch it
-  }
-  EXPECT_NE(base, nullptr);
+  // One catch serves every kind: each derives from phongvk::Error (and so from std::runtime_error).
+  const auto kindOf = [](const auto& call) -> std::string {
+    try {
+      call();
+    } catch (const Error& e) {
+      const std::runtime_error& base = e;
+      return base.what();
+    }
+    return "(no error)";
+  };
+  EXPECT_NE(kindOf([&] { loadScene(""); }), "(no error)");
+  EXPECT_EQ(kindOf([&] { parseBackend("opengl"); }), "unknown backend 'opengl' (gpu, cpu or graphics)");
+  EXPECT_NE(kindOf([&] { loadScene(source("scenes/basic.json")).frame(1); }), "(no error)");
+  EXPECT_NE(kindOf([&] { encodePng(Image(), 99); }), "(no error)");
 }
 
 TEST(Api, DiffComparesTheReferenceAndTheComputePort) {
@@ -128,7 +135,7 @@ TEST(Api, AnimationFramesAreScenes) {
   Renderer cpu(Backend::Cpu);
   EXPECT_FALSE(cpu.render(first).rgb == cpu.render(later).rgb);  // the camera moved
   EXPECT_EQ(cpu.stats().sceneBuilds, 1u);
-  EXPECT_THROW(sequence.frame(120), std::out_of_range);
+  EXPECT_THROW(sequence.frame(120), RangeError);
 }
 
 TEST(Api, BackendsByName) {
@@ -136,10 +143,10 @@ TEST(Api, BackendsByName) {
   EXPECT_EQ(parseBackend("cpu"), Backend::Cpu);
   EXPECT_EQ(parseBackend("graphics"), Backend::Graphics);
   EXPECT_EQ(parseBackend("raster"), Backend::Graphics);  // the graphics baseline's older name
-  EXPECT_THROW(parseBackend("opengl"), std::invalid_argument);
+  EXPECT_THROW(parseBackend("opengl"), ArgumentError);
   EXPECT_STREQ(backendName(Backend::Graphics), "graphics");
   Renderer graphics(Backend::Graphics);
-  EXPECT_THROW(graphics.renderWithKeys(loadScene(source("scenes/basic.json"))), std::invalid_argument);
+  EXPECT_THROW(graphics.renderWithKeys(loadScene(source("scenes/basic.json"))), ArgumentError);
 }
 
 TEST(Api, VersionAndRevision) {

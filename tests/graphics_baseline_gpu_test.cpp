@@ -230,7 +230,7 @@ TEST_F(GraphicsBaseline, FrameMayNotChangeTheNumberOfLights) {
   FrameInputs in = makeFrame(data, makeView(withImageSize(scene.camera, 32, 24)));
   in.lights.push_back(in.lights.front());
   GraphicsRenderer raster(context_, data);
-  EXPECT_THROW(raster.render(in), std::invalid_argument);
+  EXPECT_THROW(raster.render(in), ArgumentError);
 }
 
 TEST(GraphicsPipeline, RelitFramesCompileNothingNew) {

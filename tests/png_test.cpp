@@ -163,13 +163,13 @@ TEST(Png, RunsCompressARenderedFrameAndLevelsTradeSizeAsDocumented) {
 }
 
 TEST(Png, BadLevelAndMismatchedImageAreRejected) {
-  EXPECT_EQ(thrownMessage<std::invalid_argument>([] { PngEncoder encoder(13); }),
+  EXPECT_EQ(thrownMessage<ArgumentError>([] { PngEncoder encoder(13); }),
             "PNG level 13 is out of range: 0 (no compression) to 12 (smallest files)");
-  EXPECT_EQ(thrownMessage<std::invalid_argument>([] { encodePng(Image(), -1); }),
+  EXPECT_EQ(thrownMessage<ArgumentError>([] { encodePng(Image(), -1); }),
             "PNG level -1 is out of range: 0 (no compression) to 12 (smallest files)");
   Image broken(4, 4);
   broken.rgb.pop_back();
-  EXPECT_EQ(thrownMessage<std::invalid_argument>([&] { encodePng(broken); }),
+  EXPECT_EQ(thrownMessage<ArgumentError>([&] { encodePng(broken); }),
             "cannot encode a 4x4 image holding 47 bytes as PNG");
   const std::string dir = makeTempDir();
   EXPECT_EQ(thrownMessage<OutputError>([&] { writePng(dir + "/x.png", broken); }),
@@ -249,7 +249,7 @@ TEST(FrameWriter, DestroyedWithFramesQueuedWritesThemFirst) {
 }
 
 TEST(FrameWriter, BadLevelThrowsBeforeAnyThreadStarts) {
-  EXPECT_THROW(FrameWriter(2, 2, 99), std::invalid_argument);
+  EXPECT_THROW(FrameWriter(2, 2, 99), ArgumentError);
 }
 
 }  // namespace

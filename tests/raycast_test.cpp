@@ -104,8 +104,8 @@ TEST(Raycast, RejectsScenesThatAreNotOneSphere) {
   scene.objects.push_back(scene.objects[0]);
   try {
     raycastSphere(scene, makeView(scene.camera));
-    FAIL() << "expected std::invalid_argument";
-  } catch (const std::invalid_argument& e) {
+    FAIL() << "expected ArgumentError";
+  } catch (const ArgumentError& e) {
     EXPECT_STREQ(e.what(), "inline.json: the analytic ground truth needs a scene of exactly one sphere or icosphere");
   }
 }

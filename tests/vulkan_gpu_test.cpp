@@ -121,7 +121,7 @@ TEST_F(VulkanTest, DeviceLocalBufferRoundTripsThroughStaging) {
   readFromBuffer(context, buffer, back.data(), back.size());
   EXPECT_EQ(back, data);
 
-  EXPECT_THROW(uploadToBuffer(context, buffer, data.data(), 8, 4096), std::out_of_range);
+  EXPECT_THROW(uploadToBuffer(context, buffer, data.data(), 8, 4096), RangeError);
   destroyBuffer(buffer, context);
 }
 

@@ -29,7 +29,7 @@ struct DiffStats {
 // Compares images of equal size; keys (may be empty) also compare the winners: one per pixel, or
 // with samples per pixel those of the sample grid (an image 2, 3 or 4 times wider and higher),
 // a pixel counted once where any of its samples' winners differ.
-// Throws std::invalid_argument when the sizes differ.
+// Throws ArgumentError when the sizes differ.
 PHONGVK_API DiffStats compareImages(const Image& a, const Image& b, const std::vector<uint64_t>& keysA = {},
                                     const std::vector<uint64_t>& keysB = {});
 

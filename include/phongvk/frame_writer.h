@@ -33,7 +33,7 @@ class PHONGVK_API FrameWriter {
   using Written = std::function<void(const FrameFile&)>;
 
   // `threads` writer threads, at most `queueFrames` frames waiting for one. Throws
-  // std::invalid_argument for a PNG level out of range.
+  // ArgumentError for a PNG level out of range.
   FrameWriter(int threads, int queueFrames, int pngLevel, Written written = {});
   // Stops the threads once the queue is empty; a frame still waiting is written first.
   ~FrameWriter();

@@ -1,6 +1,7 @@
 // image.h — 8-bit RGB images, what both renderers return, and PNG files.
 #pragma once
 
+#include "phongvk/errors.h"
 #include "phongvk/export.h"
 
 #include <cstddef>
@@ -40,7 +41,7 @@ struct Visibility {
   std::vector<uint32_t> triangle;
   std::vector<float> depth;
 };
-// Throws std::invalid_argument when `out` has no keys (one per pixel).
+// Throws ArgumentError when `out` has no keys (one per pixel).
 PHONGVK_API Visibility visibilityOf(const RenderOutput& out);
 
 // PNG deflate levels: 0 stores the pixels uncompressed; 1, the default, codes only runs (fastest
@@ -54,7 +55,7 @@ inline constexpr int PNG_LEVEL_DEFAULT = PNG_LEVEL_RUNS;
 
 // Encodes images as PNG (every row filtered "Sub", then deflated at `level`), keeping its buffers
 // from one image to the next: one per thread for a stream of frames. Not for use by two threads
-// at once. Throws std::invalid_argument for a level outside PNG_LEVEL_MIN..PNG_LEVEL_MAX.
+// at once. Throws ArgumentError for a level outside PNG_LEVEL_MIN..PNG_LEVEL_MAX.
 class PHONGVK_API PngEncoder {
  public:
   explicit PngEncoder(int level = PNG_LEVEL_DEFAULT);
@@ -62,7 +63,7 @@ class PHONGVK_API PngEncoder {
   PngEncoder(PngEncoder&&) noexcept;
   PngEncoder& operator=(PngEncoder&&) noexcept;
 
-  // The PNG bytes, valid until the next call. Throws std::invalid_argument for an image whose
+  // The PNG bytes, valid until the next call. Throws ArgumentError for an image whose
   // size and pixel count disagree.
   const std::vector<uint8_t>& encode(const Image& image);
   // Encodes and writes the file: atomically (a temporary file in the same folder, then a rename,
@@ -86,7 +87,7 @@ PHONGVK_API void writePng(const std::string& path, const Image& image, int level
 // call it before long work. An empty path and "-" (standard output) are fine.
 PHONGVK_API void checkWritable(const std::string& path);
 
-// Reads a PNG as 8-bit RGB. Throws std::runtime_error naming the path.
+// Reads a PNG as 8-bit RGB. Throws phongvk::Error naming the path.
 PHONGVK_API Image readPng(const std::string& path);
 
 // Whether `path` is a regular file holding a whole PNG of width x height: the signature, an IHDR of

@@ -64,14 +64,14 @@ class PHONGVK_API Scene {
 
   // Adds `mesh` as an object of this scene (not of copies made before). `material`: empty for the
   // default material, the name of one of the scene's materials, or JSON text of material fields
-  // ({"ks": 0.2}), read like a scene file's. Throws std::invalid_argument naming the array
+  // ({"ks": 0.2}), read like a scene file's. Throws ArgumentError naming the array
   // ("vertices", "faces", "normals") and its first bad row, SceneError for a bad material; the
   // scene is unchanged then.
   void addMesh(const MeshArrays& mesh, const std::string& material = "", bool closed = false);
 
   // The frames of the file's "animate" block (1 without one; this scene is frame 0), each
   // validated like a scene file. Meshes added with addMesh are not in them. frame throws
-  // std::out_of_range outside 0..frameCount()-1, SceneError for a bad frame.
+  // RangeError outside 0..frameCount()-1, SceneError for a bad frame.
   int frameCount() const;
   Scene frame(int index) const;
 
@@ -100,7 +100,7 @@ enum class Backend {
 };
 
 // "gpu", "cpu", "graphics"; parseBackend also takes "raster", the graphics backend's older name.
-// parseBackend throws std::invalid_argument for any other name.
+// parseBackend throws ArgumentError for any other name.
 PHONGVK_API const char* backendName(Backend backend);
 PHONGVK_API Backend parseBackend(const std::string& name);
 
@@ -154,7 +154,7 @@ class PHONGVK_API Renderer {
   Renderer& operator=(Renderer&&) noexcept;
 
   // One frame of `scene`. Throws SceneError for a scene whose meshes cannot be built, and
-  // std::runtime_error naming the device limit a scene exceeds.
+  // DeviceError naming the device limit a scene exceeds.
   Image render(const Scene& scene);
   // The same into `image`, whose pixel storage the gpu backend reuses when it is large enough: a
   // loop of frames through one Image allocates nothing per frame.

@@ -17,8 +17,12 @@ from . import _phongvk
 from ._phongvk import (
     NO_TRIANGLE,
     PNG_LEVEL_DEFAULT,
+    ArgumentError,
+    DeviceError,
+    Error,
     NoDeviceError,
     OutputError,
+    RangeError,
     Scene,
     SceneError,
     __revision__,
@@ -32,11 +36,13 @@ from ._phongvk import (
 )
 
 # What the compiled module defines reads as phongvk's own (phongvk.SceneError in a traceback).
-for _name in ("NoDeviceError", "OutputError", "Scene", "SceneError"):
+for _name in ("ArgumentError", "DeviceError", "Error", "NoDeviceError", "OutputError", "RangeError", "Scene",
+              "SceneError"):
     getattr(_phongvk, _name).__module__ = __name__
 
 __all__ = [
-    "Image", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT", "NoDeviceError", "OutputError", "Renderer", "Scene", "SceneError",
+    "ArgumentError", "DeviceError", "Error", "Image", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT", "NoDeviceError",
+    "OutputError", "RangeError", "Renderer", "Scene", "SceneError",
     "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
 ]
 

@@ -120,3 +120,18 @@ def test_a_list_shared_down_40_levels_is_refused_not_written_2_to_the_40_times()
 def test_a_key_that_is_not_a_string_is_named_by_its_type():
     with pytest.raises(phongvk.SceneError, match=r"^render: keys must be strings, got a key of type int$"):
         phongvk.scene_from_dict(scene_dict(render={1 << 16000: 1}))
+
+
+def test_every_error_is_a_phongvk_error_and_the_python_kind_it_names():
+    assert issubclass(phongvk.SceneError, phongvk.Error) and issubclass(phongvk.SceneError, ValueError)
+    assert issubclass(phongvk.ArgumentError, phongvk.Error) and issubclass(phongvk.ArgumentError, ValueError)
+    assert issubclass(phongvk.RangeError, phongvk.ArgumentError) and issubclass(phongvk.RangeError, IndexError)
+    assert issubclass(phongvk.OutputError, phongvk.Error) and issubclass(phongvk.OutputError, OSError)
+    assert issubclass(phongvk.NoDeviceError, phongvk.Error) and issubclass(phongvk.DeviceError, RuntimeError)
+    scene = phongvk.load_scene(scene_path("scenes/basic.json"))
+    with pytest.raises(phongvk.RangeError, match=r"frame 5 is out of range"):
+        scene.frame(5)
+    with pytest.raises(phongvk.ArgumentError, match=r"unknown backend 'opengl'"):
+        phongvk.Renderer("opengl")
+    with pytest.raises(phongvk.Error):
+        phongvk.read_png(scene_path("scenes/basic.json"))
