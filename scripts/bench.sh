@@ -2,7 +2,7 @@
 # Regenerates docs/BENCHMARKS.md and docs/bench_error.png: builds phongvk_bench in Release (in
 # build/, as scripts/test.sh does, so either reuses the other's work) and runs the benchmark
 # harness (bench/): every scene on the reference, the compute port and the graphics pipeline,
-# median of 5 frames after a warm-up. Run scripts/setup.sh first.
+# median of 5 frames after a warm-up. Run `bash scripts/setup.sh --test` first (gnuplot draws the plot).
 # Extra arguments go to phongvk_bench, e.g. `--repeat 9`, `--device 1`.
 # It takes about 2–3 minutes on the 2-core CPU-only machine (lavapipe); each backend is measured in
 # 3 interleaved rounds, so load from elsewhere on a shared machine biases no comparison.

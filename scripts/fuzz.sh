@@ -9,8 +9,8 @@
 # (programs that build Python values, fuzz/make_dict_seeds.py) for the fourth. New inputs go to
 # build-fuzz/, outside the repo. A crash, a sanitizer report, a hang (> 10 s on one input) or a
 # leak fails the run and leaves the input in build-fuzz/crash-*: add it to the tests once fixed.
-# Needs clang and libclang-rt-14-dev, and for the fourth python3-dev, pybind11-dev and
-# python3-numpy (scripts/setup.sh).
+# Part of the full CI (scripts/ci.sh). Needs clang and libclang-rt-14-dev (`scripts/setup.sh --test`),
+# and for the fourth python3-dev, pybind11-dev and python3-numpy (`scripts/setup.sh`).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-60}

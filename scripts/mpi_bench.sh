@@ -5,6 +5,7 @@
 # reduction to rank 0 (MPI_Reduce, MPI_BOR on 3 bytes a pixel), each timed from a barrier, and the
 # bytes each rank sends into them. Prints a Markdown table (docs/DISTRIBUTED.md quotes one).
 #   scripts/mpi_bench.sh [PHONGVK] [ROUNDS]
+# Needs Open MPI (`bash scripts/setup.sh --test`) and a phongvk built with it (scripts/test.sh's build/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 phongvk=${1:-build/phongvk}

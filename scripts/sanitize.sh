@@ -2,7 +2,8 @@
 # Builds phongvk with AddressSanitizer + UndefinedBehaviorSanitizer (-DPHONGVK_SANITIZE=ON, in
 # build-asan) and runs the whole test suite under them. Any report fails the run: UBSan aborts on
 # the first finding, ASan on the first memory error, LeakSanitizer at exit. The only leaks
-# suppressed are third-party Vulkan code's (tests/lsan.supp). Run scripts/setup.sh first.
+# suppressed are third-party Vulkan code's (tests/lsan.supp). Part of the full CI (scripts/ci.sh).
+# Run `bash scripts/setup.sh --test` first.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=${JOBS:-$(nproc)}

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The full CI, what .ci/run runs (~30 min on a quiet 2-core machine): scripts/test.sh (build and the
+# whole test suite), then a bounded fuzzing run of the scene loader, the mesh and glTF importers and
+# scene_from_dict's path (scripts/fuzz.sh), then the whole test suite again under ASan + UBSan
+# (scripts/sanitize.sh). Each stage prints how long it took; the last lines are CTest's verdicts.
+# Run `bash scripts/setup.sh --test` first. JOBS sets the parallelism (default: every core).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export JOBS=${JOBS:-$(nproc)}
+start=$SECONDS
+
+# Runs "$@" as a named stage and reports its wall time.
+stage() {
+  local name=$1 start=$SECONDS
+  shift
+  "$@"
+  echo "== stage '$name' took $((SECONDS - start)) s"
+}
+
+bash scripts/test.sh  # prints its own stage time, 'build + tests'
+stage "fuzz" bash scripts/fuzz.sh
+stage "sanitizers" bash scripts/sanitize.sh
+echo "== ci took $((SECONDS - start)) s"
+
+# CTest's verdicts close the log, so whoever reads its tail sees what the suites said.
+echo "== summary: Release, then ASan + UBSan"
+grep -h 'tests passed' build/ctest.log build-asan/ctest.log
