@@ -1,5 +1,5 @@
 // plot.h — the error sweep's run time against error chart, drawn by gnuplot (a Debian package,
-// installed by scripts/setup.sh).
+// installed by scripts/setup.sh --test).
 #pragma once
 
 #include "error_sweep.h"
