@@ -10,6 +10,7 @@
 #include "phongvk/phongvk.h"
 #include "reference/render_reference.h"
 #include "scene/camera.h"
+#include "scene/scene.h"
 #include "test_util.h"
 
 #include <gtest/gtest.h>
@@ -72,6 +73,24 @@ TEST_P(ShadingModes, GpuMatchesReferenceInEveryMode) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShadingModes, ::testing::ValuesIn(test::allScenes()), test::pathTestName);
+
+// The most lights a scene may have (scene.h MAX_LIGHTS), on a screen-filling dense mesh whose bins
+// hold keys in every tile: every mode renders the reference's bytes, with no loop budget run out
+// on lavapipe (2,048 lights ran out with Phong shading and 4 samples).
+TEST(ShadingLimits, TheMostLightsRenderTheReferenceBytesInEveryMode) {
+  std::string lights;
+  for (size_t i = 0; i < MAX_LIGHTS; ++i) {
+    lights += std::string(i ? ", " : "") + "{\"position\": [" + std::to_string(0.01 * double(i % 32)) + ", -1, " +
+              std::to_string(0.01 * double(i / 32)) + "], \"intensity\": 0.002}";
+  }
+  const Scene scene = parseScene(R"({"camera": {"position": [0, -1.2, 0], "look_at": [0, 0, 0], "width": 96, "height": 64},
+      "lights": [)" + lights + R"(], "objects": [{"shape": "icosphere", "radius": 1, "subdivide": 5}]})");
+  Renderer gpu(Backend::Gpu), cpu(Backend::Cpu);
+  for (const char* mode : {R"({"shading": "gouraud"})", R"({"shading": "flat", "samples": 4})", R"({"shading": "phong", "samples": 4})"}) {
+    const Scene moded = scene.withRender(mode);
+    expectSame(cpu.renderWithKeys(moded), gpu.renderWithKeys(moded), mode);
+  }
+}
 
 // Per-pixel lighting in the GPU renderer's other work layout and colour output (the deferred path
 // a GPU takes), on scenes of large and small triangles and one crossing the near plane.
