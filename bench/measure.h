@@ -1,6 +1,6 @@
 // measure.h — timing one frame of a scene on each backend: the CPU reference, the Vulkan compute
 // port (GpuRenderer) and the graphics-pipeline baseline (GraphicsRenderer); plus device memory and
-// host memory. Every time is the median of `repeat` frames after one warm-up (host/timing.h).
+// host memory. Every time is the median of `repeat` frames after one warm-up (api/timing.h).
 #pragma once
 
 #include "host/context.h"

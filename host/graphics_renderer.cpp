@@ -267,7 +267,7 @@ VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, bool cul
   info.renderPass = renderPass;
   info.cullMode = cullBack ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
   // Our front faces are counter-clockwise seen from outside, which stays counter-clockwise on
-  // the y-down screen (raster.h setupEdges); Vulkan's framebuffer is y-down too.
+  // the y-down screen (edges.h setupEdges); Vulkan's framebuffer is y-down too.
   info.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   info.depthCompare = DEPTH_COMPARE;
   pipeline = createGraphicsPipeline(context, info);

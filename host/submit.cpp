@@ -1,4 +1,4 @@
-// commands.cpp — one-time submissions, barriers, timestamp queries.
+// submit.cpp — one-time submissions, barriers, timestamp queries.
 #include "host/submit.h"
 
 #include "host/vk_check.h"

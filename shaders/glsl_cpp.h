@@ -1,7 +1,7 @@
 // glsl_cpp.h — lets one maths header compile as GLSL and as C++ (GLM).
 //
-// phong.h and raster.h are written once, in the common subset of the two languages, and included
-// by the compute shaders and by the C++ reference. Both renderers therefore evaluate the same
+// phong.h, edges.h and the other shared maths headers are written once, in the common subset of
+// the two languages, and included by the compute shaders and by the C++ reference. Both renderers therefore evaluate the same
 // float operations in the same order; `PRECISE` forbids FMA contraction in GLSL and the C++ side is
 // built with -ffp-contract=off. Rules for code in those headers:
 //   - float literals carry an `f` suffix (a bare 0.5 is a double in C++ and would promote);

@@ -58,7 +58,7 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
 
 // ---- Descriptor bindings: the one table (one set; every pass sees it, bindings.glsl) ----
 // X(name, binding, descriptor type). The host makes its set layouts and descriptor writes from
-// this table (host/bindings.h), the shaders declare the same numbers (bindings.glsl).
+// this table (host/pipelines.h SHARED_BINDINGS), the shaders declare the same numbers (bindings.glsl).
 #define PHONGVK_BINDINGS(X)                                                                            \
   X(BINDING_FRAME, 0, UNIFORM_BUFFER)              /* FrameData */                                    \
   X(BINDING_VERTICES, 1, UNIFORM_TEXEL_BUFFER)     /* VertexIn[] as RGBA32UI texels */                \

@@ -1,6 +1,6 @@
 // coverage_test.cpp — the fill rule, counted. Both renderers keep only the nearest fragment per
 // pixel, so a pixel covered twice (or a crack filled by a triangle behind) is invisible in their
-// images. Here raster.h's own setup and coverage functions are called directly and every pixel
+// images. Here edges.h's own setup and coverage functions are called directly and every pixel
 // centre's coverage is counted: meshes that tile a region with shared edges must cover every
 // pixel centre inside it exactly once, at every subpixel offset, in every orientation.
 

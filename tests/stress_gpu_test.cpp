@@ -176,7 +176,7 @@ SceneData gridSceneData(SceneData base, const View& view, const test::TiledSquar
 
 // The jittered grid of stress_geometry.h filling the whole 64x48 view, moved by many subpixel
 // amounts: both backends must cover every pixel and pick the same triangle everywhere. (That each
-// pixel is covered exactly once is counted in coverage_test.cpp, with the same raster.h code.)
+// pixel is covered exactly once is counted in coverage_test.cpp, with the same edges.h code.)
 TEST_F(StressTest, SharedEdgesAtManySubpixelOffsets) {
   const SceneSpec scene = loadSceneSpec(test::sourcePath("scenes/stress/one_pixel.json"));
   const View view = makeView(withImageSize(scene.camera, 64, 48));
