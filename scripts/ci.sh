@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The full CI, what .ci/run runs (~30 min on a quiet 2-core machine): scripts/test.sh (build and the
+# The full CI, what .ci/run runs (22–25 min from a fresh clone on a 2-core machine): scripts/test.sh (build and the
 # whole test suite), then a bounded fuzzing run of the scene loader, the mesh and glTF importers and
 # scene_from_dict's path (scripts/fuzz.sh), then the whole test suite again under ASan + UBSan
 # (scripts/sanitize.sh). Each stage prints how long it took; the last lines are CTest's verdicts.
