@@ -24,10 +24,19 @@ void Renderer::Impl::frame(const SceneSpec& spec) {
   camera_ = framed.camera;
 }
 
+namespace {
+
+// The samples a frame of `spec` renders: its pixels times the samples per pixel (memory_estimate.h).
+uint64_t pixelSamples(const SceneSpec& spec) {
+  const View view = makeView(spec.camera);
+  return uint64_t(view.width) * uint64_t(view.height) * uint64_t(spec.samples);
+}
+
+}  // namespace
+
 void Renderer::Impl::prepare(const Scene& scene) {
   const SceneSpec& spec = scene.spec();
-  const View view = makeView(spec.camera);
-  const uint64_t samples = uint64_t(view.width) * uint64_t(view.height) * uint64_t(spec.samples);
+  const uint64_t samples = pixelSamples(spec);
   if (data_ && builtFrom_ && sameGeometry(*builtFrom_, spec)) {
     checkBuiltSceneMemory(spec, data_->triangles.size(), samples);  // this frame's size and samples
     const size_t materials = data_->materials.size(), lights = data_->lights.size();
@@ -152,10 +161,7 @@ DiffResult diff(const Scene& scene, Renderer& renderer) {
 
 void setMemoryLimit(uint64_t bytes) { setSceneMemoryLimit(bytes); }
 
-void checkSceneMemory(const Scene& scene) {
-  const View view = makeView(scene.spec().camera);
-  checkSceneMemory(scene.spec(), uint64_t(view.width) * uint64_t(view.height) * uint64_t(scene.spec().samples));
-}
+void checkSceneMemory(const Scene& scene) { checkSceneMemory(scene.spec(), pixelSamples(scene.spec())); }
 
 uint64_t memoryLimitBytes(const std::string& gib, const std::string& what) { return parseMemoryLimit(gib, what); }
 

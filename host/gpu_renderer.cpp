@@ -34,8 +34,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
       options_(options),
       exactFloats_(options.exactFloats ? *options.exactFloats : probeFloatOps(context).useExact()),
       pipelines_(options.pipelines ? options.pipelines : std::make_shared<GpuPipelineSet>(context)) {
-  groupCap_ = options.firstGroupCap != 0 ? std::min(options.firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
-  listChunk_ = options.firstListChunk;
+  startRetries();
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool cpuLayout = options.layout == WorkLayout::Cpu || (options.layout == WorkLayout::Auto && cpu);
   resolveTiles_ = cpuLayout ? 1u : 8u;
@@ -72,13 +71,18 @@ void GpuRenderer::compileSceneModes(const SceneData& data) {
   current_[RASTER] = pipeline(requests[RASTER]);
 }
 
+// The workgroup cap and list chunks a first frame starts from (prepareRetry grows them).
+void GpuRenderer::startRetries() {
+  groupCap_ = options_.firstGroupCap != 0 ? std::min(options_.firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
+  listChunk_ = options_.firstListChunk;
+}
+
 void GpuRenderer::replaceScene(const SceneData& data) {
   checkSceneFits(data);  // before anything is released
   releaseScene();        // the old meshes go before the new ones are allocated
   compileSceneModes(data);
   uploadScene(data);
-  groupCap_ = options_.firstGroupCap != 0 ? std::min(options_.firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
-  listChunk_ = options_.firstListChunk;
+  startRetries();
   if (width_ != 0) createLargeBuffersFor(VkDeviceSize(width_) * height_);  // sized for this scene's triangles
   keysDirty_ = true;
   framesSent_ = 0;  // the next frame sends and shades everything
@@ -86,13 +90,11 @@ void GpuRenderer::replaceScene(const SceneData& data) {
 }
 
 void GpuRenderer::release() {
-  for (Buffer* b : {&frameBuffer_, &controlBuffer_, &clipList_, &keys_, &bins_, &colors_, &keyReadback_, &status_}) {
+  releaseScene();
+  for (Buffer* b : {&frameBuffer_, &controlBuffer_, &keys_, &bins_, &colors_, &keyReadback_, &status_}) {
     destroyBuffer(*b, context_);
   }
-  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shadedPositions_, &shadedColors_,
-                         &large_, &largeSetups_}) {
-    destroyTexelBuffer(*t, context_);
-  }
+  for (TexelBuffer* t : {&large_, &largeSetups_}) destroyTexelBuffer(*t, context_);
   destroyTimestampPool(timestamps_, context_);
   destroyDescriptorArena(arena_, context_);
 }

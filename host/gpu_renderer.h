@@ -162,7 +162,8 @@ class GpuRenderer {
   void compileSceneModes(const SceneData& data);
   void createFrameBuffers();
   void uploadScene(const SceneData& data);
-  void releaseScene();
+  void releaseScene();  // the scene's buffers (release: all of them)
+  void startRetries();
   void ensureImageBuffers(uint32_t width, uint32_t height);
   void createLargeBuffersFor(VkDeviceSize pixels);
   void ensureColorBuffer(bool wholeImage);
