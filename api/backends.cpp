@@ -4,11 +4,11 @@
 
 #include "api/timing.h"
 
-#include "host/context.h"
-#include "host/float_probe.h"
-#include "host/gpu_renderer.h"
-#include "host/graphics_renderer.h"
+#include "compute/gpu_renderer.h"
+#include "graphics/graphics_renderer.h"
 #include "reference/render_reference.h"
+#include "vulkan/context.h"
+#include "vulkan/float_probe.h"
 
 #include <cmath>
 #include <limits>

@@ -2,10 +2,10 @@
 #include "api/renderer_impl.h"
 
 #include "api/timing.h"
-#include "scene/camera.h"
-#include "scene/camera_fit.h"
-#include "scene/memory_estimate.h"
 #include "phongvk/contact_sheet.h"
+#include "prepare/camera_fit.h"
+#include "prepare/memory_estimate.h"
+#include "scene/camera.h"
 
 #include <cmath>
 #include <limits>

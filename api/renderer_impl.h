@@ -4,7 +4,7 @@
 #pragma once
 
 #include "phongvk/phongvk.h"
-#include "scene/scene_data.h"
+#include "prepare/scene_data.h"
 
 #include <memory>
 #include <mutex>

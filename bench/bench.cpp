@@ -1,8 +1,8 @@
 #include "bench.h"
 
-#include "host/context.h"
 #include "plot.h"
 #include "report.h"
+#include "vulkan/context.h"
 
 #include <cstdio>
 #include <filesystem>

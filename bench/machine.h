@@ -1,7 +1,7 @@
 // machine.h — what the numbers were measured on, for the report's header.
 #pragma once
 
-#include "host/context.h"
+#include "vulkan/context.h"
 
 #include <string>
 

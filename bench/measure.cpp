@@ -1,7 +1,7 @@
 #include "measure.h"
 
-#include "host/graphics_renderer.h"
 #include "api/timing.h"
+#include "graphics/graphics_renderer.h"
 #include "reference/render_reference.h"
 
 #include <sys/resource.h>

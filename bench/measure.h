@@ -3,10 +3,10 @@
 // host memory. Every time is the median of `repeat` frames after one warm-up (api/timing.h).
 #pragma once
 
-#include "host/context.h"
-#include "host/gpu_renderer.h"
+#include "compute/gpu_renderer.h"
 #include "phongvk/image.h"
-#include "scene/scene_data.h"
+#include "prepare/scene_data.h"
+#include "vulkan/context.h"
 
 #include <cstdint>
 #include <limits>

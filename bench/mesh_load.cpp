@@ -1,7 +1,7 @@
 // mesh_load.cpp — see mesh_load.h.
 #include "mesh_load.h"
 
-#include "scene/mesh.h"
+#include "scene/object_mesh.h"
 #include "scene/scene.h"
 
 #include "phongvk/phongvk.h"

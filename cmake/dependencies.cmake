@@ -3,7 +3,7 @@
 find_package(glm REQUIRED)
 find_package(nlohmann_json REQUIRED)
 find_package(tinyobjloader REQUIRED)
-find_package(TinyGLTF REQUIRED)  # glTF 2.0: its header only (scene/gltf_import.cpp compiles it)
+find_package(TinyGLTF REQUIRED)  # glTF 2.0: its header only (meshio/gltf_import.cpp compiles it)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)  # PNG deflate and CRC (image/png_write.cpp)
 set(PHONGVK_SCENE_LIBRARIES glm::glm nlohmann_json::nlohmann_json tinyobjloader::tinyobjloader)

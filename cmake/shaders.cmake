@@ -7,7 +7,7 @@
 # dependency file per shader, so editing an included header rebuilds exactly the shaders that
 # include it. Every compute shader not named in EXACT_SKIP is also built as spirv_x_exact with
 # EXACT_FLOAT_OPS=1: division and sqrt corrected to the correctly rounded result
-# (shaders/exact_float.h), for devices whose own are off (host/float_probe.h). A build of its own,
+# (shaders/exact_float.h), for devices whose own are off (vulkan/float_probe.h). A build of its own,
 # not a specialization constant: lavapipe inlines both sides of every call before it drops the dead
 # one, which cost ~40 ms of pipeline compiling per process.
 # Every compute shader's floating-point operations are then decorated NoContraction

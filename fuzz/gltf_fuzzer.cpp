@@ -10,8 +10,8 @@
 // other exception. A mesh that loads keeps the promises of mesh_import.h (mesh_checks.h).
 // fuzz/make_gltf_seeds.py writes the seeds (fuzz/gltf_corpus) in this framing.
 #include "fuzz/mesh_checks.h"
-#include "scene/mesh_file.h"
-#include "scene/mesh_import.h"
+#include "meshio/mesh_file.h"
+#include "meshio/mesh_import.h"
 
 #include <stdlib.h>
 

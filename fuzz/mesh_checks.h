@@ -1,8 +1,8 @@
 // mesh_checks.h — what the mesh fuzz targets (mesh_fuzzer.cpp, gltf_fuzzer.cpp) check on every mesh
-// that loads: the promises of scene/mesh_import.h. A broken one aborts, so libFuzzer keeps the input.
+// that loads: the promises of meshio/mesh_import.h. A broken one aborts, so libFuzzer keeps the input.
 #pragma once
 
-#include "scene/mesh.h"
+#include "geometry/mesh.h"
 
 #include <cmath>
 #include <cstdio>

@@ -4,8 +4,8 @@
 // bytes must either give a mesh or throw SceneError: no crash, no sanitizer report, no hang, no
 // other exception. A mesh that loads keeps the promises of mesh_import.h (mesh_checks.h).
 #include "fuzz/mesh_checks.h"
-#include "scene/mesh_file.h"
-#include "scene/mesh_import.h"
+#include "meshio/mesh_file.h"
+#include "meshio/mesh_import.h"
 
 #include <unistd.h>
 

@@ -4,9 +4,9 @@
 // exception. What loads must keep the loader's promises: the camera makes a view, and the meshes
 // of a scene small enough to build quickly have finite positions, unit normals and indices in range.
 // Mesh files resolve against scenes/, so the seed scenes' meshes/*.obj are found.
+#include "prepare/scene_data.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
-#include "scene/scene_data.h"
 
 #include <cmath>
 #include <cstdint>

@@ -2,9 +2,9 @@
 // byte minus the same channel of the pixel to its left), which turns a frame's flat background and
 // smooth shading into runs of zeros, then the whole image is deflated in one call: at level 1 by
 // the run-only coder (deflate_runs.h), at the others by libdeflate (docs/DECISIONS.md "PNG levels").
+#include "base/huge_pages.h"
 #include "image/deflate_runs.h"
 #include "image/output_file.h"
-#include "memory/huge_pages.h"
 #include "phongvk/errors.h"
 #include "phongvk/image.h"
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "phongvk/image.h"
-#include "scene/scene_data.h"
+#include "prepare/scene_data.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "scene/mesh_arrays.h"
 
-#include "scene/normals.h"
+#include "geometry/normals.h"
 #include "scene/scene_json.h"
 #include "scene/scene_sections.h"
 
@@ -10,7 +10,6 @@
 namespace phongvk {
 namespace {
 
-using scenejson::formatNumber;
 
 [[noreturn]] void failRow(const char* array, size_t row, const std::string& what) {
   throw ArgumentError(std::string(array) + ": row " + std::to_string(row) + " " + what);

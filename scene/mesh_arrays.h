@@ -2,8 +2,8 @@
 // row by row, built once, and added to a scene as a `mesh` object of its own.
 #pragma once
 
+#include "geometry/mesh.h"
 #include "phongvk/mesh.h"
-#include "scene/mesh.h"
 #include "scene/scene.h"
 
 #include <string>

@@ -1,7 +1,7 @@
 // model_scene.cpp — see model_scene.h.
 #include "scene/model_scene.h"
 
-#include "scene/mesh_file.h"
+#include "meshio/mesh_file.h"
 
 #include <filesystem>
 

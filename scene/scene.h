@@ -2,6 +2,7 @@
 // Everything downstream reads this model; nothing downstream re-reads the JSON.
 #pragma once
 
+#include "geometry/mesh.h"
 #include "phongvk/errors.h"
 
 #include <glm/glm.hpp>
@@ -48,11 +49,6 @@ struct CameraSpec {
   bool fit = false;
 };
 
-// The largest |coordinate| and size, in metres, a scene may use (positions, centres, points,
-// radii, OBJ vertices after scaling): far beyond any useful scene, small enough that the offsets
-// and squared distances the renderers take in 32-bit float cannot overflow.
-inline constexpr double MAX_COORDINATE = 1e15;
-
 // The most lights a scene may have. The compute port lights a vertex (Gouraud) or a pixel (flat
 // and Phong shading, each of a bin's 16 tiles in turn) in a loop over the lights, and lavapipe
 // allows one shader invocation 65,535 loop iterations in all: a screen-filling dense mesh with
@@ -67,8 +63,6 @@ struct FileVersion {
   int64_t modified = 0;  // nanoseconds since the file clock's epoch
   bool operator==(const FileVersion&) const = default;
 };
-
-struct Mesh;  // mesh.h
 
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
 enum class Interpolation { Perspective, Screen };
@@ -92,7 +86,7 @@ struct Object {
   std::shared_ptr<const Mesh> arrays;  // mesh: given as arrays (mesh_arrays.h) instead of a file
   bool baseColors = false;           // mesh: a glTF file's base colours apply (it names no material)
   glm::dvec3 translate = {0, 0, 0};  // mesh: the origin of its local frame
-  // The local frame's linear map (mesh_transform.h): `up` first (meshes), then `scale` per axis
+  // The local frame's linear map (object_mesh.h objectTransform): `up` first (meshes), then `scale` per axis
   // (non-zero; negative mirrors), then `rotation`.
   UpAxis up = UpAxis::Z;
   glm::dvec3 scale = {1, 1, 1};

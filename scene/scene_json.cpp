@@ -278,14 +278,4 @@ glm::dvec3 vec3(const Node& node, ElementReader element) {
   return {element(node.element(0)), element(node.element(1)), element(node.element(2))};
 }
 
-template <typename Real>
-std::string shortestText(Real value) {
-  char buffer[32];
-  auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-std::string formatNumber(double value) { return shortestText(value); }
-std::string formatNumber(float value) { return shortestText(value); }
-
 }  // namespace phongvk::scenejson

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "base/number_text.h"
 #include "scene/scene.h"
 
 namespace phongvk::scenejson {
@@ -79,10 +80,5 @@ std::string string(const Node& node);
 // An array of exactly 3 numbers, each read (and range checked) by `element`.
 using ElementReader = double (*)(const Node&);
 glm::dvec3 vec3(const Node& node, ElementReader element = number);
-
-// Shortest text that reads back as the same number: "-1", "0.05", "1e+300". The float
-// overload prints a float field's value as written (0.1f as "0.1", not "0.10000000149011612").
-std::string formatNumber(double value);
-std::string formatNumber(float value);
 
 }  // namespace phongvk::scenejson

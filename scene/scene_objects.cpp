@@ -1,9 +1,9 @@
 // scene_objects.cpp — the scene file's "objects": each shape's keys, its geometry values and its
-// material. Meshes are only checked for a readable file here; mesh.cpp builds them.
+// material. Meshes are only checked for a readable file here; object_mesh.cpp builds them.
 #include "scene/scene_sections.h"
 
-#include "scene/mesh_file.h"
-#include "scene/mesh_transform.h"
+#include "geometry/transform.h"
+#include "meshio/mesh_file.h"
 
 #include <chrono>
 #include <filesystem>

@@ -4,8 +4,8 @@
 // scene.cpp reads the whole file with them. Every reader throws SceneError at the failing node.
 #pragma once
 
+#include "base/regular_file.h"
 #include "scene/scene.h"
-#include "scene/regular_file.h"
 #include "scene/scene_json.h"
 
 #include <optional>

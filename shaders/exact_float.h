@@ -10,7 +10,7 @@
 //   - GLSL: the device's own operations, or, in the passes' `_exact` builds (EXACT_FLOAT_OPS, see
 //     CMakeLists.txt), the device's result corrected to the correctly rounded one with fused
 //     multiply-adds (correctedQuotient, correctedRoot). The host takes the `_exact` builds only
-//     where the probe (host/float_probe.h) found the device's operations off and the corrected
+//     where the probe (vulkan/float_probe.h) found the device's operations off and the corrected
 //     ones exact (which needs a fused fma: lavapipe's is not; its operations are exact).
 // The corrections are written once, in the common subset, so the C++ tests check them too.
 #ifndef PHONGVK_EXACT_FLOAT_H

@@ -88,7 +88,7 @@ PHONGVK_CONST uint LOOP_PROBE_ITERATIONS = 2;
 
 // What the GPU renderer tells its passes beside the frame: work counts, list capacities, the bin
 // grid, the workgroup cap and which parts of the shade pass run. Written by the renderer alone
-// (host/gpu_buffers.cpp writeControl), once per attempt at a frame.
+// (compute/gpu_buffers.cpp writeControl), once per attempt at a frame.
 struct PassControl {
   uint vertexCount;
   uint triangleCount;

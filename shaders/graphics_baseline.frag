@@ -1,4 +1,4 @@
-// Graphics-pipeline baseline (host/graphics_renderer.h), fragment stage: the Gouraud colour the
+// Graphics-pipeline baseline (graphics/graphics_renderer.h), fragment stage: the Gouraud colour the
 // hardware interpolated, clamped to [0, 1]; the R8G8B8A8_UNORM attachment rounds it to 8 bits.
 #version 460
 #extension GL_GOOGLE_include_directive : require

@@ -1,4 +1,4 @@
-// Graphics-pipeline baseline (host/graphics_renderer.h), vertex stage: the transform and Phong of
+// Graphics-pipeline baseline (graphics/graphics_renderer.h), vertex stage: the transform and Phong of
 // shade_vertices.comp (phong.h), then the homogeneous pixel-space position mapped to Vulkan clip
 // space. Vertices are pulled from the texel buffer by gl_VertexIndex (an indexed draw, so the
 // driver's vertex cache shades a shared vertex once per batch), as the compute port reads them:

@@ -1,14 +1,14 @@
 // probe_float.comp — what the device's float division, square root and fma give, next to the
 // corrected operations of exact_float.h, for inputs the host checks against its IEEE results
-// (host/float_probe.h). The host picks the renderer's passes' `_exact` builds from this.
+// (vulkan/float_probe.h). The host picks the renderer's passes' `_exact` builds from this.
 //
 // Probe i reads (a, b, c, x) and writes five bit patterns: a / b and sqrt(x) as the device does
 // them, fma(a, b, c), and the first two corrected (correctedQuotient, correctedRoot).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "gpu_layout.h"
 #include "exact_float.h"
+#include "gpu_layout.h"
 
 layout(local_size_x = FLOAT_PROBE_GROUP_SIZE) in;
 

@@ -58,7 +58,7 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
 
 // ---- Descriptor bindings: the one table (one set; every pass sees it, bindings.glsl) ----
 // X(name, binding, descriptor type). The host makes its set layouts and descriptor writes from
-// this table (host/pipelines.h SHARED_BINDINGS), the shaders declare the same numbers (bindings.glsl).
+// this table (vulkan/pipelines.h SHARED_BINDINGS), the shaders declare the same numbers (bindings.glsl).
 #define PHONGVK_BINDINGS(X)                                                                            \
   X(BINDING_FRAME, 0, UNIFORM_BUFFER)              /* FrameData */                                    \
   X(BINDING_VERTICES, 1, UNIFORM_TEXEL_BUFFER)     /* VertexIn[] as RGBA32UI texels */                \
@@ -155,7 +155,7 @@ struct LightData {
 };
 
 // One frame as the scene and its camera define it: built once per frame by makeFrame
-// (scene/scene_data.h) and read the same way by both renderers.
+// (prepare/scene_data.h) and read the same way by both renderers.
 struct FrameData {
   vec4 right;        // camera basis as rows: view = (dot(right, p), dot(up, p), dot(forward, p))
   vec4 up;

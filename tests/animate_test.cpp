@@ -1,10 +1,10 @@
 // SceneSpec sequences without a GPU: the expression evaluator's values and messages, the "animate"
 // block's rules, applying a track, and a ka sweep rendered by the reference.
-#include "scene/animate.h"
 #include "phongvk/contact_sheet.h"
-#include "scene/expression.h"
+#include "prepare/scene_data.h"
 #include "reference/render_reference.h"
-#include "scene/scene_data.h"
+#include "scene/animate.h"
+#include "scene/expression.h"
 
 #include <gtest/gtest.h>
 

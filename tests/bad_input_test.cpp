@@ -2,10 +2,10 @@
 // or a NaN image. Complements scene_test.cpp (which covers the loader's basic cases): here are
 // the syntax corner cases, out-of-range values that used to reach the renderers as Inf/NaN,
 // broken OBJ files, unreadable and odd files, and the CLI's exit codes and output files.
-#include "scene/scene.h"
-#include "scene/scene_data.h"
 #include "phongvk/contact_sheet.h"
 #include "phongvk/image.h"
+#include "prepare/scene_data.h"
+#include "scene/scene.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Camera (docs/DESIGN.md "Camera"): image size from resolution, the basis, and where points land.
+#include "prepare/scene_data.h"
 #include "scene/camera.h"
-#include "scene/scene_data.h"
 #include "shaders/phong.h"
 
 #include <gtest/gtest.h>

@@ -2,10 +2,10 @@
 // pipeline cache and the float probe's answer): used when whole, ignored and replaced when
 // truncated, corrupt or for another device, never a reason for a render to fail, and never a
 // change to the image.
-#include "host/disk_cache.h"
-#include "host/float_probe.h"
 #include "phongvk/phongvk.h"
 #include "test_util.h"
+#include "vulkan/disk_cache.h"
+#include "vulkan/float_probe.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Every file the docs and the code's comments cite exists: a path in the README or docs/
-("scenes/basic.json", `host/gpu_renderer.h`), a path or a file name in a comment
-("(host/gpu_buffers.cpp writeControl)", "edges.h setupEdges"). A file renamed or removed without its
+("scenes/basic.json", `compute/gpu_renderer.h`), a path or a file name in a comment
+("(compute/gpu_buffers.cpp writeControl)", "edges.h setupEdges"). A file renamed or removed without its
 citations fails here, naming each citation. Run by CTest as doc_paths:
 
     python3 tests/doc_paths_test.py [SOURCE_DIR]

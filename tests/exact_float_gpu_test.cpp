@@ -1,15 +1,15 @@
-// The float probe on the device the tests run on (host/float_probe.h): its own division and square
+// The float probe on the device the tests run on (vulkan/float_probe.h): its own division and square
 // root are exact (lavapipe), or the corrected ones are (a GPU with a fused fma), so the renderer can
 // give the reference's bits; and the passes' `_exact` builds compile and render on any device.
-#include "host/context.h"
-#include "host/float_probe.h"
-#include "host/gpu_renderer.h"
+#include "compute/gpu_renderer.h"
 #include "phongvk/compare.h"
+#include "prepare/scene_data.h"
 #include "reference/render_reference.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
-#include "scene/scene_data.h"
 #include "test_util.h"
+#include "vulkan/context.h"
+#include "vulkan/float_probe.h"
 
 #include <gtest/gtest.h>
 

@@ -1,18 +1,18 @@
 // Correctly rounded division and square root (shaders/exact_float.h) and the comparison of the
-// float probe (host/float_probe.h), on the host alone: the corrections are shared maths, so their
+// float probe (vulkan/float_probe.h), on the host alone: the corrections are shared maths, so their
 // C++ build is checked here: from any starting value a few ulps off (what a GPU's division or sqrt
 // may return), they must give the IEEE result. The probe's comparison is checked with planted
 // differences. The device's own probe is exact_float_gpu_test's.
-#include "host/context.h"
-#include "host/float_probe.h"
-#include "host/gpu_renderer.h"
-#include "scene/camera.h"
+#include "compute/gpu_renderer.h"
 #include "phongvk/compare.h"
+#include "prepare/scene_data.h"
 #include "reference/render_reference.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
-#include "scene/scene_data.h"
 #include "shaders/exact_float.h"
 #include "test_util.h"
+#include "vulkan/context.h"
+#include "vulkan/float_probe.h"
 
 #include <gtest/gtest.h>
 

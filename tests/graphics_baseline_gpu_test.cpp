@@ -1,15 +1,15 @@
-// The graphics-pipeline baseline (host/graphics_renderer.h) against the reference. Its coverage and
+// The graphics-pipeline baseline (graphics/graphics_renderer.h) against the reference. Its coverage and
 // depth are the device's own, so the images agree closely but not bit for bit; the bounds on the
 // committed scenes are the agreement measured on lavapipe with a margin (at most a few
 // silhouette pixels differ by more than one level). Flat colours, the background, culling and
 // repeatability are asserted exactly. Every test runs with validation on and fails on a message.
-#include "shaders/gouraud.h"
-#include "host/context.h"
-#include "reference/render_reference.h"
-#include "host/graphics_renderer.h"
-#include "scene/camera.h"
+#include "graphics/graphics_renderer.h"
 #include "phongvk/compare.h"
+#include "reference/render_reference.h"
+#include "scene/camera.h"
+#include "shaders/gouraud.h"
 #include "test_util.h"
+#include "vulkan/context.h"
 
 #include <gtest/gtest.h>
 

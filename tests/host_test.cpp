@@ -1,8 +1,8 @@
 // host_test.cpp — the Vulkan side's logic that needs no device: the device choice and its messages,
 // the list `phongvk devices` prints, VK_CHECK's message, workgroup counts.
-#include "host/context.h"
-#include "host/pipelines.h"
-#include "host/vk_check.h"
+#include "vulkan/context.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/vk_check.h"
 
 #include "tests/test_util.h"
 

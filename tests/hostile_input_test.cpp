@@ -3,12 +3,12 @@
 // devices, mesh files cut short, damaged frames, memory limits set to nonsense, scenes that grow
 // between frames. Each gets a clear error naming the file (or renders where it is legal), in
 // well under a second, and nothing partial is written.
-#include "scene/gltf_import.h"
-#include "scene/memory_estimate.h"
-#include "scene/mesh_file.h"
-#include "scene/scene.h"
+#include "meshio/gltf_import.h"
+#include "meshio/mesh_file.h"
 #include "phongvk/image.h"
 #include "phongvk/phongvk.h"
+#include "prepare/memory_estimate.h"
+#include "scene/scene.h"
 
 #include <gtest/gtest.h>
 

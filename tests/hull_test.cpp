@@ -1,7 +1,7 @@
 // hull_test.cpp — `polyhedron` objects: the convex hull of their points (hull.h), its corners,
 // faces and the errors for points that span no volume.
-#include "scene/hull.h"
-#include "scene/mesh.h"
+#include "geometry/hull.h"
+#include "scene/object_mesh.h"
 #include "tests/mesh_checks.h"
 
 #include <gtest/gtest.h>

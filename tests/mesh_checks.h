@@ -2,7 +2,7 @@
 // suites (primitives_test, hull_test, obj_import_test): watertight, wound outward, unit normals.
 #pragma once
 
-#include "scene/mesh.h"
+#include "scene/object_mesh.h"
 
 #include <gtest/gtest.h>
 

@@ -5,9 +5,10 @@
 // files failing with the scene file, the JSON path and the mesh file named.
 #include <phongvk/phongvk.h>
 
-#include "scene/mesh_file.h"
-#include "scene/mesh_import.h"
-#include "scene/polygon.h"
+#include "geometry/polygon.h"
+#include "meshio/mesh_file.h"
+#include "meshio/mesh_import.h"
+#include "scene/object_mesh.h"
 #include "tests/test_util.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // obj_import_test.cpp — `mesh` objects from OBJ files (obj_import.h): normals kept or computed,
 // subdivision, numbers in every form, and errors naming the JSON path, the file and the line.
-#include "scene/mesh.h"
+#include "scene/object_mesh.h"
 #include "tests/mesh_checks.h"
 #include "tests/test_util.h"
 

@@ -8,10 +8,10 @@
 //   scripts/repin.sh        (or: PHONGVK_REPIN=1 build/tests/pinned_images_gpu_test)
 //
 // and commit the new file with the change that moved it.
-#include "host/disk_cache.h"
 #include "phongvk/compare.h"
 #include "phongvk/phongvk.h"
 #include "test_util.h"
+#include "vulkan/disk_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -106,7 +106,7 @@ std::string hex(uint64_t value) {
   return text;
 }
 
-// The hashes of one render: FNV-1a 64 (host/disk_cache.h) of the RGB bytes, and of the keys as
+// The hashes of one render: FNV-1a 64 (vulkan/disk_cache.h) of the RGB bytes, and of the keys as
 // little-endian u64s (depth bits and triangle ids, one per sample).
 struct PinHashes {
   std::string image;

@@ -1,6 +1,6 @@
 // polygon_test.cpp — polygons of mesh files cut into triangles (polygon.h): concave ones exactly as
 // ear clipping cuts them, and self-intersecting ones of many corners in bounded time.
-#include "scene/polygon.h"
+#include "geometry/polygon.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // primitives_test.cpp — the primitive shapes (primitives.h), subdivision on the true surface
 // (subdivide.h), vertex normals (normals.h) and the huge-page arrays: counts, watertightness,
 // winding, normals, errors.
-#include "memory/huge_pages.h"
-#include "scene/mesh.h"
-#include "scene/normals.h"
+#include "base/huge_pages.h"
+#include "geometry/normals.h"
+#include "scene/object_mesh.h"
 #include "tests/mesh_checks.h"
 
 #include <gtest/gtest.h>

@@ -1,13 +1,13 @@
 // Every committed scene rendered by the Vulkan port and diffed against the reference: the same
 // visibility key and the same RGB bytes at every pixel, in both work layouts and both colour
 // outputs, on every run, and no validation message.
-#include "host/context.h"
-#include "host/float_probe.h"
-#include "reference/render_reference.h"
-#include "host/gpu_renderer.h"
-#include "scene/camera.h"
+#include "compute/gpu_renderer.h"
 #include "phongvk/compare.h"
+#include "reference/render_reference.h"
+#include "scene/camera.h"
 #include "test_util.h"
+#include "vulkan/context.h"
+#include "vulkan/float_probe.h"
 
 #include <gtest/gtest.h>
 

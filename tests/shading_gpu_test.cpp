@@ -3,8 +3,7 @@
 // reference's keys and bytes on the compute port, through the public API as users call it, and
 // each mode shows what it is for (a highlight inside a large triangle, one colour per triangle,
 // anti-aliased edges).
-#include "host/context.h"
-#include "host/gpu_renderer.h"
+#include "compute/gpu_renderer.h"
 #include "phongvk/compare.h"
 #include "phongvk/contact_sheet.h"
 #include "phongvk/phongvk.h"
@@ -12,6 +11,7 @@
 #include "scene/camera.h"
 #include "scene/scene.h"
 #include "test_util.h"
+#include "vulkan/context.h"
 
 #include <gtest/gtest.h>
 

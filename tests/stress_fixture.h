@@ -3,15 +3,15 @@
 // both renderers and checking the stress contract (finite vertices, the same keys and bytes).
 #pragma once
 
-#include "shaders/depth.h"
-#include "host/context.h"
-#include "host/gpu_renderer.h"
+#include "compute/gpu_renderer.h"
 #include "phongvk/compare.h"
+#include "prepare/scene_data.h"
 #include "reference/render_reference.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
-#include "scene/scene_data.h"
+#include "shaders/depth.h"
 #include "tests/test_util.h"
+#include "vulkan/context.h"
 
 #include <gtest/gtest.h>
 

@@ -5,17 +5,17 @@
 //   - the same keys and the same image bytes,
 //   - not one validation-layer message.
 // Each case prints one "stress:" line with its measured diff, for the record.
+#include "phongvk/compare.h"
+#include "prepare/scene_data.h"
+#include "reference/render_reference.h"
+#include "scene/camera.h"
+#include "scene/scene.h"
 #include "shaders/depth.h"
 #include "shaders/phong.h"
-#include "scene/camera.h"
-#include "phongvk/compare.h"
-#include "reference/render_reference.h"
-#include "scene/scene.h"
-#include "scene/scene_data.h"
 
 #include "stress_geometry.h"
-#include "tests/stress_fixture.h"
 #include "test_util.h"
+#include "tests/stress_fixture.h"
 
 #include <gtest/gtest.h>
 

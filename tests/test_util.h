@@ -1,7 +1,7 @@
 // test_util.h — small helpers shared by the test suites.
 #pragma once
 
-#include "scene/scene_data.h"
+#include "prepare/scene_data.h"
 
 #include <gtest/gtest.h>
 

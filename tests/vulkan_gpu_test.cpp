@@ -1,10 +1,10 @@
 // vulkan_gpu_test.cpp — the Vulkan foundation: context, device choice, buffers, pipelines,
 // 64-bit atomics, timestamps. Every test runs with validation on and fails on any message.
-#include "host/submit.h"
-#include "host/context.h"
-#include "host/pipelines.h"
-#include "host/resources.h"
-#include "host/vk_check.h"
+#include "vulkan/context.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/resources.h"
+#include "vulkan/submit.h"
+#include "vulkan/vk_check.h"
 
 #include <cstdint>  // the generated SPIR-V header uses uint32_t without including it
 #include "shaders/selftest_atomic64.spv.h"

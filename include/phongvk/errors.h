@@ -43,7 +43,7 @@ class PHONGVK_API RangeError : public ArgumentError {
 };
 
 // The device cannot render what was asked (a buffer or loop limit a scene exceeds, a format it
-// lacks), or a Vulkan call failed (host/vk_check.h VulkanError, which names the call and result).
+// lacks), or a Vulkan call failed (vulkan/vk_check.h VulkanError, which names the call and result).
 class PHONGVK_API DeviceError : public Error {
  public:
   using Error::Error;

@@ -1,0 +1,245 @@
+// gpu_buffers.cpp — the compute port's buffers: the scene uploaded once, the per-pixel and
+// per-bin buffers sized to the image, the large triangles' lists grown when a frame needs more,
+// the descriptor set over all of them, and each frame's uploads of only what changed.
+#include "compute/gpu_renderer.h"
+
+#include "shaders/large_triangles.h"
+#include "vulkan/vk_check.h"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+namespace phongvk {
+
+using namespace gpu;
+
+namespace {
+
+constexpr VkBufferUsageFlags STORAGE = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+uint32_t binsAcross(uint32_t pixels) { return groupCount(pixels, BIN_SIZE); }
+
+// Throws when one array would exceed the device's largest storage buffer binding.
+void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
+  checkDeviceLimit(context, what, bytes, "bytes", "maxStorageBufferRange",
+                   context.properties.limits.maxStorageBufferRange);
+}
+
+// Throws when a texel view would exceed the device's largest texel buffer.
+void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* what) {
+  checkDeviceLimit(context, what, texels, "texels", "maxTexelBufferElements",
+                   context.properties.limits.maxTexelBufferElements);
+}
+
+// Throws, before anything is allocated, when one of the scene's arrays exceeds a device limit:
+// arrays the passes only read are bound as texels alone (maxStorageBufferRange does not apply to
+// them); the shaded vertices and the clip list are written as storage buffers.
+void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
+  auto texels = [&](VkDeviceSize bytes, const char* what) { checkTexels(context, bytes / TEXEL_BYTES, what); };
+  texels(data.vertices.size() * sizeof(VertexIn), "the vertices");
+  texels(data.triangles.size() * sizeof(glm::uvec4), "the triangles");
+  texels(data.objects.size() * sizeof(ObjectData), "the objects");
+  texels(data.materials.size() * sizeof(MaterialData), "the materials");
+  texels(data.lights.size() * sizeof(LightData), "the lights");
+  checkFits(context, data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");  // and colours
+  texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");
+  checkFits(context, sizeof(IdList) + data.triangles.size() * sizeof(uint32_t), "the clip list");
+}
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// Uploads `next` into `buffer` unless it equals what was sent last time; true if it changed.
+template <typename T>
+bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::vector<T>& next, std::vector<T>& last,
+                     const char* what) {
+  if (sameBytes(next, last)) return false;
+  if (next.size() != last.size() && !last.empty()) {
+    throw ArgumentError(std::string("a frame may not change the number of ") + what);
+  }
+  if (!next.empty()) uploadToBuffer(context, buffer, next.data(), next.size() * sizeof(T));
+  last = next;
+  return true;
+}
+
+}  // namespace
+
+void GpuRenderer::checkSceneFits(const SceneData& data) const { checkSceneFitsDevice(context_, data); }
+
+// The buffers whose size does not depend on the scene or the image.
+void GpuRenderer::createFrameBuffers() {
+  createBuffer(frameBuffer_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
+  createBuffer(controlBuffer_, context_, sizeof(PassControl), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+               MemoryKind::HostVisible);
+  createBuffer(status_, context_, sizeof(FrameStatus), STORAGE, MemoryKind::HostVisible);
+}
+
+// The scene's buffers, made anew (the caller has checked that it fits: checkSceneFits).
+void GpuRenderer::uploadScene(const SceneData& data) {
+  vertexCount_ = static_cast<uint32_t>(data.vertices.size());
+  triangleCount_ = static_cast<uint32_t>(data.triangles.size());
+  createTexelBuffer(vertices_, context_, data.vertices, MemoryKind::DeviceLocal);
+  createTexelBuffer(triangles_, context_, data.triangles, MemoryKind::DeviceLocal);
+  // Objects (eye offsets), materials and lights may change per frame: small and host visible.
+  createTexelBuffer(objects_, context_, data.objects, MemoryKind::HostVisible);
+  createTexelBuffer(materials_, context_, data.materials, MemoryKind::HostVisible);
+  createTexelBuffer(lights_, context_, data.lights, MemoryKind::HostVisible);
+  lastObjects_ = data.objects;
+  lastMaterials_ = data.materials;
+  lastLights_ = data.lights;
+  // Written by the shade pass as storage buffers, read by the others as texels.
+  const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
+  createTexelBuffer(shadedPositions_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(shadedColors_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
+  createBuffer(clipList_, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+}
+
+void GpuRenderer::releaseScene() {
+  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shadedPositions_, &shadedColors_}) {
+    destroyTexelBuffer(*t, context_);
+  }
+  destroyBuffer(clipList_, context_);
+}
+
+// New keys are cleared by the first frame (keysDirty_). Where the host reads the colours from the
+// key slots it resets them as it goes, so the next frame need not clear the key buffer; elsewhere
+// (the pack pass, frames with keys, frames rendered again) the next frame clears it with one fill,
+// which on a GPU is cheaper than resetting the slots from the passes.
+void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
+  if (width == width_ && height == height_) return;
+  const VkDeviceSize pixels = VkDeviceSize(width) * height;
+  const VkDeviceSize bins = VkDeviceSize(binsAcross(width)) * binsAcross(height);
+  checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
+  for (Buffer* b : {&keys_, &bins_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
+  createLargeBuffersFor(pixels);
+  // With the colours in the key slots the host reads and resets the keys in place (Shared memory).
+  createBuffer(keys_, context_, pixels * sizeof(uint64_t),
+               STORAGE | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+               colorsInKeys_ ? MemoryKind::Shared : MemoryKind::DeviceLocal);
+  createBuffer(bins_, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
+               STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+  keysDirty_ = true;  // the first frame clears the new keys
+  width_ = width;
+  height_ = height;
+  ensureColorBuffer(!colorsInKeys_);  // updates the descriptors
+}
+
+// The colour buffer: the whole image when resolve writes colours there (ColorOutput::ColorBuffer,
+// or a frame with keys), else 4 bytes that only keep its descriptor valid. The pack pass (or, in
+// frames with keys, resolve) writes the colours straight into host-visible memory, where the host
+// reads them in place: no device copy.
+void GpuRenderer::ensureColorBuffer(bool wholeImage) {
+  // RGB bytes, rounded up to whole words for the background and pack passes.
+  const VkDeviceSize bytes = wholeImage ? (3 * VkDeviceSize(width_) * height_ + 3) / 4 * 4 : sizeof(uint32_t);
+  if (colors_.buffer != VK_NULL_HANDLE && colors_.size >= bytes) return;
+  destroyBuffer(colors_, context_);
+  createBuffer(colors_, context_, bytes, STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::HostVisible);
+  updateDescriptors();
+}
+
+// The large triangles' lists for an image of `pixels` and the scene's triangles: they grow with the
+// image (gpu_layout.h LARGE_*), and further when a frame needs more (prepareRetry).
+void GpuRenderer::createLargeBuffersFor(VkDeviceSize pixels) {
+  createLargeBuffers(uint32_t(std::max<VkDeviceSize>(LARGE_ENTRIES_MIN, pixels / LARGE_ENTRY_PIXELS)),
+                     std::min<uint32_t>(std::max(triangleCount_, 1u),
+                                        uint32_t(std::max<VkDeviceSize>(LARGE_SETUPS_MIN, pixels / LARGE_SETUP_PIXELS))));
+}
+
+// Room for `entries` bin entries and `setups` set-up records of large triangles, replacing any
+// there was. Both are written as storage buffers and read by resolve as texels (an entry is one
+// texel). Throws, naming the limit, when they would pass the device's.
+void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
+  const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(entries) * sizeof(LargeEntry);
+  const VkDeviceSize setupBytes = VkDeviceSize(setups) * sizeof(LargeSetup);
+  checkFits(context_, largeBytes, "the large triangles' bin entries");
+  checkFits(context_, setupBytes, "the large triangles' set-ups");
+  checkTexels(context_, largeBytes / TEXEL_BYTES, "the large triangles' bin entries");
+  checkTexels(context_, setupBytes / TEXEL_BYTES, "the large triangles' set-ups");
+  destroyTexelBuffer(large_, context_);
+  destroyTexelBuffer(largeSetups_, context_);
+  createTexelBuffer(large_, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(largeSetups_, context_, nullptr, setupBytes, STORAGE, MemoryKind::DeviceLocal);
+  largeCapacity_ = entries;
+  largeSetupCapacity_ = setups;
+}
+
+// One descriptor set for every pass, written from the buffers each binding of shared.h's table
+// names. Identically defined set layouts are compatible, so the raster pass's serves all.
+void GpuRenderer::updateDescriptors() {
+  if (set_ != VK_NULL_HANDLE) {
+    VK_CHECK(vkResetDescriptorPool(context_.device, arena_.pool, 0));
+  }
+  const BufferDescriptor descriptors[] = {
+      bufferDescriptor(BINDING_FRAME, frameBuffer_),
+      bufferDescriptor(BINDING_CONTROL, controlBuffer_),
+      texelDescriptor(BINDING_VERTICES, vertices_),
+      texelDescriptor(BINDING_TRIANGLES, triangles_),
+      texelDescriptor(BINDING_OBJECTS, objects_),
+      texelDescriptor(BINDING_MATERIALS, materials_),
+      texelDescriptor(BINDING_LIGHTS, lights_),
+      texelDescriptor(BINDING_SHADED, shadedPositions_),
+      texelDescriptor(BINDING_SHADED_TEXELS, shadedPositions_),
+      texelDescriptor(BINDING_SHADED_COLORS, shadedColors_),
+      texelDescriptor(BINDING_SHADED_COLOR_TEXELS, shadedColors_),
+      bufferDescriptor(BINDING_KEYS, keys_),
+      bufferDescriptor(BINDING_COLOR, colors_),
+      texelDescriptor(BINDING_LARGE, large_),
+      texelDescriptor(BINDING_LARGE_TEXELS, large_),
+      bufferDescriptor(BINDING_BINS, bins_),
+      texelDescriptor(BINDING_LARGE_SETUPS, largeSetups_),
+      texelDescriptor(BINDING_LARGE_SETUP_TEXELS, largeSetups_),
+      bufferDescriptor(BINDING_CLIP_LIST, clipList_),
+      bufferDescriptor(BINDING_STATUS, status_),
+  };
+  static_assert(std::size(descriptors) == std::size(SHARED_BINDINGS), "every binding of the table is written");
+  set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
+}
+
+// Sends only what changed since the last frame: the scene's frame as makeFrame built it, the
+// objects, materials and lights where they differ, and the pass control (writeControl). Vertex
+// colours are recomputed only when their inputs changed: materials, lights, ambient, the shading
+// mode or specular model, or the eye when some material is specular.
+void GpuRenderer::uploadFrame(const FrameInputs& in) {
+  const bool materialsChanged = uploadIfChanged(context_, materials_.buffer, in.materials, lastMaterials_, "materials");
+  const bool lightsChanged = uploadIfChanged(context_, lights_.buffer, in.lights, lastLights_, "lights");
+  const bool objectsChanged = uploadIfChanged(context_, objects_.buffer, in.objects, lastObjects_, "objects");
+  const FrameData& f = in.frame;
+  // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
+  const bool positionsStale = !framesSent_ || objectsChanged || f.right != frame_.right || f.up != frame_.up ||
+                              f.forward != frame_.forward || f.focal != frame_.focal;
+  const bool eyeMoved = !framesSent_ || f.eye != frame_.eye;
+  const bool ambientChanged = !framesSent_ || f.ambient != frame_.ambient;
+  // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.
+  const bool modelChanged = !framesSent_ || f.shading != frame_.shading || f.specular != frame_.specular;
+  const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged || modelChanged ||
+                           (eyeMoved && !lightingIsViewIndependent(in));
+  frame_ = f;
+  uploadToBuffer(context_, frameBuffer_, &frame_, sizeof(FrameData));
+  frameColorsInKeys_ = colorsInKeys_ && !withKeys_;
+  control_.shadeColors = colorsStale ? 1u : 0u;
+  control_.shadePositions = positionsStale ? 1u : 0u;
+  writeControl();
+  ++framesSent_;
+  framesShaded_ += colorsStale;
+  framesTransformed_ += positionsStale;
+}
+
+// The pass control for the frame being rendered, from the renderer's buffers, image and workgroup
+// cap (which prepareRetry grows) and the shade flags uploadFrame or prepareRetry set; uploaded.
+void GpuRenderer::writeControl() {
+  control_.vertexCount = vertexCount_;
+  control_.triangleCount = triangleCount_;
+  control_.largeCapacity = largeCapacity_;
+  control_.largeSetupCapacity = largeSetupCapacity_;
+  control_.binsX = binsAcross(width_);
+  control_.binCount = binsAcross(width_) * binsAcross(height_);
+  control_.groupCap = groupCap_;
+  control_.loopProbe = LOOP_PROBE_ITERATIONS;
+  uploadToBuffer(context_, controlBuffer_, &control_, sizeof(PassControl));
+}
+
+}  // namespace phongvk

@@ -1,0 +1,165 @@
+// gpu_pipelines.cpp — which passes a frame runs and with which specialization constants, compiled
+// once each, in parallel, and kept in the renderer's pipeline set (GpuPipelineSet).
+#include "compute/gpu_renderer.h"
+
+#include "shaders/bin_large.spv.h"
+#include "shaders/bin_large_exact.spv.h"
+#include "shaders/clip_triangles.spv.h"
+#include "shaders/clip_triangles_exact.spv.h"
+#include "shaders/fill_background.spv.h"
+#include "shaders/fill_background_exact.spv.h"
+#include "shaders/pack_colors.spv.h"
+#include "shaders/pack_colors_exact.spv.h"
+#include "shaders/raster_triangles.spv.h"
+#include "shaders/raster_triangles_exact.spv.h"
+#include "shaders/resolve_large.spv.h"
+#include "shaders/resolve_large_exact.spv.h"
+#include "shaders/resolve_large_keys.spv.h"
+#include "shaders/resolve_large_keys_exact.spv.h"
+#include "shaders/resolve_lit.spv.h"
+#include "shaders/resolve_lit_exact.spv.h"
+#include "shaders/resolve_small.spv.h"
+#include "shaders/resolve_small_exact.spv.h"
+#include "shaders/shade_vertices.spv.h"
+#include "shaders/shade_vertices_exact.spv.h"
+
+#include "vulkan/pipeline_cache.h"
+
+#include <chrono>
+#include <exception>
+#include <future>
+
+namespace phongvk {
+
+using namespace gpu;
+
+namespace {
+
+struct ShaderCode {
+  const uint32_t* spirv;
+  size_t bytes;
+};
+
+#define SHADER(name) {spirv_##name, sizeof(spirv_##name)}
+
+// Per pass (GpuRenderer::Pass order): the build with the device's own division and sqrt, and the
+// `_exact` build that corrects them (shaders/exact_float.h), for devices whose own are off.
+constexpr ShaderCode SHADERS[][2] = {
+    {SHADER(shade_vertices), SHADER(shade_vertices_exact)},
+    {SHADER(raster_triangles), SHADER(raster_triangles_exact)},
+    {SHADER(clip_triangles), SHADER(clip_triangles_exact)},
+    {SHADER(resolve_small), SHADER(resolve_small_exact)},
+    {SHADER(resolve_large), SHADER(resolve_large_exact)},
+    {SHADER(bin_large), SHADER(bin_large_exact)},
+    {SHADER(fill_background), SHADER(fill_background_exact)},
+    {SHADER(pack_colors), SHADER(pack_colors_exact)},
+    {SHADER(resolve_lit), SHADER(resolve_lit_exact)},
+    {SHADER(resolve_large_keys), SHADER(resolve_large_keys_exact)},
+};
+
+#undef SHADER
+
+// The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
+std::vector<SpecConstant> shadeSpecs(const std::vector<MaterialData>& materials, size_t lightCount) {
+  bool specular = false, constantAttenuation = true;
+  for (const MaterialData& m : materials) {
+    specular = specular || m.ks != 0.0f;
+    constantAttenuation = constantAttenuation && m.attenuation.y == 0.0f && m.attenuation.z == 0.0f;
+  }
+  return {{SPEC_LIGHT_COUNT, uint32_t(lightCount)}, {SPEC_SPECULAR, specular}, {SPEC_CONSTANT_ATTENUATION, constantAttenuation}};
+}
+
+// A set serves renderers of one build (exact or not) in practice; the key says which all the same.
+std::vector<uint32_t> pipelineKey(uint32_t pass, bool exact, const std::vector<SpecConstant>& specs) {
+  std::vector<uint32_t> key = {pass, exact};
+  for (const SpecConstant& s : specs) key.insert(key.end(), {s.id, s.value});
+  return key;
+}
+
+}  // namespace
+
+// Compiles the requested pipelines not compiled before, all at once on threads of their own (a
+// CPU device compiles each on the calling thread: ~30-40 ms apiece for the raster, clip and
+// large-resolve passes on lavapipe), and keeps them: a sequence that toggles a feature (a ks
+// sweep through 0) compiles each variant once. Every thread is joined before any error is rethrown.
+// New pipelines go into the pipeline cache on disk (pipeline_cache.h).
+void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::pair<std::vector<uint32_t>, std::future<ComputePipeline>>> pending;
+  for (const PipelineRequest& r : requests) {
+    std::vector<uint32_t> key = pipelineKey(r.shader(), exactFloats_, r.specs);
+    if (pipelines_->byKey_.count(key) != 0) continue;
+    const ShaderCode code = SHADERS[r.shader()][exactFloats_ ? 1 : 0];
+    pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
+                           return createComputePipeline(context_, code.spirv, code.bytes, SHARED_BINDINGS, 0, specs);
+                         }));
+  }
+  std::exception_ptr failure;
+  for (auto& [key, compiled] : pending) {
+    try {
+      pipelines_->byKey_[key] = compiled.get();
+    } catch (...) {
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  if (pending.empty()) return;
+  savePipelineCache(context_);
+  pipelines_->compileMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The pipeline compilePipelines made for `request`.
+const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) const {
+  return pipelines_->byKey_.at(pipelineKey(request.shader(), exactFloats_, request.specs));
+}
+
+// Every pass's pipeline for frames with these materials and lights and the frame's interpolation,
+// shading and specular model, and the resolve passes for the bins' lists taken in chunks once a
+// frame needed it (listChunk_). Frames
+// with keys (for diffs) compile their own resolve pipelines when first asked for: resolve keeps
+// the final keys and writes the colour buffer (RESOLVE_OUTPUT_KEEP_KEYS) after the background
+// pass. Without keys the colours go to the key slots, where the host reads them (colorsInKeys_) or
+// the pack pass packs them into the colour buffer.
+std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::vector<MaterialData>& materials,
+                                                                   size_t lightCount, const FrameData& frame,
+                                                                   bool withKeys) const {
+  const uint32_t output = withKeys ? RESOLVE_OUTPUT_KEEP_KEYS : RESOLVE_OUTPUT_KEY_SLOTS;
+  const uint32_t interpolation = frame.interpolation;
+  std::vector<PipelineRequest> requests = {
+      {SHADE, shadeSpecs(materials, lightCount)},
+      {RASTER, {}},
+      {CLIP, {{SPEC_BIN_PASS, binPass_}}},
+      {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_OUTPUT, output}}},
+      {RESOLVE_LARGE,
+       {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
+  };
+  // Only where they differ from the defaults: a Gouraud frame of whole lists keeps the pipelines
+  // (and pipeline cache entries) it always had. requests[p] is pass p's request up to RESOLVE_LARGE.
+  if (listChunk_ != 0u || frame.shading != SHADING_GOURAUD) requests[RESOLVE_LARGE].code = RESOLVE_LARGE_KEYS;
+  if (listChunk_ != 0u) {
+    for (Pass pass : {RESOLVE_SMALL, RESOLVE_LARGE}) requests[pass].specs.push_back({SPEC_LIST_CHUNK, listChunk_});
+  }
+  if (frame.shading != SHADING_GOURAUD) {  // lit per pixel: resolve_lit as the second resolve, with the lights
+    requests[RESOLVE_SMALL].code = RESOLVE_LIT;
+    const std::vector<SpecConstant> lighting = shadeSpecs(materials, lightCount);
+    requests[RESOLVE_SMALL].specs.insert(requests[RESOLVE_SMALL].specs.end(), lighting.begin(), lighting.end());
+    for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_SHADING, frame.shading});
+  }
+  if (frame.specular == SPECULAR_BLINN) {
+    for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_BLINN, 1u});
+  }
+  if (binPass_) requests.push_back({BIN_LARGE, {}});
+  if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background
+  if (packsColors(withKeys)) requests.push_back({PACK, {}});
+  return requests;
+}
+
+bool GpuRenderer::packsColors(bool withKeys) const { return !withKeys && !colorsInKeys_; }
+
+void GpuRenderer::selectPipelines(const FrameInputs& in) {
+  const std::vector<PipelineRequest> requests = requestsFor(in.materials, in.lights.size(), in.frame, withKeys_);
+  compilePipelines(requests);
+  for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);
+}
+
+}  // namespace phongvk

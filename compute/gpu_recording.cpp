@@ -1,0 +1,98 @@
+// gpu_recording.cpp — one frame's command buffer: reset the lists, then the passes in order
+// (shade, triangle, clip, bin, resolve large then small, pack), each dispatch capped at the
+// workgroup cap and separated by barriers, with timestamps between the stages (PassTimes).
+#include "compute/gpu_renderer.h"
+
+#include <algorithm>
+
+namespace phongvk {
+
+using namespace gpu;
+
+namespace {
+
+// The colour buffer's words: the background and pack passes' work items (an invocation each).
+uint32_t colorWords(uint32_t width, uint32_t height) { return groupCount(3 * width * height, 4); }
+
+}  // namespace
+
+void GpuRenderer::bindPass(VkCommandBuffer cmd, Pass pass) const {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].layout, 0, 1, &set_, 0, nullptr);
+}
+
+void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
+  resetTimestamps(cmd, timestamps_);
+  if (keysDirty_) vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
+  const VkDeviceSize binBytes = VkDeviceSize(control_.binCount) * sizeof(uint32_t);
+  vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList), binBytes, 0u);                   // no flags
+  vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList) + binBytes, binBytes, LIST_END);  // empty lists
+  const BinList noBins = {0, 0, 1, 1};
+  vkCmdUpdateBuffer(cmd, bins_.buffer, 0, sizeof noBins, &noBins);
+  const LargeList emptyList = {0, 0, 0, 0};
+  vkCmdUpdateBuffer(cmd, large_.buffer.buffer, 0, sizeof emptyList, &emptyList);
+  const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0};
+  vkCmdUpdateBuffer(cmd, clipList_.buffer, 0, sizeof noClipping, &noClipping);
+  transferToComputeBarrier(cmd);
+
+  auto bind = [&](Pass pass) { bindPass(cmd, pass); };
+  writeTimestamp(cmd, timestamps_, 0);
+  const uint32_t cap = control_.groupCap;
+  const uint32_t words = colorWords(frame_.width, frame_.height);
+  if (withKeys_) {  // untouched bins are not resolved: their pixels keep this fill
+    bind(FILL);
+    vkCmdDispatch(cmd, std::min(groupCount(words, FILL_GROUP_SIZE), cap), 1, 1);
+  }
+  if (control_.shadeColors != 0u || control_.shadePositions != 0u) {  // else last frame's still hold
+    bind(SHADE);
+    vkCmdDispatch(cmd, std::min(groupCount(vertexCount_, SHADE_GROUP_SIZE), cap), 1, 1);
+    computeBarrier(cmd);
+  }
+  writeTimestamp(cmd, timestamps_, 1);
+  bind(RASTER);
+  vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
+  computeBarrier(cmd);
+  bind(CLIP);
+  vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, groupsX));
+  computeBarrier(cmd);
+  if (binPass_) {
+    bind(BIN_LARGE);
+    vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, binGroupsX));
+    computeBarrier(cmd);
+  }
+  writeTimestamp(cmd, timestamps_, 2);
+  recordResolveLargeRound(cmd);
+  if (listChunk_ == 0u) recordResolveTail(cmd);  // else after the rounds (renderAttempt)
+}
+
+// Resolve over the touched bins (indirect): the large triangles, all of them or (listChunk_) the
+// next chunk of each bin's list.
+void GpuRenderer::recordResolveLargeRound(VkCommandBuffer cmd) {
+  bindPass(cmd, RESOLVE_LARGE);
+  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+  computeBarrier(cmd);
+}
+
+// The rest of the frame after resolve_large: small reads the keys large left, then the pack pass
+// and, for diffs, the keys' copy. The barrier after each dispatch also keeps lavapipe from writing
+// the next timestamp before the dispatch ends.
+void GpuRenderer::recordResolveTail(VkCommandBuffer cmd) {
+  bindPass(cmd, RESOLVE_SMALL);
+  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+  computeBarrier(cmd);
+  if (packsColors(withKeys_)) {  // the colours from the key slots into the colour buffer
+    bindPass(cmd, PACK);
+    vkCmdDispatch(cmd, std::min(groupCount(colorWords(frame_.width, frame_.height), PACK_GROUP_SIZE), control_.groupCap),
+                  1, 1);
+    computeBarrier(cmd);
+  }
+  writeTimestamp(cmd, timestamps_, 3);
+  if (withKeys_) {  // resolve left the final keys: copy them; the next frame clears them
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferCopy keyCopy = {0, 0, VkDeviceSize(frame_.width) * frame_.height * sizeof(uint64_t)};
+    vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
+  }
+}
+
+}  // namespace phongvk

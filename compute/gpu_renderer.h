@@ -1,0 +1,226 @@
+// gpu_renderer.h — the Vulkan compute port: per-vertex Phong, 64-bit atomic-depth raster and
+// Gouraud resolve (docs/DESIGN.md "GPU pipeline shape"). The scene is uploaded once; each frame sends
+// only the camera-dependent data (FrameInputs).
+#pragma once
+
+#include "phongvk/image.h"
+#include "prepare/scene_data.h"
+#include "shaders/gpu_layout.h"
+#include "vulkan/context.h"
+#include "vulkan/pipelines.h"
+#include "vulkan/resources.h"
+#include "vulkan/submit.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace phongvk {
+
+// Device time per pass of the last frame, in milliseconds (NaN when the device has no timestamps).
+struct PassTimes {
+  double shade = 0;    // vertex shading, and in frames with keys the colour buffer's background fill
+  double raster = 0;   // triangle, clip and bin passes: setup, culling, clipping, small triangles
+  double resolve = 0;  // large triangles (binned), then colours (and a GPU's pack pass)
+  double total = 0;
+};
+
+// How the passes lay their work out for the device. Cpu: a resolve workgroup takes one 8x8 tile
+// (8 lanes per tile), so a CPU device's 8-wide SIMD batch is a whole workgroup and per-tile work
+// runs once per tile; the clip pass links each large triangle into its bins' lists itself (a loop
+// per invocation runs at CPU speed). Gpu: eight tiles per resolve workgroup, so a GPU's warps are
+// full, and the bin pass (bin_large.comp) links each (large triangle, bin) pair on an invocation
+// of its own: one GPU thread walking a screen-filling triangle's bins took 11 ms on an H100. Auto
+// picks by device type; tests force either on any device. Both give the same image and keys.
+enum class WorkLayout { Auto, Cpu, Gpu };
+
+// Where resolve leaves the colours. InKeySlots: each in its pixel's 64-bit key slot, which the host
+// reads in place and resets (8 bytes per pixel in all; needs MemoryKind::Shared memory, as a CPU
+// or integrated device has). ColorBuffer: in the key slots too, then packed by the pack pass into a
+// host-visible colour buffer of RGB bytes, the image's own layout (11 bytes per pixel). Auto picks InKeySlots where
+// the device has shared memory. Frames rendered with keys (for diffs) always use the colour buffer.
+// Tests force either.
+enum class ColorOutput { Auto, InKeySlots, ColorBuffer };
+
+// The compute port's pipelines, by pass, specialization and build (`_exact` or not): compiled once
+// and kept for as long as whoever holds them. A renderer keeps its own unless given a set; the
+// public Renderer gives every GpuRenderer it makes one set, so a new geometry (a new GpuRenderer:
+// its buffers and descriptors) compiles no pipeline again.
+class GpuPipelineSet {
+ public:
+  explicit GpuPipelineSet(const VulkanContext& context) : context_(context) {}
+  ~GpuPipelineSet();
+  GpuPipelineSet(const GpuPipelineSet&) = delete;
+  GpuPipelineSet& operator=(const GpuPipelineSet&) = delete;
+
+  const VulkanContext& context() const { return context_; }
+  // Time spent compiling the set's pipelines so far.
+  double compileMs() const { return compileMs_; }
+
+ private:
+  friend class GpuRenderer;  // compiles into it (gpu_pipelines.cpp)
+  const VulkanContext& context_;
+  std::map<std::vector<uint32_t>, ComputePipeline> byKey_;
+  double compileMs_ = 0;
+};
+
+struct GpuRendererOptions {
+  WorkLayout layout = WorkLayout::Auto;
+  ColorOutput output = ColorOutput::Auto;
+  // The most workgroups a pass launches until a frame runs out of loop iterations (0: the
+  // device's); tests start low to exercise the retry with more (render).
+  uint32_t firstGroupCap = 0;
+  // Entries of each bin's large-triangle list resolve takes per round from the first frame on (0:
+  // whole lists until a frame runs out of loop iterations); tests force rounds on any scene.
+  uint32_t firstListChunk = 0;
+  // The passes' `_exact` builds, which correct the device's division and square root: what
+  // probeFloatOps(context).useExact() says for the device (vulkan/float_probe.h). Unset, the
+  // renderer runs the probe itself; a caller that builds several renderers probes once and says.
+  std::optional<bool> exactFloats;
+  // Pipelines to compile into and take from (made on the same context); none: the renderer's own.
+  std::shared_ptr<GpuPipelineSet> pipelines;
+};
+
+class GpuRenderer {
+ public:
+  // Uploads the scene's vertices, triangles and materials. Throws std::runtime_error when the
+  // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
+  GpuRenderer(const VulkanContext& context, const SceneData& data, const GpuRendererOptions& options = {});
+  ~GpuRenderer();
+  GpuRenderer(const GpuRenderer&) = delete;
+  GpuRenderer& operator=(const GpuRenderer&) = delete;
+
+  // Renders one frame. withKeys also reads back the per-pixel visibility keys (for diffs). A frame
+  // whose large triangles found no room in their lists, or whose passes ran out of the device's
+  // loop iterations (lavapipe), is rendered again with larger lists or more workgroups; throws
+  // std::runtime_error, naming the limit, when neither can grow further. The image is read into
+  // `storage`'s pixels (reused when large enough, so a loop of frames allocates none).
+  RenderOutput render(const FrameInputs& in, bool withKeys = false, Image storage = {});
+
+  // Another scene (a new geometry, or other material or light counts) in place of the uploaded
+  // one: its buffers are made anew and the pipelines it needs compiled (none that the pipeline set
+  // has), while the image's buffers, the descriptor arena, the timestamps and the pipelines stay.
+  // The next frame renders as a fresh renderer's first would: everything sent and shaded, the
+  // workgroup cap and list chunks as the options set them. Throws as the constructor; after a
+  // throw the renderer must not render again.
+  void replaceScene(const SceneData& data);
+
+  // Frames rendered again so far (render), for tests and the benchmark.
+  uint64_t framesRepeated() const { return framesRepeated_; }
+  // 0, or how many entries of each bin's large-triangle list resolve takes per round since a frame
+  // had lists too long for the device's loop budget (gpu_layout.h LIST_CHUNK_FIRST).
+  uint32_t listChunk() const { return listChunk_; }
+  // Time spent compiling its pipeline set's pipelines so far, construction included (a shared set:
+  // by every renderer that compiled into it).
+  double compileMs() const { return pipelines_->compileMs(); }
+
+  const PassTimes& lastPassTimes() const { return times_; }
+
+  // Frames so far whose per-vertex lighting was recomputed (the others only transformed).
+  uint64_t framesShaded() const { return framesShaded_; }
+
+  // Frames so far whose vertex positions were transformed (the others kept the previous frame's:
+  // same view and objects).
+  uint64_t framesTransformed() const { return framesTransformed_; }
+
+ private:
+  // The passes a frame records, then shader builds that stand in for one: RESOLVE_LIT runs
+  // RESOLVE_SMALL in frames lit per pixel (flat and Phong shading), RESOLVE_LARGE_KEYS runs
+  // RESOLVE_LARGE where it keeps only keys (those frames, and lists taken in rounds).
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, RESOLVE_LIT, RESOLVE_LARGE_KEYS, PASS_COUNT };
+  // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
+  static constexpr uint32_t TIMESTAMP_SLOTS = 4;
+
+  // A pass, the shader build that runs it (the pass's own, or a variant: RESOLVE_LIT,
+  // RESOLVE_LARGE_KEYS) and the specialization constants it is compiled with.
+  struct PipelineRequest {
+    Pass pass;
+    std::vector<SpecConstant> specs;
+    Pass code = PASS_COUNT;  // PASS_COUNT: the pass's own shader
+    Pass shader() const { return code == PASS_COUNT ? pass : code; }
+  };
+
+  // The frame loop (gpu_renderer.cpp).
+  void release();  // destroys whatever exists; safe to call twice
+  bool renderAttempt();
+  void submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer));
+  void prepareRetry(uint32_t statusFlags);
+  void readTimes();
+
+  // Pipelines (gpu_pipelines.cpp).
+  std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
+                                          const gpu::FrameData& frame, bool withKeys) const;
+  // Whether the pack pass moves the frame's colours from the key slots into the colour buffer.
+  bool packsColors(bool withKeys) const;
+  void compilePipelines(const std::vector<PipelineRequest>& requests);
+  const ComputePipeline& pipeline(const PipelineRequest& request) const;
+  void selectPipelines(const FrameInputs& in);
+
+  // Buffers, uploads and what changed since the last frame (gpu_buffers.cpp).
+  void checkSceneFits(const SceneData& data) const;  // throws, naming the device limit, before anything is made
+  void compileSceneModes(const SceneData& data);
+  void createFrameBuffers();
+  void uploadScene(const SceneData& data);
+  void releaseScene();  // the scene's buffers (release: all of them)
+  void startRetries();
+  void ensureImageBuffers(uint32_t width, uint32_t height);
+  void createLargeBuffersFor(VkDeviceSize pixels);
+  void ensureColorBuffer(bool wholeImage);
+  void createLargeBuffers(uint32_t entries, uint32_t setups);
+  void updateDescriptors();
+  void uploadFrame(const FrameInputs& in);
+  void writeControl();
+
+  // Recording a frame's passes (gpu_recording.cpp) and reading its image (gpu_readback.cpp).
+  void recordFrame(VkCommandBuffer cmd);
+  void recordResolveLargeRound(VkCommandBuffer cmd);
+  void recordResolveTail(VkCommandBuffer cmd);
+  void bindPass(VkCommandBuffer cmd, Pass pass) const;
+  Image readImage(Image storage);
+
+  const VulkanContext& context_;
+  GpuRendererOptions options_;  // as made: replaceScene starts from them again
+  bool exactFloats_ = false;    // the passes' _exact builds
+  uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
+  bool binPass_ = false;       // SPEC_BIN_PASS: WorkLayout::Gpu runs the bin pass
+  bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
+  bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
+  uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
+  uint32_t listChunk_ = 0;     // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many entries a round
+  uint64_t framesRepeated_ = 0;
+  std::shared_ptr<GpuPipelineSet> pipelines_;  // compiled ones, kept across renderers (GpuRendererOptions)
+  ComputePipeline current_[PASS_COUNT];         // this frame's (owned by pipelines_)
+  DescriptorArena arena_;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  TimestampPool timestamps_;
+  PassTimes times_;
+
+  Buffer frameBuffer_, controlBuffer_, clipList_, keys_, bins_, colors_, keyReadback_, status_;
+  TexelBuffer vertices_, triangles_, objects_, materials_, lights_;  // read as texels (bindings.glsl)
+  TexelBuffer shadedPositions_, shadedColors_;  // written by the shade pass, read as texels
+  TexelBuffer large_, largeSetups_;  // written as storage, read by resolve as texels
+  uint32_t vertexCount_ = 0;
+  uint32_t triangleCount_ = 0;
+  uint32_t largeCapacity_ = 0;
+  uint32_t largeSetupCapacity_ = 0;
+  uint32_t width_ = 0;
+  uint32_t height_ = 0;
+
+  // The frame being rendered, as uploaded: the scene's frame and the pass control this renderer
+  // wrote for it (writeControl), whether it keeps its keys, and where its colours end up.
+  gpu::FrameData frame_{};
+  gpu::PassControl control_{};
+  bool withKeys_ = false;
+  bool frameColorsInKeys_ = false;
+
+  // What the device holds from earlier frames, so a frame sends only what changed.
+  std::vector<gpu::ObjectData> lastObjects_;
+  std::vector<gpu::MaterialData> lastMaterials_;
+  std::vector<gpu::LightData> lastLights_;
+  uint64_t framesSent_ = 0;
+  uint64_t framesShaded_ = 0;
+  uint64_t framesTransformed_ = 0;
+};
+
+}  // namespace phongvk

@@ -1,0 +1,107 @@
+// mesh_import.cpp — see mesh_import.h.
+#include "meshio/mesh_import.h"
+
+#include "phongvk/errors.h"
+
+#include "geometry/normals.h"
+
+#include <cstdint>
+#include <utility>
+
+namespace phongvk {
+namespace {
+
+void dropZeroArea(Mesh& mesh) {
+  size_t kept = 0;
+  for (const glm::uvec3& t : mesh.triangles) {
+    const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
+    if (glm::cross(b - a, c - a) != glm::dvec3(0.0)) mesh.triangles[kept++] = t;  // zero area draws nothing
+  }
+  mesh.triangles.resize(kept);
+}
+
+template <typename T>
+void keepUsed(std::vector<T>& values, const std::vector<uint32_t>& newIndex) {
+  size_t kept = 0;
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (newIndex[i] != UINT32_MAX) values[kept++] = values[i];
+  }
+  values.resize(kept);
+}
+
+// Vertices no triangle uses are dropped (in order), so that nothing shades them.
+void removeUnused(Mesh& mesh) {
+  std::vector<uint32_t> newIndex(mesh.positions.size(), UINT32_MAX);
+  for (const glm::uvec3& t : mesh.triangles) newIndex[t.x] = newIndex[t.y] = newIndex[t.z] = 0;
+  uint32_t next = 0;
+  for (uint32_t& index : newIndex) {
+    if (index != UINT32_MAX) index = next++;
+  }
+  if (next == mesh.positions.size()) return;
+  for (glm::uvec3& t : mesh.triangles) t = {newIndex[t.x], newIndex[t.y], newIndex[t.z]};
+  keepUsed(mesh.positions, newIndex);
+  if (!mesh.normals.empty()) keepUsed(mesh.normals, newIndex);
+  if (!mesh.colors.empty()) keepUsed(mesh.colors, newIndex);
+}
+
+}  // namespace
+
+Mesh finishLoadedMesh(Mesh mesh, const LinearTransform& transform, const std::string& where) {
+  const bool givenNormals = !mesh.normals.empty();
+  transformPositions(mesh, transform, where);
+  for (glm::vec3& n : mesh.normals) n = transformNormal(transform, n);
+  dropZeroArea(mesh);
+  if (mesh.triangles.empty()) throw SceneError(where + ": every triangle is degenerate (zero area)");
+  removeUnused(mesh);
+  if (!givenNormals) computeVertexNormals(mesh);
+  return mesh;
+}
+
+namespace {
+
+// Each triangle with vertices of its own.
+void unshareVertices(Mesh& mesh) {
+  Mesh flat;
+  flat.positions.reserve(3 * mesh.triangles.size());
+  for (const glm::uvec3& t : mesh.triangles) {
+    const uint32_t first = uint32_t(flat.positions.size());
+    for (uint32_t v : {t.x, t.y, t.z}) {
+      flat.positions.push_back(mesh.positions[v]);
+      if (!mesh.colors.empty()) flat.colors.push_back(mesh.colors[v]);
+    }
+    flat.triangles.push_back({first, first + 1, first + 2});
+  }
+  mesh = std::move(flat);
+}
+
+}  // namespace
+
+Mesh joinParts(std::vector<MeshPart>& parts, bool flatWithoutNormals, const std::string& where) {
+  bool normals = !parts.empty(), colors = false;
+  for (const MeshPart& part : parts) {
+    normals = normals && part.normals.size() == part.positions.size();
+    colors = colors || !part.colors.empty();
+  }
+  Mesh mesh;
+  if (parts.size() == 1 && (normals || parts[0].normals.empty()) && !(!normals && flatWithoutNormals)) {
+    mesh.positions = std::move(parts[0].positions);  // one part: its arrays, not a copy
+    mesh.normals = std::move(parts[0].normals);
+    mesh.colors = std::move(parts[0].colors);
+    mesh.triangles = std::move(parts[0].triangles);
+    parts[0] = {};
+  }
+  for (MeshPart& part : parts) {
+    const uint32_t first = uint32_t(mesh.positions.size());
+    for (const glm::uvec3& t : part.triangles) mesh.triangles.push_back(t + glm::uvec3(first));
+    mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
+    if (normals) mesh.normals.insert(mesh.normals.end(), part.normals.begin(), part.normals.end());
+    if (colors && part.colors.empty()) part.colors.assign(part.positions.size(), 0xFFFFFFFFu);
+    if (colors) mesh.colors.insert(mesh.colors.end(), part.colors.begin(), part.colors.end());
+    part = {};
+  }
+  if (mesh.triangles.empty()) throw SceneError(where + ": no triangles");
+  if (!normals && flatWithoutNormals) unshareVertices(mesh);
+  return mesh;
+}
+
+}  // namespace phongvk

@@ -1,0 +1,35 @@
+// mesh_import.h — the one path from a loaded mesh (an OBJ, PLY, STL or glTF file, or arrays) to the
+// mesh an object renders: the object's transform, zero-area triangles dropped, unused vertices
+// removed, normals normalised or, where the source has none, area-weighted (normals.h).
+#pragma once
+
+#include "geometry/mesh.h"
+#include "geometry/transform.h"
+
+#include <string>
+
+namespace phongvk {
+
+// `loaded` holds the source's positions (finite), its triangles (indices in range), normals only
+// where it has one per position (any non-zero finite length) and colours only where it has one
+// per position. Throws SceneError "<where>: ..." for a position the transform takes out of range
+// and for a mesh whose triangles all have zero area.
+Mesh finishLoadedMesh(Mesh loaded, const LinearTransform& transform, const std::string& where);
+
+// One mesh of a file as an importer reads it (a glTF primitive, a PLY or STL file): positions with the
+// file's node transform applied, normals (transformed, any non-zero length) or none, RGBA8 colours
+// or none, triangles indexing this part's positions.
+struct MeshPart {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<uint32_t> colors;
+  std::vector<glm::uvec3> triangles;
+};
+
+// The parts as one loaded mesh: normals where every part has them (otherwise none, and with
+// `flatWithoutNormals` each triangle gets vertices of its own, so that the computed normals are
+// the face normals: STL's facets, glTF's rule for primitives without normals), colours where any
+// part has them (white for the others). Throws SceneError "<where>: no triangles" for none.
+Mesh joinParts(std::vector<MeshPart>& parts, bool flatWithoutNormals, const std::string& where);
+
+}  // namespace phongvk

@@ -1,0 +1,282 @@
+// obj_import.cpp — see obj_import.h. tinyobjloader parses and triangulates; everything it lets
+// through unchecked (indices out of range, numbers it reads as 0, NaN) is checked here.
+#include "meshio/obj_import.h"
+
+#include "phongvk/errors.h"
+
+#include "base/mapped_file.h"
+#include "base/number_text.h"
+#include "base/regular_file.h"
+#include "base/text_words.h"
+#include "geometry/normals.h"
+#include "geometry/polygon.h"
+
+#include <tiny_obj_loader.h>
+
+#include <cassert>
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <istream>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+namespace phongvk {
+namespace {
+
+struct ObjData {
+  std::vector<float> positions;           // xyz per position
+  std::vector<float> normals;             // xyz per normal
+  std::vector<tinyobj::index_t> corners;  // the faces' corners, in order
+  std::vector<uint32_t> faceSizes;        // corners per face, in file order
+};
+
+[[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
+  throw SceneError(where + ": " + path + ": " + why);
+}
+
+std::string firstLine(const std::string& text) {
+  std::string line = text.substr(0, text.find('\n'));
+  return line.empty() ? "unknown error" : line;
+}
+
+// A decimal number as tinyobjloader reads one: [+-] digits [. digits] [(e|E) [+-] digits], at
+// least one digit before the exponent. It reads anything else ("nan", "inf", "0x1p3", "abc") as 0
+// without a word, so such a token is an error here, not a silent vertex at the origin.
+bool isPlainNumber(std::string_view token) {
+  size_t i = 0, digits = 0;
+  auto skipDigits = [&] {
+    size_t start = i;
+    while (i < token.size() && std::isdigit(static_cast<unsigned char>(token[i]))) ++i;
+    return i - start;
+  };
+  if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+  digits += skipDigits();
+  if (i < token.size() && token[i] == '.') {
+    ++i;
+    digits += skipDigits();
+  }
+  if (digits == 0) return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-')) ++i;
+    if (skipDigits() == 0) return false;
+  }
+  return i == token.size();
+}
+
+// The words of one line, up to a '#' comment, into `words` (emptied first: one vector serves every
+// line of a file).
+void wordsOf(std::string_view line, std::vector<std::string_view>& words) {
+  words.clear();
+  appendWords(line.substr(0, line.find('#')), words);
+}
+
+// A face corner "v", "v/vt", "v//vn" or "v/vt/vn": each index an integer, not 0, within 32 bits
+// (tinyobjloader wraps 4294967299 to 3 without a word).
+bool isCorner(std::string_view corner) {
+  size_t parts = 0;
+  while (true) {
+    const size_t slash = corner.find('/');
+    const std::string_view part = corner.substr(0, slash);
+    if (!part.empty() || parts == 0) {
+      int64_t index = 0;
+      const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), index);
+      if (error != std::errc() || end != part.data() + part.size() || index == 0 || index > INT32_MAX || index < -INT32_MAX)
+        return false;
+    }
+    if (slash == std::string_view::npos) return parts < 3;
+    corner.remove_prefix(slash + 1);
+    ++parts;
+  }
+}
+
+// What tinyobjloader lets through without a word, checked line by line: every number on the v, vn
+// and vt lines is a plain decimal number, a v line has x, y and z, a face has three corners or
+// more and every corner index is one (in 32 bits); and the file is text. Returns the faces' corner
+// counts, in file order (tinyobjloader keeps only their low 8 bits).
+std::vector<uint32_t> checkLines(std::string_view text, const std::string& path, const std::string& where) {
+  std::vector<uint32_t> faceSizes;
+  if (text.find('\0') != std::string_view::npos)
+    fail(where, path, "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
+  size_t lineNumber = 0;
+  std::vector<std::string_view> words;
+  for (size_t start = 0; start < text.size();) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    ++lineNumber;
+    wordsOf(text.substr(start, end - start), words);
+    start = end + 1;
+    if (words.empty()) continue;
+    const auto at = [&] { return "line " + std::to_string(lineNumber) + ": "; };  // built only for a message
+    const std::string_view keyword = words[0];
+    if (keyword == "v" || keyword == "vn" || keyword == "vt") {
+      for (size_t w = 1; w < words.size(); ++w) {
+        if (!isPlainNumber(words[w]))
+          fail(where, path, at() + "'" + std::string(words[w]).substr(0, 40) + "' in a '" + std::string(keyword) + "' line is not a number");
+      }
+      if (keyword == "v" && words.size() < 4)
+        fail(where, path, at() + "a 'v' line needs x, y and z, got " + std::to_string(words.size() - 1) + " numbers");
+    } else if (keyword == "f") {
+      if (words.size() < 4) fail(where, path, at() + "a face needs 3 corners or more, got " + std::to_string(words.size() - 1));
+      faceSizes.push_back(uint32_t(words.size() - 1));
+      for (size_t w = 1; w < words.size(); ++w) {
+        if (!isCorner(words[w]))
+          fail(where, path, at() + "'" + std::string(words[w]).substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
+      }
+    }
+  }
+  return faceSizes;
+}
+
+// The file's bytes as a stream, read where they lie (no copy).
+class BytesStream : private std::streambuf, public std::istream {
+ public:
+  explicit BytesStream(std::string_view bytes) : std::istream(this) {
+    char* begin = const_cast<char*>(bytes.data());  // only read: std::streambuf's get area is char*
+    setg(begin, begin, begin + bytes.size());
+  }
+};
+
+// The material libraries an OBJ names (mtllib), resolved against its folder as tinyobjloader
+// resolves them, and read only if they are regular files (regular_file.h): a FIFO or a device
+// named there would block or never end. A library that is missing is passed over, as every OBJ
+// reader does (materials do not change how phongvk renders an OBJ); one that is not a regular file
+// is an error.
+class MaterialLibraries : public tinyobj::MaterialReader {
+ public:
+  MaterialLibraries(std::string folder, const std::string& path, const std::string& where)
+      : folder_(std::move(folder)), path_(path), where_(where) {}
+
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* byName, std::string* warning, std::string* error) override {
+    const std::string library = name.empty() || name[0] == '/' || folder_.empty() ? name : folder_ + "/" + name;
+    std::error_code missing;
+    if (!std::filesystem::exists(library, missing)) return false;
+    std::string why;
+    const std::optional<RegularFile> file = RegularFile::open(library, why);
+    if (!file) fail(where_, path_, "mtllib '" + name + "': " + why);
+    const std::string text = file->read();
+    BytesStream in(text);
+    tinyobj::LoadMtl(byName, materials, &in, warning, error);
+    return true;
+  }
+
+ private:
+  std::string folder_;
+  const std::string& path_;
+  const std::string& where_;
+};
+
+ObjData parse(const std::string& path, const std::string& where) {
+  const MappedFile file(path, where);
+  const std::vector<uint32_t> faceSizes = checkLines(file.bytes(), path, where);
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+  std::string warning, error;
+  BytesStream in(file.bytes());
+  MaterialLibraries libraries(std::filesystem::path(path).parent_path().string(), path, where);
+  // Polygons are cut by ear clipping (polygon.h), not fanned: no triangulation here.
+  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &libraries, false, false))
+    fail(where, path, "not a valid OBJ file: " + firstLine(error));
+  // tinyobjloader skips a quad with a bad index, with only this warning.
+  if (warning.find("invalid vertex index") != std::string::npos)
+    fail(where, path, "a face's vertex index is out of range");
+  ObjData data{attrib.vertices, attrib.normals, {}, faceSizes};
+  size_t faces = 0;
+  for (const tinyobj::shape_t& shape : shapes) {
+    data.corners.insert(data.corners.end(), shape.mesh.indices.begin(), shape.mesh.indices.end());
+    for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++faces) {
+      // tinyobjloader's count is the low 8 bits of ours (a face of 300 corners: 44): ours is kept.
+      if (faces >= faceSizes.size() || uint8_t(faceSizes[faces]) != uint8_t(shape.mesh.num_face_vertices[f]))
+        fail(where, path, "tinyobjloader read the faces differently from the file's 'f' lines");
+    }
+  }
+  size_t corners = 0;
+  for (uint32_t size : faceSizes) corners += size;
+  if (faces != faceSizes.size() || corners != data.corners.size())
+    fail(where, path, "tinyobjloader read the faces differently from the file's 'f' lines");
+  if (data.corners.empty()) fail(where, path, "no triangles (no 'f' lines)");
+  return data;
+}
+
+void checkIndices(const ObjData& data, const std::string& path, const std::string& where) {
+  const size_t positionCount = data.positions.size() / 3, normalCount = data.normals.size() / 3;
+  for (const tinyobj::index_t& c : data.corners) {
+    if (c.vertex_index < 0 || size_t(c.vertex_index) >= positionCount)
+      fail(where, path,
+           "a face's vertex index is out of range (the file has " + std::to_string(positionCount) +
+               " vertices)");
+    if (c.normal_index >= 0 && size_t(c.normal_index) >= normalCount)
+      fail(where, path,
+           "a face's normal index is out of range (the file has " + std::to_string(normalCount) +
+               " normals)");
+  }
+}
+
+// Finite, and within the scene's coordinate range: a float position that overflowed to inf would
+// make NaN vertices.
+void checkPositions(const ObjData& data, const std::string& path, const std::string& where) {
+  for (float x : data.positions) {
+    if (!std::isfinite(x)) fail(where, path, "a vertex position is not a finite number");
+    if (std::abs(double(x)) > MAX_COORDINATE)
+      fail(where, path,
+           "a vertex coordinate is " + formatNumber(double(x)) + ", beyond the " +
+               formatNumber(MAX_COORDINATE) + " m a scene may use");
+  }
+}
+
+glm::dvec3 at(const std::vector<float>& xyz, int index) {
+  return {xyz[3 * size_t(index)], xyz[3 * size_t(index) + 1], xyz[3 * size_t(index) + 2]};
+}
+
+// Usable file normals: every corner has one, finite and not zero.
+bool hasFileNormals(const ObjData& data) {
+  for (const tinyobj::index_t& c : data.corners) {
+    if (c.normal_index < 0) return false;
+    glm::dvec3 n = at(data.normals, c.normal_index);
+    if (!std::isfinite(glm::length(n)) || glm::length(n) == 0.0) return false;
+  }
+  return true;
+}
+
+// Vertices are the distinct (position, normal) index pairs the faces use, in the order of first use.
+Mesh buildMesh(const ObjData& data, bool fileNormals) {
+  Mesh mesh;
+  std::unordered_map<uint64_t, uint32_t> vertexOf;  // (position, normal) index pair -> vertex; lookups only
+  auto vertex = [&](const tinyobj::index_t& c) {
+    const int normal = fileNormals ? c.normal_index : 0;
+    const uint64_t key = (uint64_t(uint32_t(c.vertex_index)) << 32) | uint32_t(normal);
+    auto [it, inserted] = vertexOf.try_emplace(key, uint32_t(mesh.positions.size()));
+    if (inserted) {
+      mesh.positions.push_back(glm::vec3(at(data.positions, c.vertex_index)));
+      if (fileNormals) mesh.normals.push_back(glm::vec3(at(data.normals, normal)));
+    }
+    return it->second;
+  };
+  std::vector<uint32_t> face;
+  size_t k = 0;
+  for (uint32_t size : data.faceSizes) {
+    face.clear();
+    for (unsigned int c = 0; c < size; ++c) face.push_back(vertex(data.corners[k + c]));
+    k += size;
+    triangulatePolygon(mesh.positions, face, mesh.triangles);
+  }
+  return mesh;
+}
+
+}  // namespace
+
+Mesh importObj(const std::string& path, const std::string& where) {
+  ObjData data = parse(path, where);
+  checkIndices(data, path, where);
+  checkPositions(data, path, where);
+  return buildMesh(data, hasFileNormals(data));
+}
+
+}  // namespace phongvk

@@ -1,0 +1,45 @@
+// camera_fit.cpp — see camera_fit.h.
+#include "prepare/camera_fit.h"
+
+#include "scene/scene_json.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace phongvk {
+namespace {
+
+constexpr double kMargin = 1.05;
+
+void fitCamera(CameraSpec& camera, const SceneData& data, const std::string& file) {
+  const glm::dvec3 centre = (data.boundsMin + data.boundsMax) * 0.5;
+  const double radius = std::max(glm::length(data.boundsMax - data.boundsMin) * 0.5, 1e-9);
+  const double tanVertical = std::tan(glm::radians(camera.fov) / 2);
+  const double halfField = std::atan(std::min(tanVertical, tanVertical * camera.aspect));
+  const double distance = kMargin * radius / std::sin(halfField);
+  camera.position = centre - glm::normalize(camera.direction) * distance;
+  camera.nearPlane = (distance - radius) / 2;
+  camera.farPlane = 2 * (distance + radius);
+  const double reach = std::max({std::abs(camera.position.x), std::abs(camera.position.y), std::abs(camera.position.z),
+                                 camera.farPlane});
+  if (!(reach <= MAX_COORDINATE) || !(float(camera.nearPlane) >= 1.17549435e-38f))
+    throw SceneError((file.empty() ? "" : file + ": ") + "camera.fit: the scene's bounds (radius " +
+                     formatNumber(radius) + " m) put the camera beyond the coordinates a scene may use");
+}
+
+}  // namespace
+
+bool needsFraming(const SceneSpec& scene) {
+  return scene.camera.fit || std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.atCamera; });
+}
+
+SceneSpec framedScene(const SceneSpec& scene, const SceneData& data) {
+  SceneSpec framed = scene;
+  if (framed.camera.fit) fitCamera(framed.camera, data, scene.path);
+  for (Light& light : framed.lights) {
+    if (light.atCamera) light.position = framed.camera.position;
+  }
+  return framed;
+}
+
+}  // namespace phongvk

@@ -1,0 +1,111 @@
+// memory_estimate.cpp — see memory_estimate.h.
+#include "prepare/memory_estimate.h"
+
+#include "scene/object_mesh.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <vector>
+
+namespace phongvk {
+namespace {
+
+std::atomic<uint64_t> limitOverride{0};
+
+uint64_t physicalMemory() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : UINT64_MAX;
+}
+
+// `bytes` in GiB with `decimals` decimals.
+std::string gib(uint64_t bytes, int decimals) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f GiB", decimals, double(bytes) / double(uint64_t(1) << 30));
+  return text;
+}
+
+// The fewest decimals at which `a` and `b` print differently, each with two significant digits at
+// least, so that a message never says "0.1 GiB, more than the 0.1 GiB limit" or "the 0.0 GiB limit";
+// ten decimals tell bytes apart.
+int decimalsToTell(uint64_t a, uint64_t b) {
+  const double smaller = double(std::min(a, b)) / double(uint64_t(1) << 30);
+  int decimals = 1;
+  for (double unit = 1; smaller > 0 && smaller < unit && decimals < 10; unit /= 10) ++decimals;
+  while (decimals < 10 && gib(a, decimals) == gib(b, decimals)) ++decimals;
+  return decimals;
+}
+
+}  // namespace
+
+uint64_t estimatedTriangles(const Object& object) {
+  uint64_t base = baseTriangles(object);
+  if (object.shape == Shape::Polyhedron) base = 2 * object.points.size();
+  if (object.shape == Shape::Mesh) base = object.arrays ? object.arrays->triangles.size() : object.fileTriangles;
+  for (int level = 0; level < object.subdivide && base < (uint64_t(1) << 50); ++level) base *= 4;
+  return base;
+}
+
+uint64_t parseMemoryLimit(const std::string& text, const std::string& what) {
+  const auto bad = [&] {
+    char least[32];
+    std::snprintf(least, sizeof least, "%g", MIN_MEMORY_GIB);
+    return SceneError(what + " is '" + text + "': expected a number of GiB, at least " + least + " (e.g. 4 or 0.5)");
+  };
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  const double value = std::strtod(begin, &end);
+  if (text.empty() || end != begin + text.size() || std::isnan(value) || !(value >= MIN_MEMORY_GIB)) throw bad();
+  const double bytes = value * double(uint64_t(1) << 30);
+  return bytes >= 18446744073709551615.0 ? UINT64_MAX : uint64_t(bytes);  // 1e11 GiB: no limit, not an overflow
+}
+
+uint64_t memoryLimit() {
+  if (const uint64_t set = limitOverride.load()) return set;
+  if (const char* env = std::getenv("PHONGVK_MAX_MEMORY_GB")) return parseMemoryLimit(env, "PHONGVK_MAX_MEMORY_GB");
+  return physicalMemory();
+}
+
+void setSceneMemoryLimit(uint64_t bytes) { limitOverride = bytes; }
+
+void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
+  std::vector<std::pair<uint64_t, size_t>> objects;  // (triangles, index)
+  uint64_t triangles = 0;
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    objects.push_back({estimatedTriangles(scene.objects[i]), i});
+    triangles += objects.back().first;
+  }
+  const uint64_t bytes = triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL;
+  if (bytes <= memoryLimit()) return;
+  std::sort(objects.begin(), objects.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;  // the largest, in file order
+  });
+  std::string most;
+  for (size_t k = 0; k < objects.size() && k < 3; ++k) {
+    most += (k ? ", " : "") + scene.objects[objects[k].second].jsonPath + " (" + std::to_string(objects[k].first) + " triangles)";
+  }
+  checkMemory(scene.path, "the scene", bytes,
+              std::to_string(triangles) + " triangles, " + std::to_string(pixels) + " pixels", "most of it: " + most);
+}
+
+void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels) {
+  checkMemory(scene.path, "the scene", triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL,
+              std::to_string(triangles) + " triangles as built, " + std::to_string(pixels) + " pixels",
+              "a smaller image, fewer samples or simpler meshes fit");
+}
+
+void checkMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
+                 const std::string& remedy) {
+  const uint64_t limit = memoryLimit();
+  if (bytes <= limit) return;
+  const int decimals = decimalsToTell(bytes, limit);
+  throw SceneError((path.empty() ? "" : path + ": ") + what + " needs about " + gib(bytes, decimals) + " (" + detail +
+                   "), more than the " + gib(limit, decimals) +
+                   " limit (by default the machine's memory; PHONGVK_MAX_MEMORY_GB or --max-memory-gb sets it); " + remedy);
+}
+
+}  // namespace phongvk

@@ -1,0 +1,199 @@
+#include "prepare/scene_data.h"
+
+#include "base/huge_pages.h"
+#include "scene/object_mesh.h"
+
+#include <cmath>
+#include <algorithm>
+#include <limits>
+
+namespace phongvk {
+
+namespace {
+
+gpu::MaterialData toGpu(const Material& m) {
+  gpu::MaterialData g{};
+  g.color = m.color;
+  g.ka = m.ka;
+  g.attenuation = m.attenuation;
+  g.kd = m.kd;
+  g.ks = m.ks;
+  g.n = m.n;
+  return g;
+}
+
+// Every object's mesh, and the scene's vertex and triangle counts, so that the flat arrays are
+// allocated once at their final size: grown object by object, they were allocated about twice
+// over (fresh memory the kernel zero-fills page by page) and copied at each growth (a grid of 100
+// 82k-triangle spheres: 407 -> 355 ms). Throws SceneError past 2^32 vertices.
+std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, size_t& triangles) {
+  std::vector<ObjectMesh> meshes;
+  meshes.reserve(scene.objects.size());
+  vertices = triangles = 0;
+  for (const Object& object : scene.objects) {
+    try {
+      meshes.push_back(buildObjectMesh(object));
+    } catch (const SceneError& error) {  // the object's JSON path and any inner file: the scene file first
+      if (scene.path.empty()) throw;
+      std::string why = error.what();
+      const std::string inner = object.jsonPath + ".file: " + object.file + ": ";
+      if (scene.modelAlone && why.rfind(inner, 0) == 0) why.erase(0, inner.size());
+      throw SceneError(scene.path + ": " + why);
+    }
+    vertices += meshes.back().mesh.positions.size();
+    triangles += meshes.back().mesh.triangles.size();
+    if (vertices > std::numeric_limits<uint32_t>::max()) {
+      throw SceneError(object.jsonPath + ": the scene has more than 2^32 vertices");
+    }
+  }
+  return meshes;
+}
+
+void appendObject(SceneData& data, const ObjectMesh& built, uint32_t objectIndex) {
+  const Mesh& mesh = built.mesh;
+  const uint64_t base = data.vertices.size();
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const glm::dvec3 world = built.origin + glm::dvec3(mesh.positions[i]);
+    data.boundsMin = glm::min(data.boundsMin, world);
+    data.boundsMax = glm::max(data.boundsMax, world);
+    const uint32_t color = mesh.colors.empty() ? gpu::VERTEX_WHITE : mesh.colors[i];
+    data.vertices.push_back({mesh.positions[i], objectIndex, mesh.normals[i], color});
+  }
+  for (const glm::uvec3& t : mesh.triangles) {
+    data.triangles.push_back(glm::uvec4(glm::uvec3(static_cast<uint32_t>(base)) + t, objectIndex));
+  }
+  data.objectOrigins.push_back(built.origin);
+  gpu::ObjectData o{};
+  o.flags = built.closed ? gpu::OBJECT_CULL_BACK : 0u;  // the material: refreshShading
+  data.objects.push_back(o);
+}
+
+glm::vec3 inBasis(const View& view, const glm::dvec3& v) {
+  return glm::vec3(glm::dot(view.right, v), glm::dot(view.up, v), glm::dot(view.forward, v));
+}
+
+glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
+  glm::dvec3 sum(0.0);
+  for (const glm::dvec3& o : origins) sum += o;
+  return origins.empty() ? sum : sum / double(origins.size());
+}
+
+// A share of the scene (SceneSpec::sharePart): the triangles of the part-th of shareParts near-equal
+// contiguous ranges, every vertex, object and bound of the whole scene kept (lighting and a fitted
+// camera stay the whole scene's).
+void keepShare(SceneData& data, const SceneSpec& scene) {
+  if (scene.shareParts <= 1) return;
+  const uint64_t count = data.triangles.size(), parts = uint64_t(scene.shareParts), part = uint64_t(scene.sharePart);
+  if (count < parts) {
+    throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + "the scene's " + std::to_string(count) +
+                     " triangles cannot be shared among " + std::to_string(parts) + " processes");
+  }
+  const uint64_t first = count * part / parts, end = count * (part + 1) / parts;
+  data.triangles = std::vector<glm::uvec4>(data.triangles.begin() + first, data.triangles.begin() + end);
+  data.triangleBase = uint32_t(first);
+}
+
+}  // namespace
+
+SceneData buildSceneData(const SceneSpec& scene) {
+  if (scene.objects.empty()) {
+    throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + "objects: scene has no objects");
+  }
+  SceneData data;
+  size_t vertices, triangles;
+  std::vector<ObjectMesh> meshes = buildMeshes(scene, vertices, triangles);
+  reserveLarge(data.vertices, vertices);
+  reserveLarge(data.triangles, triangles);
+  data.boundsMin = glm::dvec3(HUGE_VAL);
+  data.boundsMax = glm::dvec3(-HUGE_VAL);
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    appendObject(data, meshes[i], static_cast<uint32_t>(i));
+    meshes[i] = {};  // freed as soon as copied
+  }
+  keepShare(data, scene);
+  data.lightingOrigin = meanOrigin(data.objectOrigins);
+  for (size_t i = 0; i < data.objects.size(); ++i) {
+    data.objects[i].lightOffset = glm::vec3(data.objectOrigins[i] - data.lightingOrigin);
+  }
+  refreshShading(data, scene);
+  return data;
+}
+
+void refreshShading(SceneData& data, const SceneSpec& scene) {
+  data.materials.clear();
+  for (const Material& m : scene.materials) data.materials.push_back(toGpu(m));
+  if (data.materials.empty()) data.materials.push_back(toGpu(Material{}));
+  data.lights.clear();
+  for (const Light& l : scene.lights) {
+    gpu::LightData g{};
+    g.position = glm::vec3(l.position - data.lightingOrigin);
+    g.intensity = l.intensity;
+    g.color = l.color;
+    data.lights.push_back(g);
+  }
+  for (size_t i = 0; i < data.objects.size() && i < scene.objects.size(); ++i) {
+    data.objects[i].material = static_cast<uint32_t>(scene.objects[i].material);
+  }
+  data.background = scene.background;
+  data.ambient = scene.ambient;
+  data.interpolation = scene.interpolation == Interpolation::Screen ? gpu::INTERP_SCREEN : gpu::INTERP_PERSPECTIVE;
+  data.shading = scene.shading == Shading::Flat ? gpu::SHADING_FLAT
+                 : scene.shading == Shading::Phong ? gpu::SHADING_PHONG
+                                                  : gpu::SHADING_GOURAUD;
+  data.specular = scene.specular == Specular::Blinn ? gpu::SPECULAR_BLINN : gpu::SPECULAR_PHONG;
+  data.samples = scene.samples;
+}
+
+namespace {
+
+bool sameObjectGeometry(const Object& a, const Object& b) {
+  return a.shape == b.shape && a.center == b.center && a.radius == b.radius && a.size == b.size &&
+         a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
+         a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
+         a.scale == b.scale && a.rotation == b.rotation && a.up == b.up && a.baseColors == b.baseColors &&
+         a.translate == b.translate && a.closed == b.closed;
+}
+
+}  // namespace
+
+bool sameGeometry(const SceneSpec& a, const SceneSpec& b) {
+  return a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
+}
+
+bool lightingIsViewIndependent(const FrameInputs& in) {
+  if (in.lights.empty()) return true;
+  for (const gpu::MaterialData& m : in.materials) {
+    if (m.ks != 0.0f) return false;
+  }
+  return true;
+}
+
+FrameInputs makeFrame(const SceneData& data, const View& view) {
+  FrameInputs in;
+  gpu::FrameData& f = in.frame;
+  f.right = glm::vec4(glm::vec3(view.right), 0.0f);
+  f.up = glm::vec4(glm::vec3(view.up), 0.0f);
+  f.forward = glm::vec4(glm::vec3(view.forward), 0.0f);
+  f.ambient = data.ambient;
+  f.focal = static_cast<float>(view.focal);
+  f.background = data.background;
+  f.nearPlane = static_cast<float>(view.nearPlane);
+  f.principal = glm::vec2(view.width * 0.5f, view.height * 0.5f);
+  f.farPlane = static_cast<float>(view.farPlane);
+  f.width = static_cast<uint32_t>(view.width);
+  f.height = static_cast<uint32_t>(view.height);
+  f.interpolation = data.interpolation;
+  f.shading = data.shading;
+  f.specular = data.specular;
+  f.eye = glm::vec3(view.eye - data.lightingOrigin);
+
+  in.objects = data.objects;
+  for (size_t i = 0; i < in.objects.size(); ++i) {
+    in.objects[i].viewOffset = inBasis(view, data.objectOrigins[i] - view.eye);
+  }
+  in.lights = data.lights;
+  in.materials = data.materials;
+  return in;
+}
+
+}  // namespace phongvk

@@ -1,0 +1,81 @@
+// resources.h — storage buffers, their memory, and copying data in and out.
+#pragma once
+
+#include "vulkan/context.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace phongvk {
+
+enum class MemoryKind {
+  // Memory the GPU reads fastest. Never mapped — even where it is host visible (lavapipe, UMA,
+  // resizable BAR) — so the CPU-only CI takes the same staging path as a discrete GPU.
+  DeviceLocal,
+  // Host visible and coherent, persistently mapped (prefers host-cached memory: fast readback).
+  // For data the CPU writes or reads every frame.
+  HostVisible,
+  // Device local, host visible, coherent and cached, persistently mapped: memory that shaders and
+  // the host both use at full speed, as a CPU or integrated device has (hasSharedMemory). For a
+  // buffer the shaders work in and the host reads and resets in place.
+  Shared,
+};
+
+struct Buffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  void* mapped = nullptr;  // non-null for MemoryKind::HostVisible and Shared
+  VkDeviceSize size = 0;   // the VkBuffer's size: the request rounded up to a multiple of 4, at least 4
+};
+
+// Vulkan forbids size 0, and vkCmdFillBuffer needs multiples of 4, so `size` is rounded up to a
+// multiple of 4 (at least 4). DeviceLocal buffers also get TRANSFER_SRC | TRANSFER_DST usage, as
+// uploadToBuffer / readFromBuffer reach them by copies. Throws VulkanError when out of memory.
+void createBuffer(Buffer& result, const VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
+                  MemoryKind kind);
+
+// Whether the device has MemoryKind::Shared memory. A discrete GPU's host-visible device-local
+// memory (resizable BAR) is uncached for the host, so it does not count.
+bool hasSharedMemory(const VulkanContext& context);
+
+// Frees the buffer and its memory; safe on an empty or already destroyed Buffer.
+void destroyBuffer(Buffer& buffer, const VulkanContext& context);
+
+// Copies `bytes` from `data` into `dst` at `offset`: a memcpy when dst is mapped, otherwise through
+// a temporary staging buffer and a one-time submission.
+// Throws std::out_of_range if the range does not fit.
+void uploadToBuffer(const VulkanContext& context, Buffer& dst, const void* data, size_t bytes, VkDeviceSize offset = 0);
+
+// Copies the first `bytes` of `src` to `out`, likewise. The GPU work that wrote src must have
+// finished (submitAndWait, whose closing barrier makes the writes visible to the host).
+void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, size_t bytes);
+
+// A buffer the shaders read as RGBA32UI texels (a uniform texel buffer: bindings.glsl). texelFetch
+// is gathered in SIMD by CPU devices (lavapipe), which load from a storage buffer lane by lane.
+struct TexelBuffer {
+  Buffer buffer;
+  VkBufferView view = VK_NULL_HANDLE;
+};
+inline constexpr VkDeviceSize TEXEL_BYTES = 16;
+
+// `bytes` (a multiple of TEXEL_BYTES; 0 still gets one texel) in a new texel buffer, filled from
+// `data` if it is not null; `usage` is added to UNIFORM_TEXEL_BUFFER (e.g. STORAGE for a pass that
+// writes it).
+void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
+                       VkBufferUsageFlags usage, MemoryKind kind);
+
+// createTexelBuffer filled from `data`, an array of std430 structs of whole texels.
+template <typename T>
+void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind) {
+  static_assert(sizeof(T) % TEXEL_BYTES == 0);
+  createTexelBuffer(result, context, data.data(), data.size() * sizeof(T), 0, kind);
+}
+
+// Safe on an empty or already destroyed TexelBuffer.
+void destroyTexelBuffer(TexelBuffer& texels, const VulkanContext& context);
+
+// Device memory the context's buffers hold now, and the most they ever held at once.
+VkDeviceSize deviceBytes(const VulkanContext& context);
+VkDeviceSize peakDeviceBytes(const VulkanContext& context);
+
+}  // namespace phongvk
