@@ -1,9 +1,9 @@
 // huge_pages.h — large arrays on 2 MiB pages where the kernel offers them (Linux transparent huge
 // pages, asked for per range with madvise). A mesh of millions of triangles fills hundreds of MiB
-// of fresh memory; on 4 KiB pages the kernel's page faults were about a third of building a
-// 5M-triangle icosphere. A one-frame 4K render fills ~150 MiB of fresh buffers and images, and its
-// page faults were ~45% of the process. Only where a range spans whole 2 MiB pages; elsewhere it
-// does nothing.
+// of fresh memory, and a one-frame 4K render ~150 MiB of fresh buffers and images; on 4 KiB pages
+// the kernel's page faults were a large part of both (docs/DECISIONS.md, "Huge pages for large
+// meshes, images and a CPU device's buffers"). Only where a range spans whole 2 MiB pages;
+// elsewhere it does nothing.
 #pragma once
 
 #include <cstddef>

@@ -9,13 +9,13 @@
 # EXACT_FLOAT_OPS=1: division and sqrt corrected to the correctly rounded result
 # (shaders/exact_float.h), for devices whose own are off (vulkan/float_probe.h). A build of its own,
 # not a specialization constant: lavapipe inlines both sides of every call before it drops the dead
-# one, which cost ~40 ms of pipeline compiling per process.
+# one, which lengthened every process's pipeline compiling (docs/DECISIONS.md).
 # Every compute shader's floating-point operations are then decorated NoContraction
 # (shaders/no_contraction.cpp: glslang's `precise` stops at function boundaries, and no optimizer
 # may rewrite an operation the reference computes as written), and the module goes through
 # spirv-opt -O unless its name is in OPT_SKIP. The optimized module is what every driver compiles:
 # lavapipe turns SPIR-V into NIR and optimizes it in every process, and inlining, scalar
-# replacement and dead-code removal done once here take about half of that off each process
+# replacement and dead-code removal done once here take much of that off each process
 # (docs/DECISIONS.md, "Shaders are optimized at build time").
 # `target` is a custom target the users of the headers depend on.
 find_program(PHONGVK_SPIRV_OPT spirv-opt REQUIRED)  # Debian: spirv-tools

@@ -79,9 +79,10 @@ std::vector<uint32_t> pipelineKey(uint32_t pass, bool exact, const std::vector<S
 }  // namespace
 
 // Compiles the requested pipelines not compiled before, all at once on threads of their own (a
-// CPU device compiles each on the calling thread: ~30-40 ms apiece for the raster, clip and
-// large-resolve passes on lavapipe), and keeps them: a sequence that toggles a feature (a ks
-// sweep through 0) compiles each variant once. Every thread is joined before any error is rethrown.
+// CPU device compiles each on the calling thread, and on lavapipe the raster, clip and
+// large-resolve passes take the longest: docs/PERFORMANCE.md, "Start-up"), and keeps them: a
+// sequence that toggles a feature (a ks sweep through 0) compiles each variant once. Every thread
+// is joined before any error is rethrown.
 // New pipelines go into the pipeline cache on disk (pipeline_cache.h).
 void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests) {
   const auto start = std::chrono::steady_clock::now();

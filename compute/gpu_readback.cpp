@@ -34,8 +34,9 @@ void imageFromKeySlots(std::span<uint64_t> slots, uint32_t background, Image& im
 
 // The frame's image, read where resolve wrote it (host-visible, coherent; submitAndWait's closing
 // barrier made the writes visible to the host): no copy first. Into `image`'s storage, which is
-// not zero-filled first when it is already large enough: zero-filling a new 1385x923 image and
-// the page faults of its fresh memory cost a sequence ~4 ms a frame on lavapipe.
+// not zero-filled first when it is already large enough: a sequence that reuses its image pays
+// neither a new image's zero fill nor the page faults of its fresh memory (docs/PERFORMANCE.md,
+// "Readback").
 Image GpuRenderer::readImage(Image image) {
   const size_t pixels = size_t(width_) * height_;
   image.width = int(width_);

@@ -31,8 +31,9 @@ struct PassTimes {
 // runs once per tile; the clip pass links each large triangle into its bins' lists itself (a loop
 // per invocation runs at CPU speed). Gpu: eight tiles per resolve workgroup, so a GPU's warps are
 // full, and the bin pass (bin_large.comp) links each (large triangle, bin) pair on an invocation
-// of its own: one GPU thread walking a screen-filling triangle's bins took 11 ms on an H100. Auto
-// picks by device type; tests force either on any device. Both give the same image and keys.
+// of its own: one GPU thread walking a screen-filling triangle's bins took most of an H100 frame
+// (docs/DECISIONS.md, "Binning"). Auto picks by device type; tests force either on any device.
+// Both give the same image and keys.
 enum class WorkLayout { Auto, Cpu, Gpu };
 
 // Where resolve leaves the colours. InKeySlots: each in its pixel's 64-bit key slot, which the host

@@ -44,8 +44,8 @@ struct SurfaceMesh {
 // Splits every triangle into four, `levels` times: triangle (a, b, c) with edge midpoints
 // ab, bc, ca becomes (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca) — same winding, and
 // triangle t's children are 4t .. 4t+3. An edge shared by index gets one midpoint; new vertices
-// follow the old ones, ordered by edge (lower index, then higher). Linear time, no hashing:
-// a 5M-triangle result takes a few hundred milliseconds.
+// follow the old ones, ordered by edge (lower index, then higher). Linear time, no hashing
+// (docs/PERFORMANCE.md, "Mesh loading").
 void subdivide(SurfaceMesh& mesh, int levels);
 
 }  // namespace phongvk

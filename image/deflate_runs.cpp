@@ -17,9 +17,8 @@ namespace phongvk {
 namespace {
 
 constexpr size_t MAX_MATCH = 258;
-// Shortest runs worth a match; shorter ones are coded as literals. Tuned on the paper's frames
-// (1385x923 fig7 frame 0: 152 KB; with 3 or 6 for the first two, within 1%; a row match of 8, 16
-// or 64 bytes: 176, 156, 154 KB).
+// Shortest runs worth a match; shorter ones are coded as literals. Tuned on the paper's frames:
+// other minimums gave files no smaller (docs/PERFORMANCE.md, "PNG and sequences").
 constexpr size_t MIN_RUN_BYTE = 4;   // distance 1: the same byte repeated (zeros: flat colour)
 constexpr size_t MIN_RUN_PIXEL = 4;  // distance 3: the same filtered pixel repeated (a steady gradient)
 constexpr size_t MIN_RUN_ROW = 32;   // one row back: the row above's filtered bytes (shading that varies alike)

@@ -1,9 +1,9 @@
 // deflate_runs.h — PNG level 1: a zlib stream that codes only runs (deflate matches at distance 1,
 // 3 or one row: a byte, a filtered pixel or the row above repeated) and literals, in one block with Huffman codes fitted
-// to the image. A rendered frame filtered "Sub" is ~95% zero bytes in long runs (flat background,
-// shading that changes by less than one 8-bit step from pixel to pixel), so finding the runs a
-// word at a time and coding the rest is ~4x faster than a general match finder's fastest level,
-// for files ~1.3x as large (docs/DECISIONS.md "PNG levels").
+// to the image. A rendered frame filtered "Sub" is almost all zero bytes in long runs (flat
+// background, shading that changes by less than one 8-bit step from pixel to pixel), so finding
+// the runs a word at a time and coding the rest is much faster than a general match finder's
+// fastest level, for somewhat larger files (docs/DECISIONS.md "PNG levels", docs/PERFORMANCE.md).
 #pragma once
 
 #include <cstddef>

@@ -18,9 +18,10 @@ inline void setPacked(Image& image, size_t i, uint32_t packed) {
   image.rgb[i * 3 + 2] = static_cast<uint8_t>(packed >> 16);
 }
 
-// Pixels i..i+3 from four packed words: two stores (8 + 4 bytes) instead of twelve byte stores
-// (imageFromPacked at 1385x923: 0.58 -> 0.39 ms). The words are built in registers: an array
-// stored as three words and read back as two stalls store forwarding (slower than byte stores).
+// Pixels i..i+3 from four packed words: two stores (8 + 4 bytes) instead of twelve byte stores,
+// which reads an image faster (docs/PERFORMANCE.md, "Readback"). The words are built in registers:
+// an array stored as three words and read back as two stalls store forwarding (slower than byte
+// stores).
 inline void setPackedFour(Image& image, size_t i, uint32_t p0, uint32_t p1, uint32_t p2, uint32_t p3) {
   static_assert(std::endian::native == std::endian::little, "the words hold r, g, b in byte order");
   const uint64_t first = (p0 & 0xFFFFFFull) | (uint64_t(p1 & 0xFFFFFFu) << 24) | (uint64_t(p2 & 0xFFFFu) << 48);

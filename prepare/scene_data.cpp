@@ -24,8 +24,8 @@ gpu::MaterialData toGpu(const Material& m) {
 
 // Every object's mesh, and the scene's vertex and triangle counts, so that the flat arrays are
 // allocated once at their final size: grown object by object, they were allocated about twice
-// over (fresh memory the kernel zero-fills page by page) and copied at each growth (a grid of 100
-// 82k-triangle spheres: 407 -> 355 ms). Throws SceneError past 2^32 vertices.
+// over (fresh memory the kernel zero-fills page by page) and copied at each growth
+// (docs/PERFORMANCE.md, "Mesh loading"). Throws SceneError past 2^32 vertices.
 std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, size_t& triangles) {
   std::vector<ObjectMesh> meshes;
   meshes.reserve(scene.objects.size());

@@ -142,7 +142,7 @@ SurfaceMesh makeShape(const Object& object, glm::dvec3& origin) {
       origin = object.translate;
       SurfaceMesh m;  // flat rule: imported surfaces are whatever the file (or the arrays) say
       // Not `arrays ? *arrays : importFile(object)`: that conditional copies the imported mesh
-      // (GCC 12), a third of loading a 10M-triangle PLY.
+      // (GCC 12), a large part of loading a big mesh file (docs/PERFORMANCE.md, "Mesh loading").
       if (object.arrays) {
         m.mesh = *object.arrays;
       } else {

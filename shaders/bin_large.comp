@@ -3,8 +3,8 @@
 // of its box, row-major) and wrote each as (set-up slot, LIST_END, 0, first entry of the
 // triangle); this pass finds the entry's bin from its offset, computes the bin's tile mask and
 // links it, or leaves it unlinked where the triangle misses the bin. On a GPU one invocation walking
-// a screen-filling triangle's ~1,250 bins took most of a frame (11 ms on an H100); on a CPU device
-// the clip pass links them itself (WorkLayout::Cpu), and this pass is not run.
+// a screen-filling triangle's ~1,250 bins took most of a frame (docs/DECISIONS.md, "Binning"); on a
+// CPU device the clip pass links them itself (WorkLayout::Cpu), and this pass is not run.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require

@@ -30,9 +30,10 @@ uint runtimeOne() { return gl_NumWorkGroups.y; }
 
 // lavapipe (Mesa 22.3) replaces up to four uniform values that decide a branch or the end of a loop
 // by their current values and, if that halves the shader, compiles the result again every time the
-// pipeline is bound, keeping every copy: a relit frame's shade pass on fig1_cube cost ~1.2 ms, and
-// the process gained code mappings frame after frame (219 -> 632 in 4 s). So the control fields that
-// decide branches and loop ends are multiplied by runtimeOne(), which the inliner cannot look into.
+// pipeline is bound, keeping every copy: relit frames paid for the shade pass's recompilation, and
+// the process gained code mappings frame after frame (docs/DECISIONS.md, "Uniform inlining"). So
+// the control fields that decide branches and loop ends are multiplied by runtimeOne(), which the
+// inliner cannot look into.
 void loadUniforms() {
   frame = frameBlock;
   control = controlBlock;

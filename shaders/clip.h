@@ -94,7 +94,8 @@ FN bool insidePlanes(vec3 h, float nearPlane) {
 // True when no vertex is outside the near plane or the guard band: the polygon is the triangle.
 // Spelled out plane by plane, not as a loop over the planes with an early return: the triangle
 // pass asks it of every triangle, and lavapipe ran that loop for real, 5 masked trips per SIMD
-// batch with its state spilled (~7% of a 1M-triangle frame).
+// batch with its state spilled: a measurable share of a frame of small triangles
+// (docs/PERFORMANCE.md, "Raster").
 FN bool insideClipVolume(vec3 h0, vec3 h1, vec3 h2, float nearPlane) {
   return insidePlanes(h0, nearPlane) && insidePlanes(h1, nearPlane) && insidePlanes(h2, nearPlane);
 }

@@ -30,8 +30,9 @@ PHONGVK_CONST uint BIN_TILES = BIN_SIZE / TILE_SIZE;  // tiles per bin side
 // own invocation: its set-up is stored and linked into the list of every bin it overlaps, and
 // resolve rasterizes it there, tile by tile, keeping the smallest key in registers (no atomics).
 // Small triangles stay one invocation each, with atomicMin on the key buffer. With the shading
-// constants stored per set-up, a 2x2 grid of spheres of ~200-pixel triangles resolves 10% faster
-// binned than one invocation each (against a threshold of 1024); 128 measured the same as 256.
+// constants stored per set-up, a 2x2 grid of spheres of ~200-pixel triangles resolves faster
+// binned than one invocation each (against a threshold of 1024), and 128 measured the same as 256
+// (docs/PERFORMANCE.md, "Raster").
 PHONGVK_CONST uint SMALL_TRIANGLE_MAX_PIXELS = 256;
 // The large triangles' buffers grow with the image, not the triangle count (a large triangle
 // covers many pixels, so few fit on screen at once): room for one set-up record (160 bytes) per
@@ -51,8 +52,8 @@ PHONGVK_CONST uint BIN_KEYS_SHIFT = 1;
 // ---- Dispatch ----
 // Dispatches are capped at the smallest maxComputeWorkGroupCount[0] Vulkan allows; the shaders
 // loop (grid-stride) when there is more work than that many groups. On a CPU device (lavapipe)
-// every workgroup costs about 0.6 us of scheduling however little it does, so there the cap is
-// CPU_DISPATCH_GROUPS: a few groups per core, each looping over many items.
+// every workgroup costs scheduling time however little it does (docs/PERFORMANCE.md), so there the
+// cap is CPU_DISPATCH_GROUPS: a few groups per core, each looping over many items.
 PHONGVK_CONST uint MAX_DISPATCH_GROUPS = 65535;
 PHONGVK_CONST uint CPU_DISPATCH_GROUPS = 256;
 // Bins' lists taken a chunk at a time (SPEC_LIST_CHUNK): a bin that thousands of large triangles

@@ -2,8 +2,8 @@
 // shade_vertices.comp (phong.h), then the homogeneous pixel-space position mapped to Vulkan clip
 // space. Vertices are pulled from the texel buffer by gl_VertexIndex (an indexed draw, so the
 // driver's vertex cache shades a shared vertex once per batch), as the compute port reads them:
-// pulling from a storage buffer measured the same as vertex attributes on lavapipe (38 ms CPU per
-// frame for 328k triangles, either way), and it keeps VertexIn's layout in shared.h alone, with no
+// pulling from a storage buffer measured the same as vertex attributes on lavapipe
+// (docs/PERFORMANCE.md, "Shade"), and it keeps VertexIn's layout in shared.h alone, with no
 // attribute-format table to keep in step.
 #version 460
 #extension GL_GOOGLE_include_directive : require

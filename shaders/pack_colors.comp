@@ -3,9 +3,10 @@
 // the background); this pass packs them into the colour buffer's RGB bytes, one whole word per
 // invocation, so a subgroup's stores are consecutive words (the next frame clears the slots).
 // Resolve's own stores were three single bytes per pixel from scattered lanes into host memory
-// over PCIe: on the H100 a screen-filling floor's resolve took 1.06 ms for 1.28M pixels, and
-// storing one byte per pixel instead of three made other scenes 3-5x slower (partial lines there
-// are costly); three words per invocation, each subgroup store every third word, were as slow.
+// over PCIe, which made a screen-filling floor's resolve slow on the H100; storing one byte per
+// pixel instead of three made other scenes slower, not faster (partial lines there are what
+// cost); three words per invocation, each subgroup store every third word, were as slow
+// (docs/PERFORMANCE.md, "Readback").
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require

@@ -68,8 +68,8 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s) {
 }
 
 // A small sub-triangle's pixels (small_triangles.h setupSmallEdges), one invocation: every pixel of
-// its box tested (coversSmall), as the reference does (a 1M-triangle grid 67.8 -> 58.5 ms against
-// row spans).
+// its box tested (coversSmall), as the reference does, which on lavapipe is faster than row spans
+// (docs/PERFORMANCE.md, "History").
 void rasterizeSmall(TriangleSetup t, EdgeSetup s) {
   for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     for (int x = s.bbox.x; x <= s.bbox.z; ++x) {

@@ -3,9 +3,9 @@
 // pixel's colour from its winning triangle by the includer's pixelColor(id, x, y), stored by
 // resolve.glsl storeColor. Pixels nothing covered are left alone (the background: the host's or
 // pack_colors.comp's in the key slots, fill_background.comp's in the colour buffer). It visits only
-// the flagged tiles (a bit loop, not a test of all 16): on lavapipe each empty iteration of a
-// 64-lane group costs ~0.1 us, and a floor of large triangles touches every bin, so testing all
-// tiles took ~5 ms of a 17 ms frame.
+// the flagged tiles (a bit loop, not a test of all 16): on lavapipe even an empty iteration of a
+// 64-lane group costs time, and a floor of large triangles touches every bin, so testing all tiles
+// was a large part of its frame (docs/PERFORMANCE.md, "Resolve").
 
 layout(local_size_x = TILE_SIZE, local_size_y = TILE_SIZE) in;
 

@@ -11,13 +11,12 @@
 // in registers. Then where a large triangle won: the colour stored by resolve.glsl storeColor;
 // where a small one wins, the key stays for resolve_small. On a CPU device, a tile that one large
 // triangle owns (covers every pixel centre of, short of the far plane; LargeEntry.owned) with
-// nothing else reaching it is only shaded (shadeOwnedTile): on floor_and_walls 85% of the tiles,
-// whose depth tests and edge steps it saves (-17% wall clock there, -19% at 4K, fig1_cube -2%;
-// PERFORMANCE.md).
+// nothing else reaching it is only shaded (shadeOwnedTile): that saves the depth tests and edge
+// steps of the tiles one triangle owns, most of a floor's tiles (docs/PERFORMANCE.md, "Resolve").
 //
-// Skipping the entries that miss the tile (57% of the (tile, entry) pairs otherwise), and with them
-// shading each entry's rows instead of reading the winner's constants per row (5 gathers a row):
-// fig3 -11%, floor_and_walls -10%, its 4K render -9%, fig1_cube -1 to -5% (PERFORMANCE.md).
+// The entries that miss the tile are skipped (without the masks most (tile, entry) pairs would be
+// misses), and each entry's rows are shaded from its own constants instead of the winner's being
+// read per row (5 gathers a row): only entries that reach a tile cost it (docs/PERFORMANCE.md).
 //
 // The keys build (resolve_large_keys.comp; the code is resolve_large.glsl) leaves every winner's
 // key for the second resolve pass, for frames lit per pixel (flat and Phong shading) and lists

@@ -53,7 +53,7 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 // Row r's colour, packed (RGBA8), ORed into `packedBits` for keepVectors. That second use is what
 // it is for: with one use, LLVM (in llvmpipe) moves the conversion and packing of each lane's
 // colour into the per-lane loop that llvmpipe makes of the store, scalar code once per pixel
-// instead of vector code once per row (fig1_cube resolve -6%).
+// instead of vector code once per row, which slows resolve (docs/PERFORMANCE.md, "Resolve").
 #define PACK_ROW(r)                     \
   uint packed##r = packColor(color##r); \
   packedBits |= packed##r;
@@ -187,8 +187,8 @@ void finishChunk(Bin b, uint end) {
 // On a CPU device the two kinds of tile are separate loops over their own tiles, not one loop
 // with a branch: lavapipe would run both sides of the branch for every tile. A GPU rasterizes
 // every tile: on the H100, walking each bin's list up front (tileWork) and shading owned tiles,
-// with a branch per tile or these two loops, took resolve from 0.94 to 3.0-3.9 ms on
-// floor_and_walls at 4K (the walks are chains of dependent loads; PERFORMANCE.md).
+// with a branch per tile or these two loops, made resolve several times slower (the walks are
+// chains of dependent loads; docs/PERFORMANCE.md, "History").
 void main() {
   loadUniforms();
   for (uint k = gl_WorkGroupID.x; k < binList.count; k += gl_NumWorkGroups.x) {

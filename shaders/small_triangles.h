@@ -14,7 +14,7 @@ SHARED_BEGIN
 // products < 2^28): the same values, signs and spans as the 64-bit set-up (edges.h), without 64-bit
 // arithmetic, which SIMD CPUs (lavapipe) emulate. 16 pixels: a box of at most 256 pixels, the
 // clip pass's SMALL_TRIANGLE_MAX_PIXELS; testing up to 1024 pixels one invocation each (32 pixels)
-// made a 2x2 grid of spheres of ~200-pixel triangles 20% slower.
+// made a 2x2 grid of spheres of ~200-pixel triangles slower (docs/PERFORMANCE.md, "Raster").
 PHONGVK_CONST int SMALL_EXTENT = 4096;  // subpixels: 16 pixels
 
 FN bool fitsSmallEdges(ivec2 a, ivec2 b, ivec2 c) {

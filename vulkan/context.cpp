@@ -18,7 +18,8 @@ void createCommandPool(VulkanContext& context) {
   info.queueFamilyIndex = context.queueFamily;
   VK_CHECK(vkCreateCommandPool(context.device, &info, nullptr, &context.commandPool));
   // One fence for every submitAndWait, reset before each use: on the H100 creating and destroying
-  // a fence per submission cost 0.5 ms (265 + 232 us), more than a small frame's device time.
+  // a fence per submission cost more than a small frame's device time (docs/DECISIONS.md, "One
+  // fence per context").
   VkFenceCreateInfo fenceInfo = { VK_STRUCTURE_TYPE_FENCE_CREATE_INFO };
   VK_CHECK(vkCreateFence(context.device, &fenceInfo, nullptr, &context.fence));
 }
