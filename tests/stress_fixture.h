@@ -66,18 +66,30 @@ inline void expectFinite(const std::vector<gpu::ShadedVertex>& shaded) {
 // alive (reported at vkDestroyDevice) fail the test too.
 class StressTest : public ::testing::Test {
  protected:
-  void SetUp() override {
+  void SetUp() override { openContext(); }
+  void TearDown() override { closeContext(); }
+
+  // Makes context_ again as on a device whose maxStorageBufferRange is `bytes` (where the device's
+  // own is larger), through PHONGVK_MAX_STORAGE_BUFFER_RANGE, set while the context is made.
+  void limitStorageBufferRange(uint64_t bytes) {
+    closeContext();
+    const ScopedEnv range("PHONGVK_MAX_STORAGE_BUFFER_RANGE", std::to_string(bytes));
+    openContext();
+  }
+
+  void openContext() {
     context_ = createContext({.deviceIndex = -1, .validate = true});
     log_ = context_.validation;
     ASSERT_NE(log_, nullptr);
   }
 
-  void TearDown() override {
+  void closeContext() {
     destroyContext(context_);
     if (!log_) return;
     std::string text;
     for (const std::string& message : log_->messages()) text += message + "\n";
     EXPECT_EQ(log_->count(), 0u) << "validation messages:\n" << text;
+    log_.reset();
   }
 
   // Renders `data` as seen in `in` with both backends and checks the stress contract.

@@ -15,8 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -275,24 +273,9 @@ TEST(ValidationLog, ForgottenBufferIsReportedAtDestroy) {
   EXPECT_GT(log->count(), 0u);
 }
 
-// Sets an environment variable for one scope and puts the old value back.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const char* value) : name_(name) {
-    const char* old = std::getenv(name);
-    if (old) old_ = old;
-    setenv(name, value, 1);
-  }
-  ~ScopedEnv() { old_ ? setenv(name_, old_->c_str(), 1) : unsetenv(name_); }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
-
 // CTest turns validation on for every GPU test this way, without the code asking for it.
 TEST(ValidationLog, EnvironmentVariableTurnsValidationOn) {
-  ScopedEnv validate("PHONGVK_VALIDATE", "1");
+  test::ScopedEnv validate("PHONGVK_VALIDATE", "1");
   VulkanContext context = createContext({.deviceIndex = -1, .validate = false});
   EXPECT_NE(context.validation, nullptr);
   EXPECT_NE(context.messenger, VK_NULL_HANDLE);
@@ -301,7 +284,7 @@ TEST(ValidationLog, EnvironmentVariableTurnsValidationOn) {
 
 // With no driver the loader fails vkCreateInstance; the error must say what to install.
 TEST(VulkanContextNoDriver, SaysToInstallADriver) {
-  ScopedEnv noDriver("VK_DRIVER_FILES", "/nonexistent/phongvk_no_driver.json");
+  test::ScopedEnv noDriver("VK_DRIVER_FILES", "/nonexistent/phongvk_no_driver.json");
   std::string message = test::thrownMessage<NoDeviceError>([] { createContext({}); });
   EXPECT_NE(message.find("no Vulkan driver found"), std::string::npos) << message;
   EXPECT_NE(message.find("install mesa-vulkan-drivers"), std::string::npos) << message;

@@ -2,9 +2,13 @@
 // them, and the logical device with the features phongvk needs.
 #include "vulkan/device.h"
 
+#include "phongvk/errors.h"
 #include "vulkan/instance.h"
 #include "vulkan/vk_check.h"
 
+#include <charconv>
+#include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <string>
 
@@ -138,12 +142,38 @@ std::string rejections(const std::vector<DeviceInfo>& reports) {
   return text;
 }
 
+constexpr const char* kStorageRangeVariable = "PHONGVK_MAX_STORAGE_BUFFER_RANGE";
+
+// The variable's value: a decimal number of bytes, at least 1 (one past 64 bits reads as the
+// largest, which no device's limit reaches). Anything else is an ArgumentError naming it.
+uint64_t parseStorageRange(const std::string& text) {
+  uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const std::from_chars_result parsed = std::from_chars(text.data(), end, value);
+  if (parsed.ec == std::errc::result_out_of_range && parsed.ptr == end) return UINT64_MAX;
+  if (text.empty() || parsed.ec != std::errc() || parsed.ptr != end || value == 0)
+    throw ArgumentError(std::string(kStorageRangeVariable) + " is '" + text +
+                        "': expected a number of bytes, at least 1 (e.g. 134217728)");
+  return value;
+}
+
+// A testing aid: PHONGVK_MAX_STORAGE_BUFFER_RANGE lowers the device's maxStorageBufferRange (never
+// raises it), so every check of that limit meets it as on a smaller device — a GPU's 4 GiB tested
+// as lavapipe's 128 MiB, the least Vulkan allows.
+void applyStorageRangeVariable(VkPhysicalDeviceLimits& limits) {
+  const char* text = std::getenv(kStorageRangeVariable);
+  if (!text) return;
+  const uint64_t range = parseStorageRange(text);
+  if (range < limits.maxStorageBufferRange) limits.maxStorageBufferRange = static_cast<uint32_t>(range);
+}
+
 }  // namespace
 
 // Everything about the chosen device that the rest of the port reads from the context.
 void describeDevice(VulkanContext& context, const DeviceInfo& report) {
   context.info = report;
   vkGetPhysicalDeviceProperties(context.physicalDevice, &context.properties);
+  applyStorageRangeVariable(context.properties.limits);
   vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &context.memoryProperties);
   context.queueFamily = *findComputeFamily(context.physicalDevice);
   context.timestampValidBits = queueFamilies(context.physicalDevice)[context.queueFamily].timestampValidBits;

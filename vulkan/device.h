@@ -17,7 +17,9 @@ std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devi
 // The first compute queue family that can write timestamps, else the first compute family.
 std::optional<uint32_t> findComputeFamily(VkPhysicalDevice device);
 
-// Fills the context's description of the chosen device: properties, memory, queue family, timestamps.
+// Fills the context's description of the chosen device: properties (PHONGVK_MAX_STORAGE_BUFFER_RANGE
+// lowers maxStorageBufferRange; ArgumentError where it is not a number of bytes), memory, queue
+// family, timestamps.
 void describeDevice(VulkanContext& context, const DeviceInfo& info);
 
 // The logical device with phongvk's features and its compute queue, loaded into volk.
