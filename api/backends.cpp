@@ -20,7 +20,7 @@ namespace {
 constexpr double NOT_MEASURED = std::numeric_limits<double>::quiet_NaN();
 
 // The reference; its "device" is this CPU thread, so a frame's device time is its compute time.
-class CpuBackend : public Renderer::Impl {
+class CpuBackend : public RendererImpl {
  public:
   FrameTime lastFrameTime() const override { return {0, lastMs_, NOT_MEASURED, NOT_MEASURED, NOT_MEASURED}; }
   Backend backend() const override { return Backend::Cpu; }
@@ -47,7 +47,7 @@ class CpuBackend : public Renderer::Impl {
 // renderers in other threads have contexts of their own, and volk's function table is the
 // process's. The derived backend's renderer is released (under the lock) in its destructor, before
 // this one destroys the context.
-class VulkanBackend : public Renderer::Impl {
+class VulkanBackend : public RendererImpl {
  public:
   explicit VulkanBackend(const RendererOptions& options) {
     const auto start = Clock::now();
@@ -160,7 +160,7 @@ class GraphicsBackend : public VulkanBackend {
 
 }  // namespace
 
-std::unique_ptr<Renderer::Impl> makeBackend(const RendererOptions& options) {
+std::unique_ptr<RendererImpl> makeBackend(const RendererOptions& options) {
   switch (options.backend) {
     case Backend::Cpu: return std::make_unique<CpuBackend>();
     case Backend::Graphics: return std::make_unique<GraphicsBackend>(options);

@@ -2,7 +2,7 @@
 #include "api/renderer_impl.h"
 
 #include "api/timing.h"
-#include "phongvk/contact_sheet.h"
+#include "api/scene_access.h"
 #include "prepare/camera_fit.h"
 #include "prepare/memory_estimate.h"
 #include "scene/camera.h"
@@ -35,7 +35,7 @@ uint64_t pixelSamples(const SceneSpec& spec) {
 }  // namespace
 
 void Renderer::Impl::prepare(const Scene& scene) {
-  const SceneSpec& spec = scene.spec();
+  const SceneSpec& spec = SceneAccess::spec(scene);
   const uint64_t samples = pixelSamples(spec);
   if (data_ && builtFrom_ && sameGeometry(*builtFrom_, spec)) {
     checkBuiltSceneMemory(spec, data_->triangles.size(), samples);  // this frame's size and samples
@@ -161,13 +161,10 @@ DiffResult diff(const Scene& scene, Renderer& renderer) {
 
 void setMemoryLimit(uint64_t bytes) { setSceneMemoryLimit(bytes); }
 
-void checkSceneMemory(const Scene& scene) { checkSceneMemory(scene.spec(), pixelSamples(scene.spec())); }
+void checkSceneMemory(const Scene& scene) { checkSceneMemory(SceneAccess::spec(scene), pixelSamples(SceneAccess::spec(scene))); }
 
 uint64_t memoryLimitBytes(const std::string& gib, const std::string& what) { return parseMemoryLimit(gib, what); }
 
-void checkOutputMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
-                       const std::string& remedy) {
-  checkMemory(path, what, bytes, detail, remedy);
-}
+uint64_t memoryLimit() { return sceneMemoryLimit(); }
 
 }  // namespace phongvk

@@ -13,6 +13,7 @@
 
 namespace phongvk {
 
+// What every backend implements; the backends (backends.cpp) name it RendererImpl.
 class Renderer::Impl {
  public:
   virtual ~Impl() = default;
@@ -56,7 +57,12 @@ class Renderer::Impl {
   double buildMs_ = 0;
 };
 
+struct RendererAccess {
+  using Impl = Renderer::Impl;
+};
+using RendererImpl = RendererAccess::Impl;
+
 // The backends (backends.cpp).
-std::unique_ptr<Renderer::Impl> makeBackend(const RendererOptions& options);
+std::unique_ptr<RendererImpl> makeBackend(const RendererOptions& options);
 
 }  // namespace phongvk

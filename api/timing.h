@@ -1,9 +1,6 @@
-// timing.h — timing repeated frames: one warm-up, then N timed runs, summarised by the median
-// (robust to the odd slow run a shared machine produces). Renderer::timeFrames and the benchmark
-// (bench/) time their frames with it.
+// timing.h — timing repeated frames: one warm-up, then N timed runs (Renderer::timeFrames and the
+// benchmark, bench/, time their frames with it).
 #pragma once
-
-#include "phongvk/phongvk.h"  // median
 
 #include <chrono>
 #include <functional>

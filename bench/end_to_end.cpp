@@ -2,6 +2,7 @@
 #include "end_to_end.h"
 
 #include "phongvk/phongvk.h"
+#include "tools/statistics.h"
 
 #include <algorithm>
 #include <chrono>

@@ -4,7 +4,7 @@
 
 #include "scene/camera.h"
 #include "phongvk/compare.h"
-#include "phongvk/contact_sheet.h"
+#include "tools/contact_sheet.h"
 #include "reference/raycast.h"
 
 #include <cmath>

@@ -2,6 +2,7 @@
 #include "geometry_change.h"
 
 #include "phongvk/phongvk.h"
+#include "tools/statistics.h"
 
 #include <chrono>
 #include <cmath>

@@ -3,6 +3,7 @@
 #include "api/timing.h"
 #include "graphics/graphics_renderer.h"
 #include "reference/render_reference.h"
+#include "tools/statistics.h"
 
 #include <sys/resource.h>
 

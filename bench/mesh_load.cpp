@@ -5,6 +5,7 @@
 #include "scene/scene.h"
 
 #include "phongvk/phongvk.h"
+#include "tools/statistics.h"
 
 #include <algorithm>
 #include <chrono>

@@ -6,6 +6,7 @@
 #include "api/timing.h"
 #include "scene/camera.h"
 #include "phongvk/compare.h"
+#include "tools/statistics.h"
 
 #include <algorithm>
 #include <cmath>

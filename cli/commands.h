@@ -3,6 +3,7 @@
 #pragma once
 
 #include "phongvk/image.h"
+#include "tools/png_check.h"
 
 #include <string>
 

@@ -1,5 +1,6 @@
 // render.cpp — `phongvk render`: one still on the chosen backend, optionally timed (--repeat).
 #include "cli/cli_support.h"
+#include "tools/statistics.h"
 
 #include <algorithm>
 #include <cstdio>

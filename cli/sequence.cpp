@@ -5,8 +5,10 @@
 #include "cli/sequence.h"
 
 #include "cli/cli_support.h"
-#include "phongvk/contact_sheet.h"
-#include "phongvk/frame_writer.h"
+#include "tools/contact_sheet.h"
+#include "tools/frame_writer.h"
+#include "tools/png_check.h"
+#include "tools/output_memory.h"
 
 #include <signal.h>
 #include <unistd.h>

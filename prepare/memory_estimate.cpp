@@ -1,6 +1,7 @@
 // memory_estimate.cpp — see memory_estimate.h.
 #include "prepare/memory_estimate.h"
 
+#include "base/memory_text.h"
 #include "scene/object_mesh.h"
 
 #include <unistd.h>
@@ -20,24 +21,6 @@ std::atomic<uint64_t> limitOverride{0};
 uint64_t physicalMemory() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
   return pages > 0 && pageSize > 0 ? uint64_t(pages) * uint64_t(pageSize) : UINT64_MAX;
-}
-
-// `bytes` in GiB with `decimals` decimals.
-std::string gib(uint64_t bytes, int decimals) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f GiB", decimals, double(bytes) / double(uint64_t(1) << 30));
-  return text;
-}
-
-// The fewest decimals at which `a` and `b` print differently, each with two significant digits at
-// least, so that a message never says "0.1 GiB, more than the 0.1 GiB limit" or "the 0.0 GiB limit";
-// ten decimals tell bytes apart.
-int decimalsToTell(uint64_t a, uint64_t b) {
-  const double smaller = double(std::min(a, b)) / double(uint64_t(1) << 30);
-  int decimals = 1;
-  for (double unit = 1; smaller > 0 && smaller < unit && decimals < 10; unit /= 10) ++decimals;
-  while (decimals < 10 && gib(a, decimals) == gib(b, decimals)) ++decimals;
-  return decimals;
 }
 
 }  // namespace
@@ -64,7 +47,7 @@ uint64_t parseMemoryLimit(const std::string& text, const std::string& what) {
   return bytes >= 18446744073709551615.0 ? UINT64_MAX : uint64_t(bytes);  // 1e11 GiB: no limit, not an overflow
 }
 
-uint64_t memoryLimit() {
+uint64_t sceneMemoryLimit() {
   if (const uint64_t set = limitOverride.load()) return set;
   if (const char* env = std::getenv("PHONGVK_MAX_MEMORY_GB")) return parseMemoryLimit(env, "PHONGVK_MAX_MEMORY_GB");
   return physicalMemory();
@@ -80,7 +63,7 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
     triangles += objects.back().first;
   }
   const uint64_t bytes = triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL;
-  if (bytes <= memoryLimit()) return;
+  if (bytes <= sceneMemoryLimit()) return;
   std::sort(objects.begin(), objects.end(), [](const auto& a, const auto& b) {
     return a.first != b.first ? a.first > b.first : a.second < b.second;  // the largest, in file order
   });
@@ -100,12 +83,8 @@ void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t 
 
 void checkMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
                  const std::string& remedy) {
-  const uint64_t limit = memoryLimit();
-  if (bytes <= limit) return;
-  const int decimals = decimalsToTell(bytes, limit);
-  throw SceneError((path.empty() ? "" : path + ": ") + what + " needs about " + gib(bytes, decimals) + " (" + detail +
-                   "), more than the " + gib(limit, decimals) +
-                   " limit (by default the machine's memory; PHONGVK_MAX_MEMORY_GB or --max-memory-gb sets it); " + remedy);
+  const uint64_t limit = sceneMemoryLimit();
+  if (bytes > limit) throw SceneError(memoryMessage(path, what, bytes, limit, detail, remedy));
 }
 
 }  // namespace phongvk

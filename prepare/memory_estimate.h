@@ -24,7 +24,7 @@ uint64_t estimatedTriangles(const Object& object);
 // The memory a scene may use: the machine's physical memory, or PHONGVK_MAX_MEMORY_GB (a number of
 // GiB, to raise or lower it), or what setSceneMemoryLimit set (0: back to those).
 // Throws SceneError for a PHONGVK_MAX_MEMORY_GB that parseMemoryLimit refuses.
-uint64_t memoryLimit();
+uint64_t sceneMemoryLimit();
 // The smallest limit that can be set, in GiB (about 1 MiB): below it no scene fits.
 inline constexpr double MIN_MEMORY_GIB = 0.001;
 // A limit in GiB as text ("4", "0.5", "1e3") in bytes; a value too large for 64 bits is no limit.
@@ -34,7 +34,7 @@ uint64_t parseMemoryLimit(const std::string& text, const std::string& what);
 void setSceneMemoryLimit(uint64_t bytes);
 
 // Throws SceneError "<file>: the scene needs about N GiB (...), more than the M GiB limit; most
-// of it: objects[2] (... triangles), ..." when the estimate exceeds memoryLimit(). `pixels`
+// of it: objects[2] (... triangles), ..." when the estimate exceeds sceneMemoryLimit(). `pixels`
 // counts every sample.
 void checkSceneMemory(const SceneSpec& scene, uint64_t pixels);
 
@@ -45,7 +45,7 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels);
 void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels);
 
 // Throws SceneError "<path>: <what> needs about N GiB (<detail>), more than the M GiB limit (...);
-// <remedy>" when `bytes` exceed memoryLimit(): the one message for the scene and what is made
+// <remedy>" when `bytes` exceed sceneMemoryLimit(): the one message for the scene and what is made
 // beside it (a sequence's contact sheet).
 void checkMemory(const std::string& path, const std::string& what, uint64_t bytes, const std::string& detail,
                  const std::string& remedy);

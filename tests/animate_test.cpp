@@ -1,6 +1,6 @@
 // SceneSpec sequences without a GPU: the expression evaluator's values and messages, the "animate"
 // block's rules, applying a track, and a ka sweep rendered by the reference.
-#include "phongvk/contact_sheet.h"
+#include "tools/contact_sheet.h"
 #include "prepare/scene_data.h"
 #include "reference/render_reference.h"
 #include "scene/animate.h"

@@ -2,7 +2,7 @@
 // or a NaN image. Complements scene_test.cpp (which covers the loader's basic cases): here are
 // the syntax corner cases, out-of-range values that used to reach the renderers as Inf/NaN,
 // broken OBJ files, unreadable and odd files, and the CLI's exit codes and output files.
-#include "phongvk/contact_sheet.h"
+#include "tools/contact_sheet.h"
 #include "phongvk/image.h"
 #include "prepare/scene_data.h"
 #include "scene/scene.h"

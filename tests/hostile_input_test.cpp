@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "test_util.h"
+#include "tools/png_check.h"
 
 namespace phongvk {
 namespace {

@@ -4,7 +4,7 @@
 // or reports the first failure.
 #include "image/deflate_runs.h"
 #include "phongvk/errors.h"
-#include "phongvk/frame_writer.h"
+#include "tools/frame_writer.h"
 #include "phongvk/image.h"
 #include "phongvk/phongvk.h"
 #include "test_util.h"

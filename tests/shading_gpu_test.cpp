@@ -5,7 +5,7 @@
 // anti-aliased edges).
 #include "compute/gpu_renderer.h"
 #include "phongvk/compare.h"
-#include "phongvk/contact_sheet.h"
+#include "tools/contact_sheet.h"
 #include "phongvk/phongvk.h"
 #include "reference/render_reference.h"
 #include "scene/camera.h"

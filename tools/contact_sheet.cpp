@@ -1,4 +1,5 @@
-#include "phongvk/contact_sheet.h"
+// contact_sheet.cpp — see contact_sheet.h.
+#include "tools/contact_sheet.h"
 
 #include <algorithm>
 #include <cassert>
@@ -14,12 +15,6 @@ constexpr int kGap = 4;                           // pixels between thumbnails a
 constexpr uint8_t kSheetGrey = 40;                // background: dark, so frames stand out
 constexpr int kLabelPadding = 1;                  // font pixels of box around the text
 constexpr int kLargeLabelWidth = 240;             // thumbnails this wide get 2x labels
-
-// The run of source pixels [first, last) that output pixel `i` of `outSize` averages.
-void boxRun(int i, int outSize, int inSize, int& first, int& last) {
-  first = int(int64_t(i) * inSize / outSize);
-  last = int(int64_t(i + 1) * inSize / outSize);
-}
 
 void fillRect(Image& image, int x0, int y0, int x1, int y1, uint8_t value) {
   x0 = std::max(x0, 0);
@@ -45,28 +40,6 @@ struct FontVertex {
 };
 
 }  // namespace
-
-Image downscale(const Image& source, int width, int height) {
-  assert(width >= 1 && width <= source.width && height >= 1 && height <= source.height);
-  Image out(width, height);
-  for (int y = 0; y < height; ++y) {
-    int y0, y1;
-    boxRun(y, height, source.height, y0, y1);
-    for (int x = 0; x < width; ++x) {
-      int x0, x1;
-      boxRun(x, width, source.width, x0, x1);
-      const int count = (x1 - x0) * (y1 - y0);
-      for (int c = 0; c < 3; ++c) {
-        int sum = 0;
-        for (int sy = y0; sy < y1; ++sy) {
-          for (int sx = x0; sx < x1; ++sx) sum += source.pixel(sx, sy)[c];
-        }
-        out.pixel(x, y)[c] = static_cast<uint8_t>((sum + count / 2) / count);
-      }
-    }
-  }
-  return out;
-}
 
 ThumbnailSize thumbnailSize(int width, int height, int maxWidth) {
   if (width <= maxWidth) return {width, height};

@@ -1,5 +1,5 @@
-// frame_writer.cpp — the writer threads and their queue (include/phongvk/frame_writer.h).
-#include "phongvk/frame_writer.h"
+// frame_writer.cpp — the writer threads and their queue (frame_writer.h).
+#include "tools/frame_writer.h"
 
 #include <algorithm>
 

@@ -5,7 +5,6 @@
 // or the reference, whose threads take every core in bursts, they use the gaps between them.
 #pragma once
 
-#include "phongvk/export.h"
 #include "phongvk/image.h"
 
 #include <condition_variable>
@@ -25,7 +24,7 @@ struct FrameFile {
   Image image;
 };
 
-class PHONGVK_API FrameWriter {
+class FrameWriter {
  public:
   // Called on a writer thread once a frame's file is in place, one call at a time (the writer
   // holds a lock around it), in the order frames finish, which with several threads is not

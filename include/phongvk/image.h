@@ -90,11 +90,10 @@ PHONGVK_API void checkWritable(const std::string& path);
 // Reads a PNG as 8-bit RGB. Throws phongvk::Error naming the path.
 PHONGVK_API Image readPng(const std::string& path);
 
-// Whether `path` is a regular file holding a whole PNG of width x height: the signature, an IHDR of
-// that size first, every chunk's CRC right, and the IEND chunk last, at the end of the file (a file
-// cut short lacks it; one zeroed or overwritten in the middle fails a CRC). phongvk writes every
-// PNG whole (a temporary file, then a rename), so a frame that fails this came from elsewhere, from
-// another size, or was damaged since. Reads the file once; decodes no pixels.
-PHONGVK_API bool pngIsComplete(const std::string& path, int width, int height);
+// `source` averaged down to width x height with a box filter: the source columns (and rows) are
+// split into width (height) consecutive runs as even as integers allow, and each output pixel is
+// the rounded mean of its run's pixels (how a render with samples is filtered down).
+// Precondition: 1 <= width <= source.width, likewise height.
+PHONGVK_API Image downscale(const Image& source, int width, int height);
 
 }  // namespace phongvk

@@ -1,6 +1,6 @@
 // phongvk.h — the public C++ API: load a scene, render it with the Vulkan compute port or the CPU
-// reference, get an RGB image, diff the two. The phongvk command, the benchmark and outside
-// projects (find_package(phongvk), the phongvk::phongvk target) call this and nothing else.
+// reference, get an RGB image, diff the two. The phongvk command and outside projects
+// (find_package(phongvk), the phongvk::phongvk target) call this and nothing else of the library.
 //
 //   phongvk::Scene scene = phongvk::loadScene("scenes/basic.json");
 //   phongvk::Renderer gpu(phongvk::Backend::Gpu);
@@ -11,11 +11,9 @@
 #pragma once
 
 #include "phongvk/compare.h"
-#include "phongvk/contact_sheet.h"
 #include "phongvk/devices.h"
 #include "phongvk/errors.h"
 #include "phongvk/export.h"
-#include "phongvk/frame_writer.h"
 #include "phongvk/image.h"
 #include "phongvk/mesh.h"
 
@@ -30,9 +28,6 @@ namespace phongvk {
 // "-dirty" for uncommitted changes; "unknown" outside a checkout).
 PHONGVK_API const char* version();
 PHONGVK_API const char* revision();
-
-struct SceneSpec;      // the validated scene model (internal)
-class SceneSequence;   // a scene file's frames (internal)
 
 // A validated scene: camera, lights, materials, objects (docs/DESIGN.md "Scene file"). Cheap to
 // copy (copies share the validated model). Meshes are built by the renderer that first renders it.
@@ -75,12 +70,12 @@ class PHONGVK_API Scene {
   int frameCount() const;
   Scene frame(int index) const;
 
-  explicit Scene(std::shared_ptr<const SceneSpec> spec, std::shared_ptr<const SceneSequence> sequence = nullptr);
-  const SceneSpec& spec() const { return *spec_; }
 
  private:
-  std::shared_ptr<const SceneSpec> spec_;
-  std::shared_ptr<const SceneSequence> sequence_;  // where frame() comes from
+  struct State;  // the validated model and the sequence frame() comes from (api/scene.cpp)
+  explicit Scene(std::shared_ptr<const State> state);
+  std::shared_ptr<const State> state_;
+  friend struct SceneAccess;  // the library's own way in (api/scene_access.h)
 };
 
 // Reads and validates a scene file. Throws SceneError naming the file and the JSON path (and for a
@@ -170,10 +165,10 @@ class PHONGVK_API Renderer {
   std::string deviceName() const;
   RendererStats stats() const;
 
-  class Impl;
-
  private:
+  class Impl;  // api/renderer_impl.h
   std::unique_ptr<Impl> impl_;
+  friend struct RendererAccess;  // the backends' way to the Impl they implement (api/renderer_impl.h)
 };
 
 // The scene rendered by the reference and by the compute port, both with keys, and compared.
@@ -192,14 +187,15 @@ PHONGVK_API DiffResult diff(const Scene& scene, const RendererOptions& gpuOption
 // which keeps what it uploads as for any frame.
 PHONGVK_API DiffResult diff(const Scene& scene, Renderer& renderer);
 
-// The middle value (the mean of the two middle ones for an even count); NaN for no values.
-PHONGVK_API double median(std::vector<double> values);
-
 // The memory a scene may take, estimated before anything is built (about 112 bytes a triangle and
 // 32 a pixel sample) and checked again on every frame; a scene beyond it fails with SceneError
 // naming the objects that take most. Default: the machine's physical memory, or the environment's
 // PHONGVK_MAX_MEMORY_GB (a SceneError when it is not a number of GiB). 0 restores the default.
 PHONGVK_API void setMemoryLimit(uint64_t bytes);
+// The limit in force, in bytes: what setMemoryLimit set, else PHONGVK_MAX_MEMORY_GB, else the
+// machine's physical memory. Throws SceneError for a PHONGVK_MAX_MEMORY_GB that is not a number of
+// GiB.
+PHONGVK_API uint64_t memoryLimit();
 // A limit in GiB as text ("4", "0.5"), as PHONGVK_MAX_MEMORY_GB and --max-memory-gb take it, in
 // bytes (a value past 64 bits is no limit). Throws SceneError "<what> is '<text>': expected a number
 // of GiB, at least 0.001 ..." for anything else (empty, not a number, NaN, too small).
@@ -208,10 +204,4 @@ PHONGVK_API uint64_t memoryLimitBytes(const std::string& gib, const std::string&
 // they are built), needs more than the memory limit: the check every renderer makes before it
 // builds, for a caller that wants it before rendering anything (every frame of a sequence first).
 PHONGVK_API void checkSceneMemory(const Scene& scene);
-// Outputs beside a scene that hold memory too (a sequence's contact sheet) against the same limit:
-// throws SceneError "<path>: <what> needs about N GiB (<detail>), more than the M GiB limit (...);
-// <remedy>" when `bytes` exceed it.
-PHONGVK_API void checkOutputMemory(const std::string& path, const std::string& what, uint64_t bytes,
-                                   const std::string& detail, const std::string& remedy);
-
 }  // namespace phongvk
