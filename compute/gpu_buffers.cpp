@@ -71,39 +71,34 @@ void GpuRenderer::checkSceneFits(const SceneData& data) const { checkSceneFitsDe
 
 // The buffers whose size does not depend on the scene or the image.
 void GpuRenderer::createFrameBuffers() {
-  createBuffer(frameBuffer_, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
-  createBuffer(controlBuffer_, context_, sizeof(PassControl), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+  createBuffer(perFrame_.frame, context_, sizeof(FrameData), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryKind::HostVisible);
+  createBuffer(perFrame_.control, context_, sizeof(PassControl), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                MemoryKind::HostVisible);
-  createBuffer(status_, context_, sizeof(FrameStatus), STORAGE, MemoryKind::HostVisible);
+  createBuffer(perFrame_.status, context_, sizeof(FrameStatus), STORAGE, MemoryKind::HostVisible);
 }
 
 // The scene's buffers, made anew (the caller has checked that it fits: checkSceneFits).
 void GpuRenderer::uploadScene(const SceneData& data) {
   vertexCount_ = static_cast<uint32_t>(data.vertices.size());
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
-  createTexelBuffer(vertices_, context_, data.vertices, MemoryKind::DeviceLocal);
-  createTexelBuffer(triangles_, context_, data.triangles, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.vertices, context_, data.vertices, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.triangles, context_, data.triangles, MemoryKind::DeviceLocal);
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
-  createTexelBuffer(objects_, context_, data.objects, MemoryKind::HostVisible);
-  createTexelBuffer(materials_, context_, data.materials, MemoryKind::HostVisible);
-  createTexelBuffer(lights_, context_, data.lights, MemoryKind::HostVisible);
+  createTexelBuffer(scene_.objects, context_, data.objects, MemoryKind::HostVisible);
+  createTexelBuffer(scene_.materials, context_, data.materials, MemoryKind::HostVisible);
+  createTexelBuffer(scene_.lights, context_, data.lights, MemoryKind::HostVisible);
   lastObjects_ = data.objects;
   lastMaterials_ = data.materials;
   lastLights_ = data.lights;
   // Written by the shade pass as storage buffers, read by the others as texels.
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
-  createTexelBuffer(shadedPositions_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
-  createTexelBuffer(shadedColors_, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.shadedPositions, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.shadedColors, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
-  createBuffer(clipList_, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+  createBuffer(scene_.clipList, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
 }
 
-void GpuRenderer::releaseScene() {
-  for (TexelBuffer* t : {&vertices_, &triangles_, &objects_, &materials_, &lights_, &shadedPositions_, &shadedColors_}) {
-    destroyTexelBuffer(*t, context_);
-  }
-  destroyBuffer(clipList_, context_);
-}
+void GpuRenderer::releaseScene() { scene_ = {}; }
 
 // New keys are cleared by the first frame (keysDirty_). Where the host reads the colours from the
 // key slots it resets them as it goes, so the next frame need not clear the key buffer; elsewhere
@@ -114,13 +109,13 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   const VkDeviceSize bins = VkDeviceSize(binsAcross(width)) * binsAcross(height);
   checkFits(context_, pixels * sizeof(uint64_t), "the per-pixel depth keys");
-  for (Buffer* b : {&keys_, &bins_, &colors_, &keyReadback_}) destroyBuffer(*b, context_);
+  for (Buffer* b : {&image_.keys, &image_.bins, &image_.colors, &image_.keyReadback}) destroyBuffer(*b, context_);
   createLargeBuffersFor(pixels);
   // With the colours in the key slots the host reads and resets the keys in place (Shared memory).
-  createBuffer(keys_, context_, pixels * sizeof(uint64_t),
+  createBuffer(image_.keys, context_, pixels * sizeof(uint64_t),
                STORAGE | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                colorsInKeys_ ? MemoryKind::Shared : MemoryKind::DeviceLocal);
-  createBuffer(bins_, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
+  createBuffer(image_.bins, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
                STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
   keysDirty_ = true;  // the first frame clears the new keys
   width_ = width;
@@ -135,9 +130,9 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
 void GpuRenderer::ensureColorBuffer(bool wholeImage) {
   // RGB bytes, rounded up to whole words for the background and pack passes.
   const VkDeviceSize bytes = wholeImage ? (3 * VkDeviceSize(width_) * height_ + 3) / 4 * 4 : sizeof(uint32_t);
-  if (colors_.buffer != VK_NULL_HANDLE && colors_.size >= bytes) return;
-  destroyBuffer(colors_, context_);
-  createBuffer(colors_, context_, bytes, STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::HostVisible);
+  if (image_.colors.buffer != VK_NULL_HANDLE && image_.colors.size >= bytes) return;
+  destroyBuffer(image_.colors, context_);
+  createBuffer(image_.colors, context_, bytes, STORAGE | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::HostVisible);
   updateDescriptors();
 }
 
@@ -159,10 +154,10 @@ void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
   checkFits(context_, setupBytes, "the large triangles' set-ups");
   checkTexels(context_, largeBytes / TEXEL_BYTES, "the large triangles' bin entries");
   checkTexels(context_, setupBytes / TEXEL_BYTES, "the large triangles' set-ups");
-  destroyTexelBuffer(large_, context_);
-  destroyTexelBuffer(largeSetups_, context_);
-  createTexelBuffer(large_, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal);
-  createTexelBuffer(largeSetups_, context_, nullptr, setupBytes, STORAGE, MemoryKind::DeviceLocal);
+  destroyTexelBuffer(image_.large, context_);
+  destroyTexelBuffer(image_.largeSetups, context_);
+  createTexelBuffer(image_.large, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(image_.largeSetups, context_, nullptr, setupBytes, STORAGE, MemoryKind::DeviceLocal);
   largeCapacity_ = entries;
   largeSetupCapacity_ = setups;
 }
@@ -174,26 +169,26 @@ void GpuRenderer::updateDescriptors() {
     VK_CHECK(vkResetDescriptorPool(context_.device, arena_.pool, 0));
   }
   const BufferDescriptor descriptors[] = {
-      bufferDescriptor(BINDING_FRAME, frameBuffer_),
-      bufferDescriptor(BINDING_CONTROL, controlBuffer_),
-      texelDescriptor(BINDING_VERTICES, vertices_),
-      texelDescriptor(BINDING_TRIANGLES, triangles_),
-      texelDescriptor(BINDING_OBJECTS, objects_),
-      texelDescriptor(BINDING_MATERIALS, materials_),
-      texelDescriptor(BINDING_LIGHTS, lights_),
-      texelDescriptor(BINDING_SHADED, shadedPositions_),
-      texelDescriptor(BINDING_SHADED_TEXELS, shadedPositions_),
-      texelDescriptor(BINDING_SHADED_COLORS, shadedColors_),
-      texelDescriptor(BINDING_SHADED_COLOR_TEXELS, shadedColors_),
-      bufferDescriptor(BINDING_KEYS, keys_),
-      bufferDescriptor(BINDING_COLOR, colors_),
-      texelDescriptor(BINDING_LARGE, large_),
-      texelDescriptor(BINDING_LARGE_TEXELS, large_),
-      bufferDescriptor(BINDING_BINS, bins_),
-      texelDescriptor(BINDING_LARGE_SETUPS, largeSetups_),
-      texelDescriptor(BINDING_LARGE_SETUP_TEXELS, largeSetups_),
-      bufferDescriptor(BINDING_CLIP_LIST, clipList_),
-      bufferDescriptor(BINDING_STATUS, status_),
+      bufferDescriptor(BINDING_FRAME, perFrame_.frame),
+      bufferDescriptor(BINDING_CONTROL, perFrame_.control),
+      texelDescriptor(BINDING_VERTICES, scene_.vertices),
+      texelDescriptor(BINDING_TRIANGLES, scene_.triangles),
+      texelDescriptor(BINDING_OBJECTS, scene_.objects),
+      texelDescriptor(BINDING_MATERIALS, scene_.materials),
+      texelDescriptor(BINDING_LIGHTS, scene_.lights),
+      texelDescriptor(BINDING_SHADED, scene_.shadedPositions),
+      texelDescriptor(BINDING_SHADED_TEXELS, scene_.shadedPositions),
+      texelDescriptor(BINDING_SHADED_COLORS, scene_.shadedColors),
+      texelDescriptor(BINDING_SHADED_COLOR_TEXELS, scene_.shadedColors),
+      bufferDescriptor(BINDING_KEYS, image_.keys),
+      bufferDescriptor(BINDING_COLOR, image_.colors),
+      texelDescriptor(BINDING_LARGE, image_.large),
+      texelDescriptor(BINDING_LARGE_TEXELS, image_.large),
+      bufferDescriptor(BINDING_BINS, image_.bins),
+      texelDescriptor(BINDING_LARGE_SETUPS, image_.largeSetups),
+      texelDescriptor(BINDING_LARGE_SETUP_TEXELS, image_.largeSetups),
+      bufferDescriptor(BINDING_CLIP_LIST, scene_.clipList),
+      bufferDescriptor(BINDING_STATUS, perFrame_.status),
   };
   static_assert(std::size(descriptors) == std::size(SHARED_BINDINGS), "every binding of the table is written");
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
@@ -204,9 +199,9 @@ void GpuRenderer::updateDescriptors() {
 // colours are recomputed only when their inputs changed: materials, lights, ambient, the shading
 // mode or specular model, or the eye when some material is specular.
 void GpuRenderer::uploadFrame(const FrameInputs& in) {
-  const bool materialsChanged = uploadIfChanged(context_, materials_.buffer, in.materials, lastMaterials_, "materials");
-  const bool lightsChanged = uploadIfChanged(context_, lights_.buffer, in.lights, lastLights_, "lights");
-  const bool objectsChanged = uploadIfChanged(context_, objects_.buffer, in.objects, lastObjects_, "objects");
+  const bool materialsChanged = uploadIfChanged(context_, scene_.materials.buffer, in.materials, lastMaterials_, "materials");
+  const bool lightsChanged = uploadIfChanged(context_, scene_.lights.buffer, in.lights, lastLights_, "lights");
+  const bool objectsChanged = uploadIfChanged(context_, scene_.objects.buffer, in.objects, lastObjects_, "objects");
   const FrameData& f = in.frame;
   // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
   const bool positionsStale = !framesSent_ || objectsChanged || f.right != frame_.right || f.up != frame_.up ||
@@ -218,7 +213,7 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
   const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged || modelChanged ||
                            (eyeMoved && !lightingIsViewIndependent(in));
   frame_ = f;
-  uploadToBuffer(context_, frameBuffer_, &frame_, sizeof(FrameData));
+  uploadToBuffer(context_, perFrame_.frame, &frame_, sizeof(FrameData));
   frameColorsInKeys_ = colorsInKeys_ && !withKeys_;
   control_.shadeColors = colorsStale ? 1u : 0u;
   control_.shadePositions = positionsStale ? 1u : 0u;
@@ -239,7 +234,7 @@ void GpuRenderer::writeControl() {
   control_.binCount = binsAcross(width_) * binsAcross(height_);
   control_.groupCap = groupCap_;
   control_.loopProbe = LOOP_PROBE_ITERATIONS;
-  uploadToBuffer(context_, controlBuffer_, &control_, sizeof(PassControl));
+  uploadToBuffer(context_, perFrame_.control, &control_, sizeof(PassControl));
 }
 
 }  // namespace phongvk

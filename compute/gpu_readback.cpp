@@ -44,12 +44,12 @@ Image GpuRenderer::readImage(Image image) {
   reserveLarge(image.rgb, 3 * pixels);  // fresh storage on huge pages (a one-frame render's image)
   if (!frameColorsInKeys_) {
     // Resolve wrote the image's own layout: one copy (assign reuses the capacity).
-    const auto* bytes = static_cast<const uint8_t*>(colors_.mapped);
+    const auto* bytes = static_cast<const uint8_t*>(image_.colors.mapped);
     image.rgb.assign(bytes, bytes + 3 * pixels);
     return image;
   }
   image.rgb.resize(3 * pixels);
-  imageFromKeySlots({static_cast<uint64_t*>(keys_.mapped), pixels}, packColor(frame_.background), image);
+  imageFromKeySlots({static_cast<uint64_t*>(image_.keys.mapped), pixels}, packColor(frame_.background), image);
   keysDirty_ = false;
   return image;
 }

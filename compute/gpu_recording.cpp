@@ -23,16 +23,16 @@ void GpuRenderer::bindPass(VkCommandBuffer cmd, Pass pass) const {
 
 void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   resetTimestamps(cmd, timestamps_);
-  if (keysDirty_) vkCmdFillBuffer(cmd, keys_.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
+  if (keysDirty_) vkCmdFillBuffer(cmd, image_.keys.buffer, 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // KEY_CLEAR everywhere
   const VkDeviceSize binBytes = VkDeviceSize(control_.binCount) * sizeof(uint32_t);
-  vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList), binBytes, 0u);                   // no flags
-  vkCmdFillBuffer(cmd, bins_.buffer, sizeof(BinList) + binBytes, binBytes, LIST_END);  // empty lists
+  vkCmdFillBuffer(cmd, image_.bins.buffer, sizeof(BinList), binBytes, 0u);                   // no flags
+  vkCmdFillBuffer(cmd, image_.bins.buffer, sizeof(BinList) + binBytes, binBytes, LIST_END);  // empty lists
   const BinList noBins = {0, 0, 1, 1};
-  vkCmdUpdateBuffer(cmd, bins_.buffer, 0, sizeof noBins, &noBins);
+  vkCmdUpdateBuffer(cmd, image_.bins.buffer, 0, sizeof noBins, &noBins);
   const LargeList emptyList = {0, 0, 0, 0};
-  vkCmdUpdateBuffer(cmd, large_.buffer.buffer, 0, sizeof emptyList, &emptyList);
+  vkCmdUpdateBuffer(cmd, image_.large.buffer.buffer, 0, sizeof emptyList, &emptyList);
   const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0};
-  vkCmdUpdateBuffer(cmd, clipList_.buffer, 0, sizeof noClipping, &noClipping);
+  vkCmdUpdateBuffer(cmd, scene_.clipList.buffer, 0, sizeof noClipping, &noClipping);
   transferToComputeBarrier(cmd);
 
   auto bind = [&](Pass pass) { bindPass(cmd, pass); };
@@ -53,11 +53,11 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
   computeBarrier(cmd);
   bind(CLIP);
-  vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, groupsX));
+  vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
   computeBarrier(cmd);
   if (binPass_) {
     bind(BIN_LARGE);
-    vkCmdDispatchIndirect(cmd, clipList_.buffer, offsetof(IdList, binGroupsX));
+    vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, binGroupsX));
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 2);
@@ -69,7 +69,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
 // next chunk of each bin's list.
 void GpuRenderer::recordResolveLargeRound(VkCommandBuffer cmd) {
   bindPass(cmd, RESOLVE_LARGE);
-  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+  vkCmdDispatchIndirect(cmd, image_.bins.buffer, offsetof(BinList, groupsX));
   computeBarrier(cmd);
 }
 
@@ -78,7 +78,7 @@ void GpuRenderer::recordResolveLargeRound(VkCommandBuffer cmd) {
 // the next timestamp before the dispatch ends.
 void GpuRenderer::recordResolveTail(VkCommandBuffer cmd) {
   bindPass(cmd, RESOLVE_SMALL);
-  vkCmdDispatchIndirect(cmd, bins_.buffer, offsetof(BinList, groupsX));
+  vkCmdDispatchIndirect(cmd, image_.bins.buffer, offsetof(BinList, groupsX));
   computeBarrier(cmd);
   if (packsColors(withKeys_)) {  // the colours from the key slots into the colour buffer
     bindPass(cmd, PACK);
@@ -91,7 +91,7 @@ void GpuRenderer::recordResolveTail(VkCommandBuffer cmd) {
     memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferCopy keyCopy = {0, 0, VkDeviceSize(frame_.width) * frame_.height * sizeof(uint64_t)};
-    vkCmdCopyBuffer(cmd, keys_.buffer, keyReadback_.buffer, 1, &keyCopy);
+    vkCmdCopyBuffer(cmd, image_.keys.buffer, image_.keyReadback.buffer, 1, &keyCopy);
   }
 }
 

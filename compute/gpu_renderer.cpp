@@ -90,11 +90,9 @@ void GpuRenderer::replaceScene(const SceneData& data) {
 }
 
 void GpuRenderer::release() {
-  releaseScene();
-  for (Buffer* b : {&frameBuffer_, &controlBuffer_, &keys_, &bins_, &colors_, &keyReadback_, &status_}) {
-    destroyBuffer(*b, context_);
-  }
-  for (TexelBuffer* t : {&large_, &largeSetups_}) destroyTexelBuffer(*t, context_);
+  scene_ = {};
+  image_ = {};
+  perFrame_ = {};
   destroyTimestampPool(timestamps_, context_);
   destroyDescriptorArena(arena_, context_);
 }
@@ -103,8 +101,8 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image sto
   withKeys_ = withKeys;
   ensureImageBuffers(in.frame.width, in.frame.height);
   const VkDeviceSize pixels = VkDeviceSize(width_) * height_;
-  if (withKeys && keyReadback_.buffer == VK_NULL_HANDLE) {
-    createBuffer(keyReadback_, context_, pixels * sizeof(uint64_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+  if (withKeys && image_.keyReadback.buffer == VK_NULL_HANDLE) {
+    createBuffer(image_.keyReadback, context_, pixels * sizeof(uint64_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  MemoryKind::HostVisible);
   }
   uploadFrame(in);
@@ -116,7 +114,7 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image sto
   out.image = readImage(std::move(storage));
   if (withKeys) {
     out.keys.resize(pixels);
-    readFromBuffer(context_, keyReadback_, out.keys.data(), pixels * sizeof(uint64_t));
+    readFromBuffer(context_, image_.keyReadback, out.keys.data(), pixels * sizeof(uint64_t));
   }
   return out;
 }
@@ -126,7 +124,7 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image sto
 // after resolve_large's first round; the rounds it asks for (STATUS_MORE_ROUNDS) are submitted one
 // by one, then the rest of the frame.
 bool GpuRenderer::renderAttempt() {
-  auto* status = static_cast<FrameStatus*>(status_.mapped);
+  auto* status = static_cast<FrameStatus*>(perFrame_.status.mapped);
   *status = {};  // coherent memory: the device sees it at submission
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   recordFrame(cmd);  // as uploaded (bin counts included); clears keysDirty_ keys first
@@ -147,7 +145,7 @@ bool GpuRenderer::renderAttempt() {
 // One more submission of the frame's resolve (listChunk_): the status cleared, then what `record`
 // records, after a barrier on everything submitted before it.
 void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer)) {
-  *static_cast<FrameStatus*>(status_.mapped) = {};
+  *static_cast<FrameStatus*>(perFrame_.status.mapped) = {};
   VkCommandBuffer cmd = beginOneTimeCommands(context_);
   computeBarrier(cmd);
   (this->*record)(cmd);

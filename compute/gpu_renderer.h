@@ -197,10 +197,26 @@ class GpuRenderer {
   TimestampPool timestamps_;
   PassTimes times_;
 
-  Buffer frameBuffer_, controlBuffer_, clipList_, keys_, bins_, colors_, keyReadback_, status_;
-  TexelBuffer vertices_, triangles_, objects_, materials_, lights_;  // read as texels (bindings.glsl)
-  TexelBuffer shadedPositions_, shadedColors_;  // written by the shade pass, read as texels
-  TexelBuffer large_, largeSetups_;  // written as storage, read by resolve as texels
+  // The buffers, grouped by how long they live; each frees itself (vulkan/resources.h).
+  // The scene's: made by uploadScene, replaced with a new geometry (replaceScene).
+  struct SceneBuffers {
+    TexelBuffer vertices, triangles, objects, materials, lights;  // read as texels (bindings.glsl)
+    TexelBuffer shadedPositions, shadedColors;  // written by the shade pass, read as texels
+    Buffer clipList;
+  };
+  // The image's: sized to the image (ensureImageBuffers) and, for the large-triangle lists, to
+  // the scene's triangles as well (createLargeBuffersFor).
+  struct ImageBuffers {
+    Buffer keys, bins, colors, keyReadback;
+    TexelBuffer large, largeSetups;  // written as storage, read by resolve as texels
+  };
+  // The renderer's own: what each frame uploads and what its passes report.
+  struct FrameBuffers {
+    Buffer frame, control, status;
+  };
+  SceneBuffers scene_;
+  ImageBuffers image_;
+  FrameBuffers perFrame_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
   uint32_t largeCapacity_ = 0;

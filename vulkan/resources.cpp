@@ -5,12 +5,13 @@
 #include "vulkan/submit.h"
 #include "vulkan/vk_check.h"
 
-#include <cstring>
 #include <algorithm>
 #include <cassert>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace phongvk {
 namespace {
@@ -106,6 +107,7 @@ void createBuffer(Buffer& result, const VulkanContext& context, VkDeviceSize siz
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   VK_CHECK(vkCreateBuffer(context.device, &info, nullptr, &result.buffer));
   result.size = info.size;
+  result.owner = &context;
 
   try {
     VkMemoryRequirements requirements;
@@ -158,7 +160,53 @@ void destroyBuffer(Buffer& buffer, const VulkanContext& context) {
     vkFreeMemory(context.device, buffer.memory, nullptr);  // also unmaps
   }
   if (buffer.buffer) vkDestroyBuffer(context.device, buffer.buffer, nullptr);
-  buffer = {};
+  buffer.disown();
+}
+
+void Buffer::disown() {
+  buffer = VK_NULL_HANDLE;
+  memory = VK_NULL_HANDLE;
+  mapped = nullptr;
+  size = 0;
+  owner = nullptr;
+}
+
+Buffer::Buffer(Buffer&& other) noexcept
+    : buffer(other.buffer), memory(other.memory), mapped(other.mapped), size(other.size), owner(other.owner) {
+  other.disown();
+}
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+  if (this == &other) return *this;
+  if (owner) destroyBuffer(*this, *owner);
+  buffer = other.buffer;
+  memory = other.memory;
+  mapped = other.mapped;
+  size = other.size;
+  owner = other.owner;
+  other.disown();
+  return *this;
+}
+
+Buffer::~Buffer() {
+  if (owner) destroyBuffer(*this, *owner);
+}
+
+TexelBuffer::TexelBuffer(TexelBuffer&& other) noexcept : buffer(std::move(other.buffer)), view(other.view) {
+  other.view = VK_NULL_HANDLE;
+}
+
+TexelBuffer& TexelBuffer::operator=(TexelBuffer&& other) noexcept {
+  if (this == &other) return *this;
+  if (buffer.owner) destroyTexelBuffer(*this, *buffer.owner);
+  buffer = std::move(other.buffer);
+  view = other.view;
+  other.view = VK_NULL_HANDLE;
+  return *this;
+}
+
+TexelBuffer::~TexelBuffer() {
+  if (buffer.owner) destroyTexelBuffer(*this, *buffer.owner);
 }
 
 void uploadToBuffer(const VulkanContext& context, Buffer& dst, const void* data, size_t bytes, VkDeviceSize offset) {

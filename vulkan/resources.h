@@ -21,11 +21,23 @@ enum class MemoryKind {
   Shared,
 };
 
+// A buffer and its memory, freed when it goes (or by destroyBuffer before then). Move-only; the
+// context that made it must outlive it.
 struct Buffer {
   VkBuffer buffer = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   void* mapped = nullptr;  // non-null for MemoryKind::HostVisible and Shared
   VkDeviceSize size = 0;   // the VkBuffer's size: the request rounded up to a multiple of 4, at least 4
+  const VulkanContext* owner = nullptr;  // set by createBuffer
+
+  Buffer() = default;
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+  ~Buffer();
+  // Forgets the handles without freeing them: for a buffer whose device is already gone.
+  void disown();
 };
 
 // Vulkan forbids size 0, and vkCmdFillBuffer needs multiples of 4, so `size` is rounded up to a
@@ -52,9 +64,15 @@ void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, 
 
 // A buffer the shaders read as RGBA32UI texels (a uniform texel buffer: bindings.glsl). texelFetch
 // is gathered in SIMD by CPU devices (lavapipe), which load from a storage buffer lane by lane.
+// Move-only like Buffer; the view goes with it.
 struct TexelBuffer {
   Buffer buffer;
   VkBufferView view = VK_NULL_HANDLE;
+
+  TexelBuffer() = default;
+  TexelBuffer(TexelBuffer&& other) noexcept;
+  TexelBuffer& operator=(TexelBuffer&& other) noexcept;
+  ~TexelBuffer();
 };
 inline constexpr VkDeviceSize TEXEL_BYTES = 16;
 
