@@ -9,13 +9,34 @@
 #include "scene/mesh_arrays.h"
 #include "scene/scene.h"
 
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace phongvk {
+
+namespace {
+
+// A mesh given to addMesh, built once, with what it was added with: it follows the scene into
+// its other frames (Scene::frame).
+struct AddedMesh {
+  std::shared_ptr<const Mesh> mesh;
+  std::string material;
+  bool closed = false;
+};
+
+}  // namespace
 
 struct Scene::State {
   std::shared_ptr<const SceneSpec> spec;
   std::shared_ptr<const SceneSequence> sequence;  // where frame() comes from; none for one frame
+  std::vector<AddedMesh> added;                   // in the order they were added
+
+  // This scene with another model: the sequence and the added meshes stay.
+  Scene with(std::shared_ptr<const SceneSpec> other) const {
+    return Scene(std::make_shared<const State>(State{std::move(other), sequence, added}));
+  }
 };
 
 Scene::Scene(std::shared_ptr<const State> state) : state_(std::move(state)) {}
@@ -36,11 +57,11 @@ Scene Scene::withImageSize(int width, int height) const {
   auto resized = std::make_shared<SceneSpec>(*state_->spec);
   resized->camera = phongvk::withImageSize(state_->spec->camera, width, height);
   makeView(resized->camera);  // throws SceneError for a size out of range
-  return SceneAccess::make(std::move(resized), state_->sequence);
+  return state_->with(std::move(resized));
 }
 
 Scene Scene::withRender(const std::string& json) const {
-  return SceneAccess::make(std::make_shared<SceneSpec>(withRenderOptions(*state_->spec, json)), state_->sequence);
+  return state_->with(std::make_shared<SceneSpec>(withRenderOptions(*state_->spec, json)));
 }
 
 Scene Scene::share(int part, int parts) const {
@@ -50,13 +71,16 @@ Scene Scene::share(int part, int parts) const {
   auto shared = std::make_shared<SceneSpec>(*state_->spec);
   shared->sharePart = part;
   shared->shareParts = parts;
-  return SceneAccess::make(std::move(shared), state_->sequence);
+  return state_->with(std::move(shared));
 }
 
 void Scene::addMesh(const MeshArrays& mesh, const std::string& material, bool closed) {
+  AddedMesh added{std::make_shared<const Mesh>(meshFromArrays(mesh)), material, closed};
   auto changed = std::make_shared<SceneSpec>(*state_->spec);
-  addMeshObject(*changed, mesh, material, closed);
-  state_ = std::make_shared<const State>(State{std::move(changed), state_->sequence});
+  addMeshObject(*changed, added.mesh, material, closed);
+  auto state = std::make_shared<State>(State{std::move(changed), state_->sequence, state_->added});
+  state->added.push_back(std::move(added));
+  state_ = std::move(state);
 }
 
 int Scene::frameCount() const { return state_->sequence ? state_->sequence->frameCount() : 1; }
@@ -67,7 +91,9 @@ Scene Scene::frame(int index) const {
                             " is out of range: the scene has " + std::to_string(frameCount()) + " frames");
   }
   if (!state_->sequence) return *this;
-  return SceneAccess::make(std::make_shared<const SceneSpec>(state_->sequence->frame(index)), state_->sequence);
+  auto spec = std::make_shared<SceneSpec>(state_->sequence->frame(index));
+  for (const AddedMesh& added : state_->added) addMeshObject(*spec, added.mesh, added.material, added.closed);
+  return state_->with(std::move(spec));
 }
 
 namespace {
@@ -80,7 +106,11 @@ Scene firstFrame(std::shared_ptr<const SceneSequence> sequence) {
 
 }  // namespace
 
-Scene loadScene(const std::string& path) { return firstFrame(std::make_shared<const SceneSequence>(SceneSequence::load(path))); }
+Scene loadScene(const std::string& path, const LoadOptions& options) {
+  std::optional<UpAxis> up;
+  if (options.up != ModelUp::Usual) up = options.up == ModelUp::Y ? UpAxis::Y : UpAxis::Z;
+  return firstFrame(std::make_shared<const SceneSequence>(SceneSequence::load(path, up)));
+}
 
 Scene parseScene(const std::string& json, const std::string& name, const std::string& baseDir, bool objectsLater) {
   return firstFrame(

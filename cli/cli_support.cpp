@@ -65,8 +65,14 @@ Scene frameAsAsked(const Scene& sequence, int index, const ViewOptions& options)
   }
 }
 
+LoadOptions loadOptions(const ViewOptions& options) {
+  LoadOptions load;
+  if (!options.up.empty()) load.up = options.up == "y" ? ModelUp::Y : ModelUp::Z;
+  return load;
+}
+
 Scene loadEveryFrameValidated(const ViewOptions& options) {
-  const Scene scene = loadScene(options.scene);
+  const Scene scene = loadScene(options.scene, loadOptions(options));
   for (int i = 1; i < scene.frameCount(); ++i) frameAsAsked(scene, i, options);
   return frameAsAsked(scene, 0, options);
 }

@@ -2,8 +2,7 @@
 // on the public API (include/phongvk) only.
 #pragma once
 
-#include "phongvk/image.h"
-#include "tools/png_check.h"
+#include "phongvk/phongvk.h"
 
 #include <string>
 
@@ -29,7 +28,11 @@ struct ViewOptions {
   std::string shading;  // --shading, --specular, --samples: override the scene's "render" ("", 0: its own)
   std::string specular;
   int samples = 0;
+  std::string up;       // --up y|z: a model file alone stood up along this axis ("": its format's usual one)
 };
+
+// --up as the library takes it.
+LoadOptions loadOptions(const ViewOptions& options);
 
 struct RenderOptions : ViewOptions {
   std::string output;

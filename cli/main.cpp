@@ -49,6 +49,10 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
       ->check(CLI::IsMember({"phong", "blinn"}));
   command->add_option("--samples", options.samples, "1, 4, 9 or 16 samples per pixel: overrides render.samples")
       ->check(CLI::IsMember({1, 4, 9, 16}));
+  command->add_option("--up", options.up,
+                      "y or z: the up axis of a model file rendered alone, for one whose exporter used the other "
+                      "convention (default: its format's usual one, y for glTF and OBJ, z for PLY and STL)")
+      ->check(CLI::IsMember({"y", "z"}));
   command->add_option("--png-level", options.pngLevel,
                       "PNG deflate level: 0 (stored, largest) to 12 (smallest, slowest); the same pixels at every "
                       "level (default " + std::to_string(phongvk::PNG_LEVEL_DEFAULT) + ", the fastest)")

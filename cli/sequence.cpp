@@ -271,7 +271,7 @@ int runSequence(const SequenceOptions& options) {
   const InterruptGuard interrupts;
   return guarded([&] {
     const auto start = Clock::now();
-    const Scene sequence = loadScene(options.scene);
+    const Scene sequence = loadScene(options.scene, loadOptions(options));
     const FrameRange range = parseFrameRange(options.frames, sequence.frameCount());
     const std::vector<Scene> frames = prepareFrames(sequence, range, options);
     const RendererOptions rendering = rendererOptions(options, options.backend);  // the memory limit too

@@ -83,16 +83,41 @@ Scene sceneFromDict(const py::dict& d, std::optional<std::string> baseDir) {
   return parseScene(json, "", baseDir.value_or("."), true);
 }
 
-void addMesh(Scene& scene, const py::array& vertices, const py::array& faces, const std::optional<py::array>& normals,
+// `value` as a numpy array: an array as it is (rowsOf3 checks its dtype), anything else (nested
+// lists or tuples, an array-like) through numpy.asarray, as float64 where `floats`.
+py::array asArray(const py::handle& value, const char* name, bool floats) {
+  if (py::isinstance<py::array>(value)) return py::reinterpret_borrow<py::array>(value);
+  const py::object asarray = py::module_::import("numpy").attr("asarray");
+  try {
+    return floats ? asarray(value, py::arg("dtype") = "float64") : asarray(value);
+  } catch (py::error_already_set& e) {
+    throw py::value_error(std::string(name) + ": expected an array of shape (N, 3) or rows of 3 numbers, got " +
+                          std::string(py::str(py::type::of(value).attr("__name__"))) + " (" + e.what() + ")");
+  }
+}
+
+void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, const py::object& normals,
              const py::object& material, bool closed) {
+  if (faces.is_none()) {
+    // One mesh object: anything with .vertices and .faces arrays (a trimesh.Trimesh, say).
+    if (!py::hasattr(vertices, "vertices") || !py::hasattr(vertices, "faces")) {
+      throw py::type_error("add_mesh: expected vertices and faces, or one object with .vertices and .faces "
+                           "arrays (a trimesh.Trimesh, for one), got " +
+                           std::string(py::str(py::type::of(vertices).attr("__name__"))));
+    }
+    addMesh(scene, vertices.attr("vertices"), vertices.attr("faces"), normals, material, closed);
+    return;
+  }
+  const py::array vertexArray = asArray(vertices, "vertices", true);
   MeshArrays mesh;
-  mesh.positions = rowsOf3<float>(vertices, "vertices", 'f');
-  mesh.triangles = rowsOf3<int64_t>(faces, "faces", 'i');
-  if (normals) {
-    mesh.normals = rowsOf3<float>(*normals, "normals", 'f');
-    if (normals->shape(0) != vertices.shape(0)) {
-      throw py::value_error("normals: expected one row per vertex (" + std::to_string(vertices.shape(0)) +
-                            "), got " + std::to_string(normals->shape(0)));
+  mesh.positions = rowsOf3<float>(vertexArray, "vertices", 'f');
+  mesh.triangles = rowsOf3<int64_t>(asArray(faces, "faces", false), "faces", 'i');
+  if (!normals.is_none()) {
+    const py::array normalArray = asArray(normals, "normals", true);
+    mesh.normals = rowsOf3<float>(normalArray, "normals", 'f');
+    if (normalArray.shape(0) != vertexArray.shape(0)) {
+      throw py::value_error("normals: expected one row per vertex (" + std::to_string(vertexArray.shape(0)) +
+                            "), got " + std::to_string(normalArray.shape(0)));
     }
   }
   const std::string materialJson = material.is_none() ? "" : JsonWriter("").write(material);
@@ -212,12 +237,15 @@ others.)")
 with_render(shading="phong", samples=4): shading ("gouraud", "flat", "phong"), specular ("phong",
 "blinn"), samples (1, 4, 9, 16), interpolation ("perspective", "screen"). Checked like a scene
 file's; a bad value raises SceneError naming render.KEY.)")
-      .def("add_mesh", &addMesh, py::arg("vertices"), py::arg("faces"), py::arg("normals") = py::none(),
+      .def("add_mesh", &addMesh, py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none(),
            py::arg("material") = py::none(), py::arg("closed") = false,
-           R"(Adds a triangle mesh object.
+           R"(Adds a triangle mesh object; it follows the scene into its other frames (frame(i)).
 
-vertices: (N, 3) floating-point array of world positions.
-faces: (M, 3) integer array of vertex indices, counter-clockwise seen from outside.
+vertices: (N, 3) floating-point array of world positions (or rows of 3 numbers), or, with
+    faces left out, one mesh object with .vertices and .faces arrays (a trimesh.Trimesh works
+    without phongvk importing trimesh).
+faces: (M, 3) integer array of vertex indices (or rows of 3 integers), counter-clockwise seen
+    from outside.
 normals: optional (N, 3) floating-point array of vertex normals; computed from the faces
     (area-weighted) when not given.
 material: None (the default material), the name of one of the scene's materials, or a dict of
@@ -232,8 +260,21 @@ argument and the first bad row; a bad material raises SceneError.)")
                std::to_string(s.width()) + "x" + std::to_string(s.height()) + ">";
       });
 
-  m.def("load_scene", &loadScene, py::arg("path"),
-        "Reads and validates a scene file (the CLI's schema). Raises SceneError naming the file and the JSON path.");
+  m.def(
+      "load_scene",
+      [](const std::string& path, std::optional<std::string> up) {
+        LoadOptions options;
+        if (up && *up != "y" && *up != "z") throw ArgumentError("up: expected 'y' or 'z', got '" + *up + "'");
+        if (up) options.up = *up == "y" ? ModelUp::Y : ModelUp::Z;
+        return loadScene(path, options);
+      },
+      py::arg("path"), py::arg("up") = py::none(),
+      R"(Reads and validates a scene file (the CLI's schema), or a model file (.obj .ply .stl .gltf
+.glb) as a scene of its own: the model in full view, lit from the camera. Raises SceneError naming
+the file and the JSON path.
+
+up: None, "y" or "z": the up axis of a model file loaded alone, for one whose exporter used the
+    other convention (None: its format's usual one, y for glTF and OBJ, z for PLY and STL).)");
   m.def("scene_from_dict", &sceneFromDict, py::arg("d"), py::arg("base_dir") = py::none(),
         R"(A scene from a dict with the scene file's schema, validated the same way.
 
@@ -256,6 +297,10 @@ other threads go on; one renderer used from several threads renders one frame at
              return std::make_unique<Renderer>(rendererOptions(backend, device, validate));
            }),
            py::arg("backend") = "gpu", py::arg("device") = py::none(), py::arg("validate") = false)
+      .def("__repr__",
+           [](const Renderer& r) {
+             return "<phongvk.Renderer " + std::string(backendName(r.backend())) + " on " + r.deviceName() + ">";
+           })
       .def(
           "render",
           [](Renderer& r, const Scene& scene, std::optional<int> width, std::optional<int> height) {

@@ -171,11 +171,15 @@ std::vector<PathStep> parseTrackPath(const Node& node) {
   return steps;
 }
 
-SceneSequence SceneSequence::load(const std::string& path) {
+SceneSequence SceneSequence::load(const std::string& path, std::optional<UpAxis> modelUp) {
   if (isModelFile(path)) {
-    SceneSequence model(modelScene(path), path, "");
+    SceneSequence model(modelScene(path, modelUp), path, "");
     model.modelAlone_ = true;
     return model;
+  }
+  if (modelUp) {
+    throw ArgumentError(path + ": an up axis applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "
+                        "in a scene file each mesh object has its own \"up\"");
   }
   return SceneSequence(parseJson(readSceneText(path), path), path,
                        std::filesystem::path(path).parent_path().string());

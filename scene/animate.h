@@ -43,8 +43,9 @@ std::vector<PathStep> parseTrackPath(const scenejson::Node& node);
 
 class SceneSequence {
  public:
-  // Reads a scene file; errors as loadSceneSpec's.
-  static SceneSequence load(const std::string& path);
+  // Reads a scene file, or a model file alone (model_scene.h) stood up along `modelUp` where given;
+  // errors as loadSceneSpec's.
+  static SceneSequence load(const std::string& path, std::optional<UpAxis> modelUp = std::nullopt);
   // `json` is the whole scene file; `path` names it in messages and `baseDir` resolves its
   // relative files. Validates the "animate" block, evaluating every expression at every frame
   // (so a NaN at frame 17 is an error before anything is rendered), and that every track path

@@ -84,11 +84,15 @@ Mesh meshFromArrays(const MeshArrays& a) {
 }
 
 void addMeshObject(SceneSpec& scene, const MeshArrays& arrays, const std::string& material, bool closed) {
+  addMeshObject(scene, std::make_shared<const Mesh>(meshFromArrays(arrays)), material, closed);
+}
+
+void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const std::string& material, bool closed) {
   Object object;
   object.shape = Shape::Mesh;
   object.jsonPath = "objects[" + std::to_string(scene.objects.size()) + "]";
   object.closed = closed;
-  object.arrays = std::make_shared<const Mesh>(meshFromArrays(arrays));
+  object.arrays = std::move(mesh);
   SceneSpec changed = scene;  // the material may add an entry; nothing changes if it fails
   scenejson::MaterialTable table(changed);
   const size_t first = material.find_first_not_of(" \t\n");

@@ -6,6 +6,7 @@
 #include "phongvk/mesh.h"
 #include "scene/scene.h"
 
+#include <memory>
 #include <string>
 
 namespace phongvk {
@@ -21,5 +22,8 @@ Mesh meshFromArrays(const MeshArrays& arrays);
 // fields), read like a scene file's "material" (messages name "objects[N].material"). Throws std::invalid_argument for bad
 // arrays, SceneError for a bad material; `scene` is unchanged then.
 void addMeshObject(SceneSpec& scene, const MeshArrays& arrays, const std::string& material, bool closed);
+// The same for a mesh already built from arrays (meshFromArrays): how a scene's added meshes
+// follow it into its other frames, built once.
+void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const std::string& material, bool closed);
 
 }  // namespace phongvk

@@ -13,7 +13,7 @@ bool isModelFile(const std::string& path) {
   return extension == ".obj" || extension == ".ply" || extension == ".stl" || extension == ".gltf" || extension == ".glb";
 }
 
-scenejson::Json modelScene(const std::string& path) {
+scenejson::Json modelScene(const std::string& path, std::optional<UpAxis> up) {
   const DetectedFormat detected = detectMeshFormat(path);
   if (!detected.format) throw SceneError(detected.problem);  // "<path>: <why>": the user's file alone
   const MeshFormat format = *detected.format;
@@ -26,7 +26,7 @@ scenejson::Json modelScene(const std::string& path) {
       {"objects",
        {{{"shape", "mesh"},
          {"file", file},
-         {"up", usuallyYUp(format) ? "y" : "z"},
+         {"up", up ? (*up == UpAxis::Y ? "y" : "z") : usuallyYUp(format) ? "y" : "z"},
          {"material", {{"attenuation", {1, 0, 0}}}}}}},
   };
 }

@@ -4,6 +4,7 @@
 
 #include "scene/scene_json.h"
 
+#include <optional>
 #include <string>
 
 namespace phongvk {
@@ -12,10 +13,10 @@ namespace phongvk {
 // rather than a scene file.
 bool isModelFile(const std::string& path);
 
-// The scene for a model alone: the mesh (up axis as its format usually has it, mesh_file.h
-// usuallyYUp; back faces drawn), a camera fitted from the front, left and above (960x720, 40°
+// The scene for a model alone: the mesh (up axis `up` where given, else as its format usually has
+// it, mesh_file.h usuallyYUp; back faces drawn), a camera fitted from the front, left and above (960x720, 40°
 // field of view), one white light at the camera without fall-off, a dark grey background.
 // A glTF model keeps its base colours. Throws SceneError for a file that is not a mesh.
-scenejson::Json modelScene(const std::string& path);
+scenejson::Json modelScene(const std::string& path, std::optional<UpAxis> up = std::nullopt);
 
 }  // namespace phongvk

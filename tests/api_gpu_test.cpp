@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -136,6 +138,39 @@ TEST(Api, AnimationFramesAreScenes) {
   EXPECT_FALSE(cpu.render(first).rgb == cpu.render(later).rgb);  // the camera moved
   EXPECT_EQ(cpu.stats().sceneBuilds, 1u);
   EXPECT_THROW(sequence.frame(120), RangeError);
+}
+
+// A mesh added to an animated scene is in every frame, built once: each frame renders on both
+// backends the bytes of the same frame with the mesh in its file, and the renderer builds the
+// added mesh's geometry once for frames whose geometry stays the same.
+TEST(Api, AddedMeshesFollowTheSceneIntoItsFrames) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "phongvk_api_added_meshes";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "tri.obj") << "v 0 0 0.5\nv 0.8 0 0.5\nv 0 0.8 0.5\nf 1 2 3\n";
+  const std::string animated = R"j({"camera": {"position": [2, -1.5, 1], "look_at": [0, 0, 0], "width": 96, "height": 64},
+      "lights": [{"position": [2, -3, 3]}], "materials": {"red": {"color": [1, 0.2, 0.2]}},
+      "objects": [{"shape": "sphere", "radius": 0.4}%s],
+      "animate": {"frames": 4, "tracks": [{"path": "camera.position", "expression": ["2*cos(i)", "2*sin(i)", 1]}]}})j";
+  const auto withObjects = [&](const std::string& more) {
+    std::string text = animated;
+    text.replace(text.find("%s"), 2, more);
+    return text;
+  };
+  Scene added = parseScene(withObjects(""), "a.json", dir.string());
+  MeshArrays mesh;
+  mesh.positions = {0, 0, 0.5f, 0.8f, 0, 0.5f, 0, 0.8f, 0.5f};
+  mesh.triangles = {0, 1, 2};
+  added.addMesh(mesh, "red");
+  const Scene inFile =
+      parseScene(withObjects(R"(, {"shape": "mesh", "file": "tri.obj", "material": "red"})"), "a.json", dir.string());
+  ASSERT_EQ(added.frameCount(), 4);
+  Renderer gpu(validatedGpu()), cpu(Backend::Cpu);
+  for (int i = 0; i < added.frameCount(); ++i) {
+    EXPECT_EQ(added.frame(i).objectCount(), 2u) << "frame " << i;
+    const Image fromFile = cpu.render(inFile.frame(i));
+    EXPECT_TRUE(cpu.render(added.frame(i)).rgb == fromFile.rgb) << "frame " << i;
+    EXPECT_TRUE(gpu.render(added.frame(i)).rgb == fromFile.rgb) << "frame " << i;
+  }
 }
 
 TEST(Api, BackendsByName) {

@@ -5,6 +5,7 @@
 // files failing with the scene file, the JSON path and the mesh file named.
 #include <phongvk/phongvk.h>
 
+#include "base/number_text.h"
 #include "geometry/polygon.h"
 #include "meshio/mesh_file.h"
 #include "meshio/mesh_import.h"
@@ -381,6 +382,38 @@ TEST(MeshFiles, ModelFileAloneRendersFromTheCommandLine) {
   EXPECT_TRUE(std::filesystem::exists(dir + "/box.png"));
   const CommandResult diffed = runCli("diff " + kModels + "PLY/Wuson.ply");
   EXPECT_EQ(diffed.exitCode, 0) << diffed.output;
+}
+
+// A model exported y-up renders, with --up y (LoadOptions), exactly as the same model exported z-up
+// renders by default: the file's (a, c, -b) stood up is (a, b, c). Asked of a scene file, an up
+// axis is an error (exit 2): a scene file gives each object its own "up".
+TEST(MeshFiles, UpAxisOfAModelAlone) {
+  const std::string dir = makeTempDir();
+  const std::vector<glm::vec3> zUp = {{0, 0, 0}, {1, 0, 0}, {0, 0.5f, 0}, {0.25f, 0.2f, 1.5f}};
+  const auto writePly = [&](const std::string& name, bool yUp) {
+    std::string text = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                       "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const glm::vec3& p : zUp) {
+      const glm::vec3 q = yUp ? glm::vec3(p.x, p.z, -p.y) : p;
+      text += formatNumber(q.x) + " " + formatNumber(q.y) + " " + formatNumber(q.z) + "\n";
+    }
+    writeFile(dir + "/" + name, text + "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n");
+  };
+  writePly("z_up.ply", false);
+  writePly("y_up.ply", true);
+  const Image expected = renderBoth(loadScene(dir + "/z_up.ply"));
+  EXPECT_TRUE(renderBoth(loadScene(dir + "/y_up.ply", {.up = ModelUp::Y})).rgb == expected.rgb);
+  EXPECT_FALSE(renderBoth(loadScene(dir + "/y_up.ply")).rgb == expected.rgb);  // lying on its side
+  EXPECT_TRUE(renderBoth(loadScene(dir + "/z_up.ply", {.up = ModelUp::Z})).rgb == expected.rgb);
+
+  const CommandResult cli = runCli("render '" + dir + "/y_up.ply' --up y -o '" + dir + "/y.png'");
+  EXPECT_EQ(cli.exitCode, 0) << cli.output;
+  EXPECT_TRUE(readPng(dir + "/y.png").rgb == expected.rgb);
+  const CommandResult scene = runCli("render " + test::sourcePath("scenes/basic.json") + " --up y -o '" + dir + "/s.png'");
+  EXPECT_EQ(scene.exitCode, 2) << scene.output;
+  EXPECT_NE(scene.output.find("basic.json: an up axis applies to a model file rendered alone"), std::string::npos)
+      << scene.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/s.png"));
 }
 
 }  // namespace

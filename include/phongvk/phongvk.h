@@ -65,7 +65,7 @@ class PHONGVK_API Scene {
   void addMesh(const MeshArrays& mesh, const std::string& material = "", bool closed = false);
 
   // The frames of the file's "animate" block (1 without one; this scene is frame 0), each
-  // validated like a scene file. Meshes added with addMesh are not in them. frame throws
+  // validated like a scene file, with the meshes added with addMesh (built once). frame throws
   // RangeError outside 0..frameCount()-1, SceneError for a bad frame.
   int frameCount() const;
   Scene frame(int index) const;
@@ -78,9 +78,20 @@ class PHONGVK_API Scene {
   friend struct SceneAccess;  // the library's own way in (api/scene_access.h)
 };
 
-// Reads and validates a scene file. Throws SceneError naming the file and the JSON path (and for a
-// mesh the inner file and line). A file with an "animate" block gives its frame 0.
-PHONGVK_API Scene loadScene(const std::string& path);
+// How a model file loaded alone (no scene file: loadScene("model.ply")) is stood up: with the up
+// axis its format usually has (y for glTF and OBJ, z for PLY and STL), or the one given, for a
+// model whose exporter used the other convention.
+enum class ModelUp { Usual, Y, Z };
+
+struct LoadOptions {
+  ModelUp up = ModelUp::Usual;  // only for a model file alone: a scene file names each object's "up"
+};
+
+// Reads and validates a scene file, or a model file (.obj .ply .stl .gltf .glb) as a scene of its
+// own: the model in full view, lit from the camera. Throws SceneError naming the file and the JSON
+// path (and for a mesh the inner file and line), ArgumentError for an up axis given with a scene
+// file. A file with an "animate" block gives its frame 0.
+PHONGVK_API Scene loadScene(const std::string& path, const LoadOptions& options = {});
 
 // The same from JSON text: `name` stands for the file in messages (none when empty) and relative
 // mesh paths resolve against `baseDir`. With `objectsLater` the scene may have no objects yet

@@ -11,7 +11,15 @@ phongvk.diff(scene) compares them. Meshes come from scene files or as numpy arra
 this package only shapes it for Python.
 """
 
-import numpy as _np
+import sys as _sys
+
+try:
+    import numpy as _np
+except ImportError as _error:
+    raise ImportError(
+        "phongvk needs numpy, which this Python (%s) cannot import. phongvk is built for Debian's "
+        "Python: run it with /usr/bin/python3 (scripts/setup.sh installs python3-numpy), or install "
+        "numpy for this interpreter." % _sys.executable) from _error
 
 from . import _phongvk
 from ._phongvk import (

@@ -122,6 +122,82 @@ def test_animation_frames():
     assert phongvk.load_scene(scene_path("scenes/basic.json")).frame_count == 1
 
 
+def test_added_meshes_follow_the_scene_into_its_frames():
+    scene = phongvk.load_scene(scene_path("scenes/paper/fig6_orbit_red.json"))
+    before = scene.object_count
+    vertices, faces = octahedron()
+    scene.add_mesh(vertices, faces, material={"color": [0.2, 0.4, 1.0]})
+    renderer = phongvk.Renderer("cpu")
+    for index in (0, 30):
+        frame = scene.frame(index)
+        assert frame.object_count == before + 1
+        without = phongvk.load_scene(scene_path("scenes/paper/fig6_orbit_red.json")).frame(index)
+        assert not np.array_equal(renderer.render(frame, 96, 64), renderer.render(without, 96, 64))
+
+
+class MeshLike:
+    """What a trimesh.Trimesh offers phongvk: .vertices and .faces arrays."""
+
+    def __init__(self, vertices, faces):
+        self.vertices, self.faces = vertices, faces
+
+
+def test_add_mesh_takes_lists_and_mesh_objects():
+    vertices, faces = octahedron()
+    base = {"camera": CAMERA, "lights": [{"position": [2, -3, 3]}], "objects": []}
+    from_arrays = phongvk.scene_from_dict(base)
+    from_arrays.add_mesh(vertices, faces)
+    from_lists = phongvk.scene_from_dict(base)
+    from_lists.add_mesh(vertices.tolist(), faces.tolist())
+    from_object = phongvk.scene_from_dict(base)
+    from_object.add_mesh(MeshLike(vertices, faces))
+    renderer = phongvk.Renderer("cpu")
+    expected = renderer.render(from_arrays)
+    assert expected.any()
+    assert np.array_equal(renderer.render(from_lists), expected)
+    assert np.array_equal(renderer.render(from_object), expected)
+    with pytest.raises(TypeError, match=r"one object with \.vertices and \.faces arrays .*, got int"):
+        from_arrays.add_mesh(3)
+    with pytest.raises(ValueError, match=r"faces: expected an integer array of shape \(N, 3\), got dtype float64"):
+        from_arrays.add_mesh(vertices.tolist(), [[0.5, 1, 2]])
+    with pytest.raises(ValueError, match=r"vertices: expected an array of shape \(N, 3\) or rows of 3 numbers, got list"):
+        from_arrays.add_mesh([[0, 0, 0], [1, 0]], [[0, 1, 2]])
+
+
+def test_up_axis_of_a_model_alone(tmp_path):
+    """A model exported y-up renders with up="y" exactly as the same model exported z-up."""
+    z_up = np.array([[0, 0, 0], [1, 0, 0], [0, 0.5, 0], [0.25, 0.2, 1.5]], np.float32)
+    faces = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n"
+    header = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+              "element face 4\nproperty list uchar int vertex_indices\nend_header\n")
+    for name, points in (("z_up.ply", z_up), ("y_up.ply", z_up[:, [0, 2, 1]] * np.float32([1, 1, -1]))):
+        (tmp_path / name).write_text(header + "".join("%r %r %r\n" % tuple(map(float, p)) for p in points) + faces)
+    renderer = phongvk.Renderer("cpu")
+    expected = renderer.render(phongvk.load_scene(str(tmp_path / "z_up.ply")), 120, 90)
+    assert np.array_equal(renderer.render(phongvk.load_scene(str(tmp_path / "y_up.ply"), up="y"), 120, 90), expected)
+    assert not np.array_equal(renderer.render(phongvk.load_scene(str(tmp_path / "y_up.ply")), 120, 90), expected)
+    with pytest.raises(ValueError, match=r"up: expected 'y' or 'z', got 'x'"):
+        phongvk.load_scene(str(tmp_path / "y_up.ply"), up="x")
+    with pytest.raises(phongvk.ArgumentError, match=r"an up axis applies to a model file rendered alone"):
+        phongvk.load_scene(scene_path("scenes/basic.json"), up="z")
+
+
+def test_renderer_repr_names_backend_and_device():
+    assert repr(phongvk.Renderer("cpu")) == "<phongvk.Renderer cpu on cpu (reference)>"
+    gpu = phongvk.Renderer("gpu")
+    assert repr(gpu) == "<phongvk.Renderer gpu on %s>" % gpu.device_name
+
+
+def test_import_without_numpy_says_which_python_to_use():
+    import subprocess
+    import sys
+    code = "import sys; sys.modules['numpy'] = None; import phongvk"
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert result.returncode != 0
+    assert "phongvk needs numpy, which this Python (%s) cannot import" % sys.executable in result.stderr
+    assert "/usr/bin/python3" in result.stderr
+
+
 def test_visibility_buffer_is_the_same_on_both_backends():
     scene = phongvk.load_scene(scene_path("scenes/paper/fig1_cube.json"))
     a_image, a_tri, a_depth = phongvk.Renderer("gpu").render_visibility(scene, 200, 130)
