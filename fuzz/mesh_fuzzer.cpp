@@ -6,6 +6,7 @@
 #include "fuzz/mesh_checks.h"
 #include "meshio/mesh_file.h"
 #include "meshio/mesh_import.h"
+#include "phongvk/errors.h"
 
 #include <unistd.h>
 
