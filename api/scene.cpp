@@ -3,6 +3,7 @@
 #include "phongvk/phongvk.h"
 
 #include "api/scene_access.h"
+#include "api/scene_parts.h"
 
 #include "scene/animate.h"
 #include "scene/camera.h"
@@ -21,21 +22,41 @@ namespace {
 // A mesh given to addMesh, built once, with what it was added with: it follows the scene into
 // its other frames (Scene::frame).
 struct AddedMesh {
+  ObjectId id;
   std::shared_ptr<const Mesh> mesh;
   std::string material;
   bool closed = false;
+  Matrix4 pose = IDENTITY_POSE;
 };
+
+// Appends `added` to `spec` as a mesh object at its pose.
+void appendAdded(SceneSpec& spec, const AddedMesh& added) {
+  addMeshObject(spec, added.mesh, added.material, added.closed);
+  placeObject(spec.objects.back(), added.pose);
+}
 
 }  // namespace
 
 struct Scene::State {
   std::shared_ptr<const SceneSpec> spec;
   std::shared_ptr<const SceneSequence> sequence;  // where frame() comes from; none for one frame
-  std::vector<AddedMesh> added;                   // in the order they were added
+  std::vector<AddedMesh> added;                   // in the order they were added: the spec's last objects
+  unsigned long long nextId = 1;
+
+  // Where `id` is in `added`; RangeError for a handle this scene does not hold.
+  size_t position(ObjectId id, const std::string& path) const {
+    for (size_t i = 0; i < added.size(); ++i) {
+      if (added[i].id == id) return i;
+    }
+    throw RangeError((path.empty() ? "" : path + ": ") + "no object " + std::to_string(id.value) +
+                     " (removed, or added to another scene)");
+  }
+  // The index in spec->objects of added[i].
+  size_t objectIndex(size_t i) const { return spec->objects.size() - added.size() + i; }
 
   // This scene with another model: the sequence and the added meshes stay.
   Scene with(std::shared_ptr<const SceneSpec> other) const {
-    return Scene(std::make_shared<const State>(State{std::move(other), sequence, added}));
+    return Scene(std::make_shared<const State>(State{std::move(other), sequence, added, nextId}));
   }
 };
 
@@ -75,11 +96,56 @@ Scene Scene::share(int part, int parts) const {
 }
 
 void Scene::addMesh(const MeshArrays& mesh, const std::string& material, bool closed) {
-  AddedMesh added{std::make_shared<const Mesh>(meshFromArrays(mesh)), material, closed};
+  add(mesh, IDENTITY_POSE, material, closed);
+}
+
+ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::string& material, bool closed) {
+  AddedMesh added{ObjectId{state_->nextId}, std::make_shared<const Mesh>(meshFromArrays(mesh)), material, closed, pose};
   auto changed = std::make_shared<SceneSpec>(*state_->spec);
-  addMeshObject(*changed, added.mesh, material, closed);
-  auto state = std::make_shared<State>(State{std::move(changed), state_->sequence, state_->added});
+  appendAdded(*changed, added);
+  auto state = std::make_shared<State>(*state_);
+  state->spec = std::move(changed);
   state->added.push_back(std::move(added));
+  ++state->nextId;
+  state_ = std::move(state);
+  return ObjectId{state_->nextId - 1};
+}
+
+void Scene::setPose(ObjectId object, const Matrix4& pose) {
+  const size_t i = state_->position(object, path());
+  auto changed = std::make_shared<SceneSpec>(*state_->spec);
+  placeObject(changed->objects[state_->objectIndex(i)], pose);
+  auto state = std::make_shared<State>(*state_);
+  state->spec = std::move(changed);
+  state->added[i].pose = pose;
+  state_ = std::move(state);
+}
+
+void Scene::remove(ObjectId object) {
+  const size_t i = state_->position(object, path());
+  auto changed = std::make_shared<SceneSpec>(*state_->spec);
+  const size_t index = state_->objectIndex(i);
+  changed->objects.erase(changed->objects.begin() + ptrdiff_t(index));
+  for (size_t k = index; k < changed->objects.size(); ++k) changed->objects[k].jsonPath = "objects[" + std::to_string(k) + "]";
+  auto state = std::make_shared<State>(*state_);
+  state->spec = std::move(changed);
+  state->added.erase(state->added.begin() + ptrdiff_t(i));
+  state_ = std::move(state);
+}
+
+Camera Scene::camera() const { return cameraOf(*state_->spec); }
+
+void Scene::setCamera(const Camera& camera) {
+  auto state = std::make_shared<State>(*state_);
+  state->spec = std::make_shared<const SceneSpec>(withCamera(*state_->spec, camera));
+  state_ = std::move(state);
+}
+
+std::vector<PointLight> Scene::lights() const { return lightsOf(*state_->spec); }
+
+void Scene::setLights(const std::vector<PointLight>& lights) {
+  auto state = std::make_shared<State>(*state_);
+  state->spec = std::make_shared<const SceneSpec>(withLights(*state_->spec, lights));
   state_ = std::move(state);
 }
 
@@ -92,7 +158,7 @@ Scene Scene::frame(int index) const {
   }
   if (!state_->sequence) return *this;
   auto spec = std::make_shared<SceneSpec>(state_->sequence->frame(index));
-  for (const AddedMesh& added : state_->added) addMeshObject(*spec, added.mesh, added.material, added.closed);
+  for (const AddedMesh& added : state_->added) appendAdded(*spec, added);
   return state_->with(std::move(spec));
 }
 

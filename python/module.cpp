@@ -96,17 +96,16 @@ py::array asArray(const py::handle& value, const char* name, bool floats) {
   }
 }
 
-void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, const py::object& normals,
-             const py::object& material, bool closed) {
+// The arrays of a mesh: vertices and faces, or (faces None) one object with .vertices and .faces
+// arrays (a trimesh.Trimesh, say).
+MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const py::object& normals) {
   if (faces.is_none()) {
-    // One mesh object: anything with .vertices and .faces arrays (a trimesh.Trimesh, say).
     if (!py::hasattr(vertices, "vertices") || !py::hasattr(vertices, "faces")) {
       throw py::type_error("add_mesh: expected vertices and faces, or one object with .vertices and .faces "
                            "arrays (a trimesh.Trimesh, for one), got " +
                            std::string(py::str(py::type::of(vertices).attr("__name__"))));
     }
-    addMesh(scene, vertices.attr("vertices"), vertices.attr("faces"), normals, material, closed);
-    return;
+    return meshArrays(vertices.attr("vertices"), vertices.attr("faces"), normals);
   }
   const py::array vertexArray = asArray(vertices, "vertices", true);
   MeshArrays mesh;
@@ -120,8 +119,45 @@ void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, 
                             "), got " + std::to_string(normalArray.shape(0)));
     }
   }
-  const std::string materialJson = material.is_none() ? "" : JsonWriter("").write(material);
-  scene.addMesh(mesh, materialJson, closed);
+  return mesh;
+}
+
+std::string materialText(const py::object& material) {
+  return material.is_none() ? "" : JsonWriter("").write(material);
+}
+
+// A (4, 4) array (or rows of 4 numbers) as a row-major Matrix4; None is the identity.
+Matrix4 matrix4(const py::object& value, const char* name) {
+  if (value.is_none()) return IDENTITY_POSE;
+  const py::array a = asArray(value, name, true);
+  if (a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
+    throw py::value_error(std::string(name) + ": expected a 4x4 matrix, got shape " + shapeText(a));
+  }
+  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  Matrix4 m;
+  std::memcpy(m.data(), values.data(), sizeof m);
+  return m;
+}
+
+PoseConvention convention(const std::string& name) {
+  if (name == "opengl") return PoseConvention::OpenGL;
+  if (name == "opencv") return PoseConvention::OpenCV;
+  throw ArgumentError("convention: expected 'opengl' or 'opencv', got '" + name + "'");
+}
+
+void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, const py::object& normals,
+             const py::object& material, bool closed) {
+  scene.addMesh(meshArrays(vertices, faces, normals), materialText(material), closed);
+}
+
+unsigned long long addObject(Scene& scene, const py::object& mesh, const py::object& faces, const py::object& pose,
+                             const py::object& material, bool closed) {
+  return scene.add(meshArrays(mesh, faces, py::none()), matrix4(pose, "pose"), materialText(material), closed).value;
+}
+
+std::string vec3Text(const Vec3& v) {
+  return "(" + std::string(py::str(py::float_(v[0]))) + ", " + std::string(py::str(py::float_(v[1]))) + ", " +
+         std::string(py::str(py::float_(v[2]))) + ")";
 }
 
 // ---- rendering ----
@@ -216,6 +252,67 @@ PYBIND11_MODULE(_phongvk, m) {
   m.attr("__version__") = version();
   m.attr("__revision__") = revision();
 
+  py::class_<Camera>(m, "Camera", R"(A pinhole camera: position, look_at, up (world coordinates, z up by
+default), fov (vertical, degrees), width x height (0 x 0: the scene's own size), near and far.
+Camera.from_pose and Camera.from_intrinsics make one from a camera-to-world matrix. Assigned to
+Scene.camera, it is checked like a scene file's "camera".)")
+      .def(py::init([](Vec3 position, Vec3 lookAt, Vec3 up, double fov, int width, int height, double nearPlane,
+                       double farPlane) { return Camera{position, lookAt, up, fov, width, height, nearPlane, farPlane}; }),
+           py::kw_only(), py::arg("position") = Camera{}.position, py::arg("look_at") = Camera{}.lookAt,
+           py::arg("up") = Camera{}.up, py::arg("fov") = Camera{}.fov, py::arg("width") = 0, py::arg("height") = 0,
+           py::arg("near") = Camera{}.nearPlane, py::arg("far") = Camera{}.farPlane)
+      .def_readwrite("position", &Camera::position)
+      .def_readwrite("look_at", &Camera::lookAt)
+      .def_readwrite("up", &Camera::up)
+      .def_readwrite("fov", &Camera::fov)
+      .def_readwrite("width", &Camera::width)
+      .def_readwrite("height", &Camera::height)
+      .def_readwrite("near", &Camera::nearPlane)
+      .def_readwrite("far", &Camera::farPlane)
+      .def_static(
+          "from_pose",
+          [](const py::object& pose, const std::string& conventionName, double fov, int width, int height) {
+            return cameraFromPose(matrix4(pose, "pose"), convention(conventionName), fov, width, height);
+          },
+          py::arg("pose"), py::kw_only(), py::arg("convention") = "opengl", py::arg("fov") = 60.0,
+          py::arg("width") = 0, py::arg("height") = 0,
+          R"(The camera a (4, 4) camera-to-world pose describes. convention: "opengl" (the camera looks
+down its -z, y up: Blender, three.js, NeRF) or "opencv" (looks down +z, y down: COLMAP, most
+datasets). A pose whose rotation block is not a rotation raises ValueError.)")
+      .def_static(
+          "from_intrinsics",
+          [](double fx, double fy, double cx, double cy, int width, int height, const py::object& pose,
+             const std::string& conventionName) {
+            return cameraFromIntrinsics(fx, fy, cx, cy, width, height, matrix4(pose, "pose"), convention(conventionName));
+          },
+          py::arg("fx"), py::arg("fy"), py::arg("cx"), py::arg("cy"), py::arg("width"), py::arg("height"),
+          py::arg("pose") = py::none(), py::arg("convention") = "opencv",
+          R"(The camera of pinhole intrinsics (pixels, OpenCV's convention: pixel centres at integer
+coordinates) and a (4, 4) camera-to-world pose (identity when None). phongvk renders square pixels
+about the image centre: fx must equal fy and (cx, cy) be ((width - 1) / 2, (height - 1) / 2),
+each within 1e-6 relative, else ValueError.)")
+      .def("__repr__", [](const Camera& c) {
+        return "phongvk.Camera(position=" + vec3Text(c.position) + ", look_at=" + vec3Text(c.lookAt) + ", up=" +
+               vec3Text(c.up) + ", fov=" + std::string(py::str(py::float_(c.fov))) + ", width=" +
+               std::to_string(c.width) + ", height=" + std::to_string(c.height) + ")";
+      });
+
+  py::class_<PointLight>(m, "Light", R"(A point light: position (or at_camera=True: at the eye, wherever
+the camera is), intensity, color. Assigned to Scene.lights, checked like a scene file's "lights".)")
+      .def(py::init([](Vec3 position, double intensity, Vec3 color, bool atCamera) {
+             return PointLight{position, intensity, color, atCamera};
+           }),
+           py::kw_only(), py::arg("position") = Vec3{0, 0, 0}, py::arg("intensity") = 1.0,
+           py::arg("color") = Vec3{1, 1, 1}, py::arg("at_camera") = false)
+      .def_readwrite("position", &PointLight::position)
+      .def_readwrite("intensity", &PointLight::intensity)
+      .def_readwrite("color", &PointLight::color)
+      .def_readwrite("at_camera", &PointLight::atCamera)
+      .def("__repr__", [](const PointLight& l) {
+        return "phongvk.Light(" + (l.atCamera ? std::string("at_camera=True") : "position=" + vec3Text(l.position)) +
+               ", intensity=" + std::string(py::str(py::float_(l.intensity))) + ", color=" + vec3Text(l.color) + ")";
+      });
+
   py::class_<Scene>(m, "Scene", R"(A validated scene: camera, lights, materials, objects.
 
 Made by load_scene(path) or scene_from_dict(d); meshes can be added as numpy arrays with
@@ -254,6 +351,21 @@ closed: True if the mesh is a closed surface whose back faces may be culled.
 
 A wrong shape or dtype, a non-finite value or an index out of range raises ValueError naming the
 argument and the first bad row; a bad material raises SceneError.)")
+      .def("add", &addObject, py::arg("mesh"), py::arg("faces") = py::none(), py::kw_only(),
+           py::arg("pose") = py::none(), py::arg("material") = py::none(), py::arg("closed") = false,
+           R"(Adds a mesh placed by a (4, 4) local-to-world pose (identity when None) and returns its
+handle, for set_pose and remove. mesh: one object with .vertices and .faces arrays (a
+trimesh.Trimesh works), or vertices with faces; material and closed as in add_mesh.)")
+      .def(
+          "set_pose", [](Scene& s, unsigned long long id, const py::object& pose) { s.setPose(ObjectId{id}, matrix4(pose, "pose")); },
+          py::arg("object"), py::arg("pose"), "Moves an object added with add() (IndexError for an unknown handle).")
+      .def(
+          "remove", [](Scene& s, unsigned long long id) { s.remove(ObjectId{id}); }, py::arg("object"),
+          "Takes out an object added with add() (IndexError for an unknown handle).")
+      .def_property("camera", &Scene::camera, &Scene::setCamera,
+                    "The camera (a phongvk.Camera); assigning one checks it like a scene file's \"camera\".")
+      .def_property("lights", &Scene::lights, &Scene::setLights,
+                    "The point lights (phongvk.Light); assigning a list checks it like a scene file's \"lights\".")
       .def("__repr__", [](const Scene& s) {
         return "<phongvk.Scene " + (s.path().empty() ? std::string("(from a dict)") : s.path()) + ": " +
                std::to_string(s.objectCount()) + " objects, " + std::to_string(s.lightCount()) + " lights, " +

@@ -80,6 +80,18 @@ SceneSpec withRenderOptions(SceneSpec scene, const std::string& json) {
   return scene;
 }
 
+SceneSpec withCameraSection(SceneSpec scene, const std::string& json) {
+  const Json value = parseJson(json, scene.path);
+  scene.camera = readCamera(Node(value, "camera", scene.path));
+  return scene;
+}
+
+SceneSpec withLightsSection(SceneSpec scene, const std::string& json) {
+  const Json value = parseJson(json, scene.path);
+  scene.lights = readLights(Node(value, "lights", scene.path));
+  return scene;
+}
+
 std::string readSceneText(const std::string& path) {
   std::string why;
   const std::optional<RegularFile> file = RegularFile::open(path, why);

@@ -123,6 +123,12 @@ struct SceneSpec {
 // validated as a scene file's "render". Throws SceneError.
 SceneSpec withRenderOptions(SceneSpec scene, const std::string& json);
 
+// `scene` with its "camera" (or its "lights") replaced by `json`, validated as a scene file's
+// section of that name (SceneError "camera.fov: ..."). How a scene built in code takes a typed
+// camera or lights (api/scene_parts.cpp): one set of checks and messages for both.
+SceneSpec withCameraSection(SceneSpec scene, const std::string& json);
+SceneSpec withLightsSection(SceneSpec scene, const std::string& json);
+
 // Reads and validates a scene file. Throws SceneError naming the file and the JSON path.
 // A file with an "animate" block gives its frame 0 (animate.h has the other frames).
 SceneSpec loadSceneSpec(const std::string& path);

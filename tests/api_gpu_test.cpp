@@ -173,6 +173,51 @@ TEST(Api, AddedMeshesFollowTheSceneIntoItsFrames) {
   }
 }
 
+// A scene driven from code: a typed camera and lights, and a mesh placed, moved and removed by
+// handle, render the bytes of the same scene written as JSON, on both backends.
+TEST(Api, TypedCameraLightsAndPosesRenderAsTheSameSceneWritten) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "phongvk_api_typed";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "tri.obj") << "v 0 0 0\nv 0.8 0 0\nv 0 0.8 0.3\nf 1 2 3\n";
+  const auto written = [&](const std::string& objects) {
+    return parseScene(R"({"camera": {"position": [2, -3, 1.5], "look_at": [0, 0, 0.3], "fov": 45, "width": 96,
+        "height": 64}, "lights": [{"position": [2, -3, 3], "intensity": 0.9}, {"position": "camera", "color": [1, 0.5, 0]}],
+        "objects": [{"shape": "cube", "size": 0.5})" + objects + "]}", "w.json", dir.string());
+  };
+  Scene built = parseScene(R"({"camera": {"position": [9, 0, 0], "look_at": [0, 0, 0]}, "objects": [{"shape": "cube", "size": 0.5}]})");
+  built.setCamera(Camera{{2, -3, 1.5}, {0, 0, 0.3}, {0, 0, 1}, 45, 96, 64});
+  built.setLights({PointLight{{2, -3, 3}, 0.9, {1, 1, 1}, false}, PointLight{{0, 0, 0}, 1, {1, 0.5, 0}, true}});
+  MeshArrays tri;
+  tri.positions = {0, 0, 0, 0.8f, 0, 0, 0, 0.8f, 0.3f};
+  tri.triangles = {0, 1, 2};
+  Matrix4 pose = IDENTITY_POSE;
+  pose[3] = 0.5;  // translate x
+  const ObjectId id = built.add(tri, pose);
+  Renderer gpu(validatedGpu()), cpu(Backend::Cpu);
+  const auto expectSame = [&](const Scene& a, const Scene& b) {
+    const Image expected = cpu.render(b);
+    EXPECT_TRUE(cpu.render(a).rgb == expected.rgb);
+    EXPECT_TRUE(gpu.render(a).rgb == expected.rgb);
+  };
+  expectSame(built, written(R"(, {"shape": "mesh", "file": "tri.obj", "translate": [0.5, 0, 0]})"));
+  pose[3] = -0.25;
+  pose[11] = 0.5;  // translate z
+  built.setPose(id, pose);
+  expectSame(built, written(R"(, {"shape": "mesh", "file": "tri.obj", "translate": [-0.25, 0, 0.5]})"));
+  built.remove(id);
+  EXPECT_EQ(built.objectCount(), 1u);
+  expectSame(built, written(""));
+  EXPECT_THROW(built.setPose(id, pose), RangeError);
+  EXPECT_EQ(built.camera().fov, 45);
+  EXPECT_EQ(built.lights().size(), 2u);
+  EXPECT_THROW(built.setCamera(Camera{{0, 0, 3}, {0, 0, 0}, {0, 0, 1}, 45, 96, 64}), SceneError);  // up along the view
+  EXPECT_THROW(cameraFromIntrinsics(100, 120, 47.5, 31.5, 96, 64, IDENTITY_POSE), ArgumentError);
+  const Camera fromIntrinsics = cameraFromIntrinsics(100, 100, 47.5, 31.5, 96, 64, IDENTITY_POSE);
+  EXPECT_NEAR(fromIntrinsics.fov, 2 * std::atan(32.0 / 100) * 180 / M_PI, 1e-12);
+  EXPECT_EQ(fromIntrinsics.lookAt, (Vec3{0, 0, 1}));  // OpenCV: the camera looks down its +z
+  EXPECT_EQ(fromIntrinsics.up, (Vec3{0, -1, 0}));     // and its y points down
+}
+
 TEST(Api, BackendsByName) {
   EXPECT_EQ(parseBackend("gpu"), Backend::Gpu);
   EXPECT_EQ(parseBackend("cpu"), Backend::Cpu);

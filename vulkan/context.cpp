@@ -29,6 +29,7 @@ void createCommandPool(VulkanContext& context) {
 VulkanContext createContext(const ContextOptions& options) {
   initializeLoader();
   const std::lock_guard lock(vulkanMutex());
+  const std::optional<uint64_t> storageRange = storageRangeVariable();
   VulkanContext context;
   if (validationRequested(options)) context.validation = std::make_shared<ValidationLog>();
   try {
@@ -38,7 +39,7 @@ VulkanContext createContext(const ContextOptions& options) {
     std::vector<DeviceInfo> reports = inspectDevices(devices);
     uint32_t chosen = chooseDevice(reports, options.deviceIndex);
     context.physicalDevice = devices[chosen];
-    describeDevice(context, reports[chosen]);
+    describeDevice(context, reports[chosen], storageRange);
     createDevice(context);
     createCommandPool(context);
     if (options.pipelineCache) context.pipelineCache = loadPipelineCache(context);

@@ -157,23 +157,23 @@ uint64_t parseStorageRange(const std::string& text) {
   return value;
 }
 
+}  // namespace
+
 // A testing aid: PHONGVK_MAX_STORAGE_BUFFER_RANGE lowers the device's maxStorageBufferRange (never
 // raises it), so every check of that limit meets it as on a smaller device — a GPU's 4 GiB tested
 // as lavapipe's 128 MiB, the least Vulkan allows.
-void applyStorageRangeVariable(VkPhysicalDeviceLimits& limits) {
+std::optional<uint64_t> storageRangeVariable() {
   const char* text = std::getenv(kStorageRangeVariable);
-  if (!text) return;
-  const uint64_t range = parseStorageRange(text);
-  if (range < limits.maxStorageBufferRange) limits.maxStorageBufferRange = static_cast<uint32_t>(range);
+  if (!text) return std::nullopt;
+  return parseStorageRange(text);
 }
 
-}  // namespace
-
 // Everything about the chosen device that the rest of the port reads from the context.
-void describeDevice(VulkanContext& context, const DeviceInfo& report) {
+void describeDevice(VulkanContext& context, const DeviceInfo& report, std::optional<uint64_t> storageRange) {
   context.info = report;
   vkGetPhysicalDeviceProperties(context.physicalDevice, &context.properties);
-  applyStorageRangeVariable(context.properties.limits);
+  uint32_t& limit = context.properties.limits.maxStorageBufferRange;
+  if (storageRange && *storageRange < limit) limit = static_cast<uint32_t>(*storageRange);
   vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &context.memoryProperties);
   context.queueFamily = *findComputeFamily(context.physicalDevice);
   context.timestampValidBits = queueFamilies(context.physicalDevice)[context.queueFamily].timestampValidBits;

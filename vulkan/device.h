@@ -17,10 +17,14 @@ std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devi
 // The first compute queue family that can write timestamps, else the first compute family.
 std::optional<uint32_t> findComputeFamily(VkPhysicalDevice device);
 
-// Fills the context's description of the chosen device: properties (PHONGVK_MAX_STORAGE_BUFFER_RANGE
-// lowers maxStorageBufferRange; ArgumentError where it is not a number of bytes), memory, queue
-// family, timestamps.
-void describeDevice(VulkanContext& context, const DeviceInfo& info);
+// PHONGVK_MAX_STORAGE_BUFFER_RANGE, a testing aid: the bytes it gives, or none where it is unset.
+// ArgumentError where it is not a number of bytes. Read before any Vulkan object is made, so a bad
+// value leaves nothing to release.
+std::optional<uint64_t> storageRangeVariable();
+
+// Fills the context's description of the chosen device: properties (with maxStorageBufferRange
+// lowered to `storageRange` where that is smaller), memory, queue family, timestamps.
+void describeDevice(VulkanContext& context, const DeviceInfo& info, std::optional<uint64_t> storageRange);
 
 // The logical device with phongvk's features and its compute queue, loaded into volk.
 void createDevice(VulkanContext& context);

@@ -16,6 +16,7 @@
 #include "phongvk/export.h"
 #include "phongvk/image.h"
 #include "phongvk/mesh.h"
+#include "phongvk/scene_parts.h"
 
 #include <cstdint>
 #include <memory>
@@ -64,8 +65,27 @@ class PHONGVK_API Scene {
   // scene is unchanged then.
   void addMesh(const MeshArrays& mesh, const std::string& material = "", bool closed = false);
 
+  // The same, placed by `pose` (local to world, scene_parts.h Matrix4: the mesh's vertices are in
+  // its own coordinates), and a handle to move it (setPose) or take it out (remove). Throws as
+  // addMesh, and ArgumentError naming "pose" for a matrix that is not an affine map.
+  ObjectId add(const MeshArrays& mesh, const Matrix4& pose = IDENTITY_POSE, const std::string& material = "",
+               bool closed = false);
+  // Moves an object added with add; RangeError for a handle this scene does not hold.
+  void setPose(ObjectId object, const Matrix4& pose);
+  void remove(ObjectId object);
+
+  // The camera as a value, and a new one (checked like a scene file's "camera": SceneError
+  // naming camera.KEY; ArgumentError for a value that is not finite). A camera of size 0 x 0
+  // keeps the scene's image size.
+  Camera camera() const;
+  void setCamera(const Camera& camera);
+  // The point lights, and new ones (checked like a scene file's "lights").
+  std::vector<PointLight> lights() const;
+  void setLights(const std::vector<PointLight>& lights);
+
   // The frames of the file's "animate" block (1 without one; this scene is frame 0), each
-  // validated like a scene file, with the meshes added with addMesh (built once). frame throws
+  // validated like a scene file, with the meshes added with addMesh or add (built once, at their
+  // poses); the camera and lights are the file's frame's. frame throws
   // RangeError outside 0..frameCount()-1, SceneError for a bad frame.
   int frameCount() const;
   Scene frame(int index) const;

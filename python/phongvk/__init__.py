@@ -26,8 +26,10 @@ from ._phongvk import (
     NO_TRIANGLE,
     PNG_LEVEL_DEFAULT,
     ArgumentError,
+    Camera,
     DeviceError,
     Error,
+    Light,
     NoDeviceError,
     OutputError,
     RangeError,
@@ -44,12 +46,12 @@ from ._phongvk import (
 )
 
 # What the compiled module defines reads as phongvk's own (phongvk.SceneError in a traceback).
-for _name in ("ArgumentError", "DeviceError", "Error", "NoDeviceError", "OutputError", "RangeError", "Scene",
-              "SceneError"):
+for _name in ("ArgumentError", "Camera", "DeviceError", "Error", "Light", "NoDeviceError", "OutputError",
+              "RangeError", "Scene", "SceneError"):
     getattr(_phongvk, _name).__module__ = __name__
 
 __all__ = [
-    "ArgumentError", "DeviceError", "Error", "Image", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT", "NoDeviceError",
+    "ArgumentError", "Camera", "DeviceError", "Error", "Image", "Light", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT", "NoDeviceError",
     "OutputError", "RangeError", "Renderer", "Scene", "SceneError",
     "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
 ]

@@ -1,0 +1,162 @@
+// scene_parts.cpp — see scene_parts.h and include/phongvk/scene_parts.h.
+#include "api/scene_parts.h"
+
+#include "base/number_text.h"
+#include "scene/camera.h"
+#include "scene/scene_json.h"
+
+#include <cmath>
+
+namespace phongvk {
+namespace {
+
+using scenejson::Json;
+
+void requireFinite(double value, const std::string& what) {
+  if (!std::isfinite(value)) throw ArgumentError(what + ": must be finite, got " + formatNumber(value));
+}
+
+Json vec3Json(const Vec3& v, const std::string& what) {
+  for (int i = 0; i < 3; ++i) requireFinite(v[i], what + "[" + std::to_string(i) + "]");
+  return Json::array({v[0], v[1], v[2]});
+}
+
+// Column `c` of the upper 3x3 block.
+glm::dvec3 column(const Matrix4& m, int c) { return {m[c], m[4 + c], m[8 + c]}; }
+
+// The checks every pose gets: finite values and a last row of 0 0 0 1.
+void checkAffine(const Matrix4& m, const std::string& what) {
+  for (size_t i = 0; i < m.size(); ++i) {
+    if (!std::isfinite(m[i]))
+      throw ArgumentError(what + ": row " + std::to_string(i / 4) + " is not finite: " + formatNumber(m[i]));
+  }
+  if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1) {
+    throw ArgumentError(what + ": the last row must be 0 0 0 1, got " + formatNumber(m[12]) + " " +
+                        formatNumber(m[13]) + " " + formatNumber(m[14]) + " " + formatNumber(m[15]));
+  }
+}
+
+// A camera pose's rotation block must be a rotation: orthonormal columns (within 1e-6) and no mirror.
+void checkRotation(const Matrix4& m) {
+  const glm::dvec3 x = column(m, 0), y = column(m, 1), z = column(m, 2);
+  const double worst = std::max({std::abs(glm::dot(x, x) - 1), std::abs(glm::dot(y, y) - 1),
+                                 std::abs(glm::dot(z, z) - 1), std::abs(glm::dot(x, y)), std::abs(glm::dot(y, z)),
+                                 std::abs(glm::dot(z, x))});
+  if (worst > 1e-6)
+    throw ArgumentError("pose: the upper 3x3 block is not a rotation (its columns are not orthonormal within 1e-6)");
+  if (glm::dot(glm::cross(x, y), z) < 0) throw ArgumentError("pose: the upper 3x3 block mirrors (determinant -1)");
+}
+
+bool nearlyEqual(double a, double b, double scale) { return std::abs(a - b) <= 1e-6 * scale; }
+
+}  // namespace
+
+Camera cameraFromPose(const Matrix4& m, PoseConvention convention, double fov, int width, int height) {
+  checkAffine(m, "pose");
+  checkRotation(m);
+  const glm::dvec3 position = {m[3], m[7], m[11]};
+  const glm::dvec3 forward = convention == PoseConvention::OpenGL ? -column(m, 2) : column(m, 2);
+  const glm::dvec3 up = convention == PoseConvention::OpenGL ? column(m, 1) : -column(m, 1);
+  Camera camera;
+  camera.position = {position.x, position.y, position.z};
+  camera.lookAt = {position.x + forward.x, position.y + forward.y, position.z + forward.z};
+  camera.up = {up.x, up.y, up.z};
+  camera.fov = fov;
+  camera.width = width;
+  camera.height = height;
+  return camera;
+}
+
+Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int width, int height,
+                            const Matrix4& cameraToWorld, PoseConvention convention) {
+  if (width < 1 || height < 1)
+    throw ArgumentError("intrinsics: the image size must be at least 1x1, got " + std::to_string(width) + "x" +
+                        std::to_string(height));
+  for (const auto& [value, name] : {std::pair{fx, "fx"}, {fy, "fy"}}) {
+    if (!(std::isfinite(value) && value > 0))
+      throw ArgumentError(std::string(name) + ": must be a positive focal length in pixels, got " + formatNumber(value));
+  }
+  if (!nearlyEqual(fx, fy, fy))
+    throw ArgumentError("fx: must equal fy (phongvk renders square pixels), got fx " + formatNumber(fx) + " and fy " +
+                        formatNumber(fy));
+  const double centreX = (width - 1) / 2.0, centreY = (height - 1) / 2.0;
+  if (!nearlyEqual(cx, centreX, width))
+    throw ArgumentError("cx: must be the image centre " + formatNumber(centreX) +
+                        " (phongvk renders about the centre), got " + formatNumber(cx));
+  if (!nearlyEqual(cy, centreY, height))
+    throw ArgumentError("cy: must be the image centre " + formatNumber(centreY) +
+                        " (phongvk renders about the centre), got " + formatNumber(cy));
+  const double fov = 2 * std::atan(height / (2 * fy)) * 180 / M_PI;
+  return cameraFromPose(cameraToWorld, convention, fov, width, height);
+}
+
+SceneSpec withCamera(const SceneSpec& scene, const Camera& camera) {
+  const View current = makeView(scene.camera);
+  requireFinite(camera.fov, "camera.fov");
+  requireFinite(camera.nearPlane, "camera.near");
+  requireFinite(camera.farPlane, "camera.far");
+  Json json = {{"position", vec3Json(camera.position, "camera.position")},
+               {"look_at", vec3Json(camera.lookAt, "camera.look_at")},
+               {"up", vec3Json(camera.up, "camera.up")},
+               {"fov", camera.fov},
+               {"width", camera.width > 0 || camera.height > 0 ? camera.width : current.width},
+               {"height", camera.width > 0 || camera.height > 0 ? camera.height : current.height},
+               {"near", camera.nearPlane},
+               {"far", camera.farPlane}};
+  return withCameraSection(scene, json.dump());
+}
+
+Camera cameraOf(const SceneSpec& scene) {
+  const CameraSpec& c = scene.camera;
+  const View view = makeView(c);
+  Camera camera;
+  camera.position = {c.position.x, c.position.y, c.position.z};
+  camera.lookAt = {c.position.x + c.direction.x, c.position.y + c.direction.y, c.position.z + c.direction.z};
+  camera.up = {c.up.x, c.up.y, c.up.z};
+  camera.fov = c.fov;
+  camera.width = view.width;
+  camera.height = view.height;
+  camera.nearPlane = c.nearPlane;
+  camera.farPlane = c.farPlane;
+  return camera;
+}
+
+SceneSpec withLights(const SceneSpec& scene, const std::vector<PointLight>& lights) {
+  Json json = Json::array();
+  for (size_t i = 0; i < lights.size(); ++i) {
+    const PointLight& light = lights[i];
+    const std::string at = "lights[" + std::to_string(i) + "]";
+    requireFinite(light.intensity, at + ".intensity");
+    json.push_back({{"position", light.atCamera ? Json("camera") : vec3Json(light.position, at + ".position")},
+                    {"intensity", light.intensity},
+                    {"color", vec3Json(light.color, at + ".color")}});
+  }
+  return withLightsSection(scene, json.dump());
+}
+
+std::vector<PointLight> lightsOf(const SceneSpec& scene) {
+  std::vector<PointLight> lights;
+  for (const Light& l : scene.lights) {
+    lights.push_back({{l.position.x, l.position.y, l.position.z}, l.intensity, {l.color.x, l.color.y, l.color.z},
+                      l.atCamera});
+  }
+  return lights;
+}
+
+void placeObject(Object& object, const Matrix4& pose) {
+  checkAffine(pose, "pose");
+  glm::dmat3 linear;
+  for (int c = 0; c < 3; ++c) linear[c] = column(pose, c);  // glm: linear[column][row]
+  if (!(std::abs(glm::determinant(linear)) > 0)) throw ArgumentError("pose: the upper 3x3 block is not invertible");
+  const glm::dvec3 translation = {pose[3], pose[7], pose[11]};
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::abs(translation[axis]) > MAX_COORDINATE)
+      throw ArgumentError("pose: the translation " + formatNumber(translation[axis]) + " is beyond the " +
+                          formatNumber(MAX_COORDINATE) + " m a scene may use");
+  }
+  object.rotation = linear;
+  object.scale = {1, 1, 1};
+  object.translate = translation;
+}
+
+}  // namespace phongvk

@@ -1,0 +1,68 @@
+// scene_parts.h — a scene's camera, lights and poses as values, for a program that drives a scene
+// from code (Scene::setCamera, setLights, add, setPose) instead of a scene file. Each is checked
+// like the scene file's section it stands for, with the same messages ("camera.fov: ...").
+#pragma once
+
+#include "phongvk/export.h"
+
+#include <array>
+#include <string>
+
+namespace phongvk {
+
+using Vec3 = std::array<double, 3>;
+
+// A 4x4 matrix, row-major (m[row * 4 + column]), as numpy holds one. A pose maps an object's (or
+// the camera's) own coordinates to world coordinates: its upper 3x3 block is the linear part
+// (rotation, and scale if any), its last column the translation, its last row 0 0 0 1.
+using Matrix4 = std::array<double, 16>;
+inline constexpr Matrix4 IDENTITY_POSE = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+// A pinhole camera: where it is, what it looks at, which way is up (world coordinates, z up by
+// default), the vertical field of view in degrees, and the image size (0 x 0: the scene's own).
+struct Camera {
+  Vec3 position = {0, -5, 2};
+  Vec3 lookAt = {0, 0, 0};
+  Vec3 up = {0, 0, 1};
+  double fov = 60;
+  int width = 0;
+  int height = 0;
+  double nearPlane = 0.05;
+  double farPlane = 1000;
+};
+
+// The axes of a camera pose, as the tools that make poses use them:
+// OpenGL (and Blender, three.js, NeRF's transforms.json): the camera looks down its -z, y up, x right.
+// OpenCV (and COLMAP, most datasets with intrinsics): the camera looks down its +z, y down, x right.
+enum class PoseConvention { OpenGL, OpenCV };
+
+// The camera a camera-to-world pose describes. Throws ArgumentError naming "pose" for a matrix
+// that is not a rigid pose (non-finite values, a last row other than 0 0 0 1, a rotation block
+// that is not orthonormal within 1e-6).
+PHONGVK_API Camera cameraFromPose(const Matrix4& cameraToWorld, PoseConvention convention, double fov, int width,
+                                  int height);
+
+// The camera of pinhole intrinsics as datasets give them: focal lengths fx, fy and principal point
+// cx, cy in pixels (OpenCV's convention: pixel centres at integer coordinates), the image size,
+// and a camera-to-world pose. phongvk renders square pixels about the image centre, so fx must
+// equal fy and (cx, cy) be the centre ((width - 1) / 2, (height - 1) / 2), each within 1e-6
+// relative; anything else is an ArgumentError naming the value.
+PHONGVK_API Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int width, int height,
+                                        const Matrix4& cameraToWorld,
+                                        PoseConvention convention = PoseConvention::OpenCV);
+
+// A point light (docs/DESIGN.md "Lights"), or one that moves with the camera (atCamera).
+struct PointLight {
+  Vec3 position = {0, 0, 0};
+  double intensity = 1;
+  Vec3 color = {1, 1, 1};
+  bool atCamera = false;
+};
+
+// An object added in code: its handle for setPose and remove (Scene::add).
+struct ObjectId {
+  unsigned long long value = 0;
+  bool operator==(const ObjectId&) const = default;
+};
+
+}  // namespace phongvk

@@ -1,0 +1,202 @@
+"""A scene driven from code: typed cameras (look-at, camera-to-world poses in OpenGL's and
+OpenCV's conventions, pinhole intrinsics), lights, and meshes placed, moved and removed by handle,
+each checked against the same scene written as a dict, and against a numpy projection."""
+
+import math
+
+import numpy as np
+import pytest
+
+import phongvk
+from conftest import scene_path
+
+LIGHTS = [{"position": [2, -3, 3]}]
+
+
+def square(size=0.02):
+    """A small square in the x-z plane about the origin, facing -y, as (vertices, faces)."""
+    s = size / 2
+    vertices = np.array([[-s, 0, -s], [s, 0, -s], [s, 0, s], [-s, 0, s]], np.float32)
+    return vertices, np.array([[0, 1, 2], [0, 2, 3]])
+
+
+def octahedron():
+    v = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], np.float32) * 0.5
+    f = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
+    return v, f
+
+
+def both(scene):
+    """The scene on the reference and the compute port, which must agree; the image."""
+    cpu, gpu = phongvk.Renderer("cpu").render(scene), phongvk.Renderer("gpu").render(scene)
+    assert np.array_equal(cpu, gpu)
+    return cpu
+
+
+def translation(x, y, z):
+    pose = np.eye(4)
+    pose[:3, 3] = (x, y, z)
+    return pose
+
+
+def look_at_pose_opencv(eye, target, up=(0, 0, 1)):
+    """A camera-to-world pose in OpenCV's convention (looks down +z, y down)."""
+    eye, target, up = (np.asarray(a, float) for a in (eye, target, up))
+    forward = (target - eye) / np.linalg.norm(target - eye)
+    right = np.cross(forward, up)
+    right /= np.linalg.norm(right)
+    down = np.cross(forward, right)
+    pose = np.eye(4)
+    pose[:3, 0], pose[:3, 1], pose[:3, 2], pose[:3, 3] = right, down, forward, eye
+    return pose
+
+
+def test_a_typed_camera_and_lights_render_as_the_same_scene_written_as_a_dict():
+    camera = {"position": [3, -2, 1.5], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 50, "width": 96, "height": 64}
+    lights = [{"position": [2, -3, 3], "intensity": 0.8, "color": [1, 0.9, 0.8]}, {"position": "camera"}]
+    written = phongvk.scene_from_dict({"camera": camera, "lights": lights,
+                                       "objects": [{"shape": "sphere", "radius": 0.6}]})
+    built = phongvk.scene_from_dict({"camera": {"position": [0, -9, 0], "look_at": [0, 0, 0]}, "lights": [],
+                                     "objects": [{"shape": "sphere", "radius": 0.6}]})
+    built.camera = phongvk.Camera(position=(3, -2, 1.5), look_at=(0, 0, 0), fov=50, width=96, height=64)
+    built.lights = [phongvk.Light(position=(2, -3, 3), intensity=0.8, color=(1, 0.9, 0.8)),
+                    phongvk.Light(at_camera=True)]
+    assert np.array_equal(both(built), both(written))
+    assert (built.width, built.height) == (96, 64)
+    assert built.camera.fov == 50 and tuple(built.camera.position) == (3, -2, 1.5)
+    assert [light.at_camera for light in built.lights] == [False, True]
+    assert repr(built.camera).startswith("phongvk.Camera(position=(3.0, -2.0, 1.5), look_at=(0.0, 0.0, 0.0)")
+
+
+def test_a_camera_without_a_size_keeps_the_scenes():
+    scene = phongvk.scene_from_dict({"camera": {"position": [3, 0, 0], "look_at": [0, 0, 0], "width": 80,
+                                                "height": 60}, "objects": [{"shape": "cube"}]})
+    scene.camera = phongvk.Camera(position=(0, -4, 1), look_at=(0, 0, 0))
+    assert (scene.width, scene.height) == (80, 60)
+
+
+@pytest.mark.parametrize("eye", [(3, -2, 1.5), (-1.5, 2.5, 0.5), (0.3, -3, -1)])
+def test_poses_and_intrinsics_project_as_numpy_does(eye):
+    """Markers rendered with a camera from intrinsics and an OpenCV pose land where numpy's pinhole
+    projection u = fx X / Z + cx puts them (the centroid of each marker's pixels within 0.5 px); the
+    same pose in OpenGL's convention gives the same image."""
+    width, height, f = 160, 120, 140.0
+    cx, cy = (width - 1) / 2, (height - 1) / 2
+    pose = look_at_pose_opencv(eye, (0, 0, 0))
+    scene = phongvk.scene_from_dict({"camera": {"position": [9, 9, 9], "look_at": [0, 0, 0]},
+                                     "lights": [{"position": "camera"}], "objects": []})
+    scene.camera = phongvk.Camera.from_intrinsics(f, f, cx, cy, width, height, pose=pose)
+    points = np.array([[0, 0, 0], [0.4, 0.2, 0.1], [-0.3, 0.1, 0.3], [0.1, -0.4, -0.2]])
+    vertices, faces = square(0.15)  # about 5 pixels across
+    rotation = pose[:3, :3]
+    marker = np.eye(4)
+    marker[:3, :3] = rotation @ np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]]).T  # its -y toward the camera
+    handle = scene.add(vertices, faces)
+    gpu, cpu = phongvk.Renderer("gpu"), phongvk.Renderer("cpu")
+    for x, y, z in (points - pose[:3, 3]) @ rotation:  # world to camera: R^T (p - t)
+        marker[:3, 3] = pose[:3, 3] + rotation @ (x, y, z)
+        scene.set_pose(handle, marker)  # one marker at a time: none hides another
+        image, triangle, _ = gpu.render_visibility(scene)
+        cpu_image, cpu_triangle, _ = cpu.render_visibility(scene)
+        assert np.array_equal(image, cpu_image) and np.array_equal(triangle, cpu_triangle)
+        ys, xs = np.nonzero(triangle != phongvk.NO_TRIANGLE)
+        assert len(xs) > 4
+        assert abs(xs.mean() - (f * x / z + cx)) < 0.5 and abs(ys.mean() - (f * y / z + cy)) < 0.5
+    gl_pose = pose @ np.diag([1, -1, -1, 1])
+    as_gl = phongvk.Camera.from_pose(gl_pose, convention="opengl", fov=scene.camera.fov, width=width, height=height)
+    same = scene.frame(0)
+    same.camera = as_gl
+    assert np.array_equal(phongvk.Renderer("cpu").render(same), cpu_image)
+    assert abs(scene.camera.fov - math.degrees(2 * math.atan(height / (2 * f)))) < 1e-12
+
+
+def test_objects_are_placed_moved_and_removed_by_handle(tmp_path):
+    vertices, faces = octahedron()
+    obj = tmp_path / "octahedron.obj"
+    obj.write_text("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in vertices.tolist()) +
+                   "".join("f %d %d %d\n" % tuple(x + 1 for x in t) for t in faces.tolist()))
+    camera = {"position": [3, -4, 2], "look_at": [0.5, 0, 0], "width": 96, "height": 64}
+
+    def written(*translates):
+        objects = [{"shape": "mesh", "file": "octahedron.obj", "translate": list(t)} for t in translates]
+        return phongvk.scene_from_dict({"camera": camera, "lights": LIGHTS, "objects": objects},
+                                       base_dir=str(tmp_path))
+
+    scene = phongvk.scene_from_dict({"camera": camera, "lights": LIGHTS, "objects": []})
+    a = scene.add(vertices, faces, pose=translation(1, 0, 0))
+    b = scene.add(vertices, faces, pose=translation(0, 0.5, 0.25))
+    assert scene.object_count == 2
+    assert np.array_equal(both(scene), both(written((1, 0, 0), (0, 0.5, 0.25))))
+    scene.set_pose(a, translation(-0.5, 0, 0.5))
+    assert np.array_equal(both(scene), both(written((-0.5, 0, 0.5), (0, 0.5, 0.25))))
+    scene.remove(a)
+    assert scene.object_count == 1
+    assert np.array_equal(both(scene), both(written((0, 0.5, 0.25))))
+    with pytest.raises(IndexError, match=r"no object %d" % a):
+        scene.set_pose(a, np.eye(4))
+    with pytest.raises(IndexError):
+        scene.remove(a)
+    scene.set_pose(b, translation(0, 0, 0))
+    assert np.array_equal(both(scene), both(written((0, 0, 0))))
+
+
+def test_a_pose_turns_the_mesh_as_its_matrix_says():
+    """A quarter turn about z in the pose: the rendered image equals the mesh whose vertices numpy
+    turned, up to where both round (the keys name the same triangles at every pixel but edges)."""
+    vertices = np.array([[0, 0, 0], [2.4, 0, 0], [0, 0.9, 0]], np.float32)  # in the x-y plane, facing the camera
+    faces = np.array([[0, 1, 2]])
+    turn = np.array([[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], float)
+    base = {"camera": {"position": [0, 0, 4], "look_at": [0, 0, 0], "up": [0, 1, 0], "width": 128, "height": 128},
+            "lights": [{"position": [0, 0, 4]}], "objects": []}
+    by_pose, by_numpy = phongvk.scene_from_dict(base), phongvk.scene_from_dict(base)
+    by_pose.add(vertices, faces, pose=turn, closed=False)
+    by_numpy.add((vertices @ turn[:3, :3].T).astype(np.float32), faces, closed=False)
+    renderer = phongvk.Renderer("cpu")
+    covered_pose = renderer.render_visibility(by_pose)[1] != phongvk.NO_TRIANGLE
+    covered_numpy = renderer.render_visibility(by_numpy)[1] != phongvk.NO_TRIANGLE
+    assert covered_pose.sum() > 100
+    assert (covered_pose != covered_numpy).sum() <= 2 * 128
+
+
+def test_added_objects_keep_their_poses_in_every_frame():
+    path = scene_path("scenes/paper/fig6_orbit_red.json")
+    scene = phongvk.load_scene(path)
+    vertices, faces = octahedron()
+    handle = scene.add(vertices, faces, pose=translation(0, 0, 1.5))
+    scene.set_pose(handle, translation(0, 0, 2))
+    expected = phongvk.load_scene(path).frame(10)
+    expected.add(vertices, faces, pose=translation(0, 0, 2))
+    frame = scene.frame(10)
+    assert frame.object_count == expected.object_count
+    renderer = phongvk.Renderer("cpu")
+    assert np.array_equal(renderer.render(frame, 96, 64), renderer.render(expected, 96, 64))
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda s: setattr(s, "camera", phongvk.Camera(position=(3, 0, 0), fov=200)), phongvk.SceneError,
+     r"camera.fov: must be > 0 and < 180, got 200"),
+    (lambda s: setattr(s, "camera", phongvk.Camera(position=(math.nan, 0, 0))), ValueError,
+     r"camera.position\[0\]: must be finite, got nan"),
+    (lambda s: setattr(s, "camera", phongvk.Camera(position=(0, 0, 3), look_at=(0, 0, 0), up=(0, 0, 1))),
+     phongvk.SceneError, r"camera.up: parallel to the view direction"),
+    (lambda s: setattr(s, "lights", [phongvk.Light(intensity=-1)]), phongvk.SceneError,
+     r"lights\[0\].intensity: must be >= 0, got -1"),
+    (lambda s: phongvk.Camera.from_pose(np.diag([1, 1, 2, 1])), ValueError, r"pose: the upper 3x3 block is not a rotation"),
+    (lambda s: phongvk.Camera.from_pose(np.diag([1, 1, -1, 1])), ValueError, r"pose: the upper 3x3 block mirrors"),
+    (lambda s: phongvk.Camera.from_pose(np.eye(4), convention="blender"), ValueError, r"convention: expected 'opengl'"),
+    (lambda s: phongvk.Camera.from_intrinsics(100, 110, 79.5, 59.5, 160, 120), ValueError, r"fx: must equal fy"),
+    (lambda s: phongvk.Camera.from_intrinsics(100, 100, 80, 59.5, 160, 120), ValueError,
+     r"cx: must be the image centre 79.5"),
+    (lambda s: s.add(*square(), pose=np.zeros((4, 4))), ValueError, r"pose: the last row must be 0 0 0 1"),
+    (lambda s: s.add(*square(), pose=np.diag([1, 0, 1, 1])), ValueError, r"pose: the upper 3x3 block is not invertible"),
+    (lambda s: s.add(*square(), pose=np.eye(3)), ValueError, r"pose: expected a 4x4 matrix, got shape \(3, 3\)"),
+    (lambda s: s.add(*square(), pose=translation(2e15, 0, 0)), ValueError, r"pose: the translation 2e\+15 is beyond"),
+])
+def test_bad_values_are_clear_errors_and_change_nothing(call, error, message):
+    scene = phongvk.scene_from_dict({"camera": {"position": [3, -2, 1], "look_at": [0, 0, 0], "width": 32, "height": 24},
+                                     "lights": LIGHTS, "objects": [{"shape": "cube"}]})
+    before = phongvk.Renderer("cpu").render(scene)
+    with pytest.raises(error, match=message):
+        call(scene)
+    assert scene.object_count == 1
+    assert np.array_equal(phongvk.Renderer("cpu").render(scene), before)
