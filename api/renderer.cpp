@@ -1,6 +1,7 @@
 // renderer.cpp — the public Renderer: one backend behind it, the built scene kept across calls.
 #include "api/renderer_impl.h"
 
+#include "api/outputs.h"
 #include "api/timing.h"
 #include "api/scene_access.h"
 #include "prepare/camera_fit.h"
@@ -64,6 +65,18 @@ void Renderer::Impl::prepare(const Scene& scene) {
 // keys stay per sample.
 RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image storage) {
   const std::lock_guard<std::mutex> one(busy_);
+  return renderHeld(scene, withKeys, std::move(storage));
+}
+
+RenderedFrame Renderer::Impl::renderOutputs(const Scene& scene, const Outputs& outputs) {
+  const std::lock_guard<std::mutex> one(busy_);
+  const bool keys = outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds;
+  RenderOutput out = renderHeld(scene, keys, {});
+  if (!keys) return {std::move(out.image)};
+  return outputsFromKeys(std::move(out), sampleGridSide(data_->samples), *data_, outputs);
+}
+
+RenderOutput Renderer::Impl::renderHeld(const Scene& scene, bool withKeys, Image storage) {
   prepare(scene);
   const View view = makeView(camera_);
   const int side = sampleGridSide(data_->samples);
@@ -108,6 +121,13 @@ RenderOutput Renderer::renderWithKeys(const Scene& scene) {
     throw ArgumentError("the graphics backend has no visibility keys; use the gpu or cpu backend");
   }
   return impl_->render(scene, true);
+}
+
+RenderedFrame Renderer::renderOutputs(const Scene& scene, const Outputs& outputs) {
+  if (impl_->backend() == Backend::Graphics && (outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds)) {
+    throw ArgumentError("the graphics backend has no visibility keys, so no alpha, depth or ids; use the gpu or cpu backend");
+  }
+  return impl_->renderOutputs(scene, outputs);
 }
 
 std::vector<FrameTime> Renderer::timeFrames(const Scene& scene, int repeat) {

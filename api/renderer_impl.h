@@ -22,6 +22,8 @@ class Renderer::Impl {
   // geometry (and as many materials and lights), then renders. A backend may read the image into
   // `storage`'s pixels.
   RenderOutput render(const Scene& scene, bool withKeys, Image storage = {});
+  // One frame with the outputs asked for, from its keys (outputs.cpp).
+  RenderedFrame renderOutputs(const Scene& scene, const Outputs& outputs);
   // The last frame's device times (NaN where not measured); wallMs is left to the caller.
   virtual FrameTime lastFrameTime() const = 0;
   virtual Backend backend() const = 0;
@@ -43,6 +45,8 @@ class Renderer::Impl {
   // Makes data_ hold `scene`'s meshes and shading, building and uploading them unless the last
   // scene's can serve, and camera_ its camera (fitted where asked, camera_fit.h).
   void prepare(const Scene& scene);
+  // render, with busy_ held by the caller.
+  RenderOutput renderHeld(const Scene& scene, bool withKeys, Image storage);
   // Lights at the camera placed, the camera fitted, where the scene asks for it.
   void frame(const SceneSpec& spec);
 

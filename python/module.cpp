@@ -10,6 +10,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -182,6 +183,49 @@ py::tuple visibilityArrays(RenderOutput&& out) {
   const py::ssize_t h = v.height, w = v.width;
   return py::make_tuple(imageArray(std::move(out.image)), ownedArray(std::move(v.triangle), {h, w}),
                         ownedArray(std::move(v.depth), {h, w}));
+}
+
+// The output names render(outputs=...) takes, as the library's Outputs.
+Outputs outputsNamed(const std::vector<std::string>& names) {
+  Outputs outputs;
+  for (const std::string& name : names) {
+    if (name == "alpha" || name == "rgba") outputs.alpha = true;
+    else if (name == "depth") outputs.depth = true;
+    else if (name == "object_id") outputs.objectIds = true;
+    else if (name == "triangle_id") outputs.triangleIds = true;
+    else if (name != "color")
+      throw ArgumentError("outputs: unknown output '" + name + "' (color, rgba, alpha, depth, object_id, triangle_id)");
+  }
+  return outputs;
+}
+
+// The frame's outputs by name: color (height, width, 3) and rgba (height, width, 4) uint8, alpha
+// uint8, depth float32, object_id and triangle_id int32, each (height, width).
+py::dict outputsDict(RenderedFrame&& frame, const std::vector<std::string>& names) {
+  const py::ssize_t h = frame.image.height, w = frame.image.width;
+  const size_t pixels = size_t(h) * size_t(w);
+  py::dict d;
+  for (const std::string& name : names) {
+    if (name == "rgba") {
+      std::vector<uint8_t> rgba(pixels * 4);
+      for (size_t i = 0; i < pixels; ++i) {
+        std::memcpy(&rgba[4 * i], &frame.image.rgb[3 * i], 3);
+        rgba[4 * i + 3] = frame.alpha[i];
+      }
+      d["rgba"] = ownedArray(std::move(rgba), {h, w, 4});
+    } else if (name == "alpha") {
+      d["alpha"] = ownedArray(std::vector<uint8_t>(frame.alpha), {h, w});
+    } else if (name == "depth") {
+      d["depth"] = ownedArray(std::move(frame.depth), {h, w});
+    } else if (name == "object_id") {
+      d["object_id"] = ownedArray(std::move(frame.objectIds), {h, w});
+    } else if (name == "triangle_id") {
+      d["triangle_id"] = ownedArray(std::move(frame.triangleIds), {h, w});
+    }
+  }
+  // Last: rgba above copied from the image.
+  if (std::find(names.begin(), names.end(), "color") != names.end()) d["color"] = imageArray(std::move(frame.image));
+  return d;
 }
 
 py::dict statsDict(const RendererStats& s) {
@@ -421,17 +465,44 @@ other threads go on; one renderer used from several threads renders one frame at
           py::arg("scene"), py::arg("width") = py::none(), py::arg("height") = py::none(),
           "One frame of `scene` as a C-contiguous uint8 array of shape (height, width, 3), row 0 at the top.")
       .def(
+          "render_outputs",
+          [](Renderer& r, const Scene& scene, const std::vector<std::string>& names, std::optional<int> width,
+             std::optional<int> height) {
+            const Outputs outputs = outputsNamed(names);
+            const Scene s = sized(scene, width, height);
+            RenderedFrame frame;
+            {
+              py::gil_scoped_release release;
+              frame = r.renderOutputs(s, outputs);
+            }
+            return outputsDict(std::move(frame), names);
+          },
+          py::arg("scene"), py::arg("outputs"), py::arg("width") = py::none(), py::arg("height") = py::none(),
+          "render(scene, outputs=...) without the package's Image view: a dict of arrays by name.")
+      .def(
           "render_visibility",
           [](Renderer& r, const Scene& scene, std::optional<int> width, std::optional<int> height) {
-            return visibilityArrays(released(r, scene, width, height, &Renderer::renderWithKeys));
+            const Scene s = sized(scene, width, height);
+            RenderedFrame frame;
+            {
+              py::gil_scoped_release release;
+              frame = r.renderOutputs(s, Outputs{.depth = true, .triangleIds = true});
+            }
+            const py::ssize_t h = frame.image.height, w = frame.image.width;
+            std::vector<uint32_t> triangle(frame.triangleIds.size());
+            std::memcpy(triangle.data(), frame.triangleIds.data(), triangle.size() * sizeof(uint32_t));  // -1: NO_TRIANGLE
+            return py::make_tuple(imageArray(std::move(frame.image)), ownedArray(std::move(triangle), {h, w}),
+                                  ownedArray(std::move(frame.depth), {h, w}));
           },
           py::arg("scene"), py::arg("width") = py::none(), py::arg("height") = py::none(),
           R"(One frame with its visibility buffer: (image, triangle, depth).
 
 triangle: (height, width) uint32 array, the winning triangle's index in the scene (objects in order,
     each object's triangles in order), NO_TRIANGLE where nothing covers the pixel.
-depth: (height, width) float32 array, the winning fragment's view depth, inf where nothing covers it.
-The gpu and cpu backends give the same buffers; the graphics backend has none (ValueError).)")
+depth: (height, width) float32 array, the winning fragment's depth along the camera's axis in
+    metres, inf where nothing covers it.
+With samples per pixel, both are the pixel's nearest sample's. The gpu and cpu backends give the
+same buffers; the graphics backend has none (ValueError).)")
       .def(
           "diff",
           [](Renderer& r, const Scene& scene) {

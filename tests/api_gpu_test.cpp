@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -216,6 +217,25 @@ TEST(Api, TypedCameraLightsAndPosesRenderAsTheSameSceneWritten) {
   EXPECT_NEAR(fromIntrinsics.fov, 2 * std::atan(32.0 / 100) * 180 / M_PI, 1e-12);
   EXPECT_EQ(fromIntrinsics.lookAt, (Vec3{0, 0, 1}));  // OpenCV: the camera looks down its +z
   EXPECT_EQ(fromIntrinsics.up, (Vec3{0, -1, 0}));     // and its y points down
+}
+
+// Alpha, depth and ids come from the keys: the same bytes on both backends, with samples too.
+TEST(Api, FrameOutputsAreTheSameOnBothBackends) {
+  const Scene scene = loadScene(source("scenes/basic.json")).withImageSize(120, 80).withRender(R"({"samples": 4})");
+  const Outputs all{.alpha = true, .depth = true, .objectIds = true, .triangleIds = true};
+  Renderer gpu(validatedGpu()), cpu(Backend::Cpu);
+  const RenderedFrame a = gpu.renderOutputs(scene, all), b = cpu.renderOutputs(scene, all);
+  EXPECT_TRUE(a.image.rgb == b.image.rgb);
+  EXPECT_TRUE(a.alpha == b.alpha);
+  EXPECT_EQ(a.depth.size(), size_t(120 * 80));
+  EXPECT_EQ(std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)), 0);
+  EXPECT_TRUE(a.objectIds == b.objectIds);
+  EXPECT_TRUE(a.triangleIds == b.triangleIds);
+  EXPECT_TRUE(a.image.rgb == cpu.render(scene).rgb);
+  const RenderedFrame colourOnly = gpu.renderOutputs(scene, {});
+  EXPECT_TRUE(colourOnly.depth.empty() && colourOnly.alpha.empty());
+  Renderer graphics(Backend::Graphics);
+  EXPECT_THROW(graphics.renderOutputs(scene, all), ArgumentError);
 }
 
 TEST(Api, BackendsByName) {

@@ -165,6 +165,27 @@ struct RendererStats {
   double pipelinesMs = 0;
 };
 
+// What a frame can give besides its colours (Renderer::renderOutputs).
+struct Outputs {
+  bool alpha = false;        // coverage: 255 where triangles cover every sample of the pixel, 0 where none
+  bool depth = false;        // metres along the camera's axis to the nearest surface; +inf where empty
+  bool objectIds = false;    // the nearest surface's object (index in the scene's objects); -1 where empty
+  bool triangleIds = false;  // its triangle (index in the scene: objects in order); -1 where empty
+};
+
+// A frame and the outputs asked for, each width x height values, row-major, row 0 at the top
+// (an output not asked for is empty). With samples per pixel (render.samples) the colour and
+// alpha are the samples' box-filtered mean, and the depth and ids are the pixel's nearest sample's.
+// Every output comes from the visibility keys, which both renderers give bit for bit alike, so
+// every output is the same bytes on the gpu and cpu backends.
+struct RenderedFrame {
+  Image image;  // RGB
+  std::vector<uint8_t> alpha;
+  std::vector<float> depth;
+  std::vector<int32_t> objectIds;
+  std::vector<int32_t> triangleIds;
+};
+
 // Renders scenes on one backend. It keeps what it built and uploaded: rendering a scene with the
 // same geometry as the last one (another frame of a sequence, another camera, other materials or
 // lights) builds no meshes and sends only what changed. One Vulkan device each. Calls from several
@@ -188,6 +209,9 @@ class PHONGVK_API Renderer {
   // The same with the per-pixel visibility keys (for diffs; the gpu backend's keys equal the
   // reference's). The graphics backend has no keys.
   RenderOutput renderWithKeys(const Scene& scene);
+  // One frame with the outputs asked for. Throws ArgumentError on the graphics backend (it has no
+  // keys), and as render otherwise.
+  RenderedFrame renderOutputs(const Scene& scene, const Outputs& outputs);
   // One untimed warm-up frame, then `repeat` timed frames of `scene`.
   std::vector<FrameTime> timeFrames(const Scene& scene, int repeat);
 

@@ -68,10 +68,25 @@ class Image(_np.ndarray):
 class Renderer(_phongvk.Renderer):
     __doc__ = _phongvk.Renderer.__doc__
 
-    def render(self, scene, width=None, height=None):
+    def render(self, scene, width=None, height=None, outputs=None):
         """One frame of `scene` as an Image (a uint8 array of shape (height, width, 3)); at
-        width x height pixels when both are given (the vertical field of view is kept)."""
-        return super().render(scene, width, height).view(Image)
+        width x height pixels when both are given (the vertical field of view is kept).
+
+        With outputs (names among "color", "rgba", "alpha", "depth", "object_id", "triangle_id"),
+        a dict of arrays by name instead: color an Image, rgba a (height, width, 4) uint8 array
+        with alpha where triangles cover the pixel (255: every sample), alpha that (height, width)
+        uint8 coverage alone, depth float32 metres along the camera's axis (inf where empty),
+        object_id (the index in the scene's objects) and triangle_id int32 (-1 where empty). With
+        samples per pixel, depth and ids are the pixel's nearest sample's. Every output is the same
+        bytes on the gpu and cpu backends; the graphics backend gives color only."""
+        if outputs is None:
+            return super().render(scene, width, height).view(Image)
+        if isinstance(outputs, str):
+            outputs = [outputs]
+        result = self.render_outputs(scene, list(outputs), width, height)
+        if "color" in result:
+            result["color"] = result["color"].view(Image)
+        return result
 
     def render_visibility(self, scene, width=None, height=None):
         image, triangle, depth = super().render_visibility(scene, width, height)

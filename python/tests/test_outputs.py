@@ -1,0 +1,97 @@
+"""A frame's outputs besides its colours: alpha (RGBA), depth, object and triangle ids, the same
+bytes on both backends in every shading mode and sample count, and depth against an analytic ray
+cast of a sphere."""
+
+import math
+
+import numpy as np
+import pytest
+
+import phongvk
+from conftest import scene_path
+
+ALL = ["color", "rgba", "alpha", "depth", "object_id", "triangle_id"]
+
+
+@pytest.mark.parametrize("name", ["scenes/basic.json", "scenes/paper/fig1_cube.json", "scenes/mesh_torus.json"])
+@pytest.mark.parametrize("shading", ["gouraud", "flat", "phong"])
+@pytest.mark.parametrize("samples", [1, 4])
+def test_every_output_is_the_same_bytes_on_both_backends(name, shading, samples):
+    scene = phongvk.load_scene(scene_path(name)).with_render(shading=shading, samples=samples)
+    cpu = phongvk.Renderer("cpu").render(scene, 160, 120, outputs=ALL)
+    gpu = phongvk.Renderer("gpu").render(scene, 160, 120, outputs=ALL)
+    for key in ALL:
+        assert cpu[key].dtype == gpu[key].dtype and np.array_equal(cpu[key], gpu[key]), key
+    assert np.array_equal(cpu["color"], phongvk.Renderer("cpu").render(scene, 160, 120))
+    assert np.array_equal(cpu["rgba"][..., :3], cpu["color"]) and np.array_equal(cpu["rgba"][..., 3], cpu["alpha"])
+    covered = cpu["triangle_id"] >= 0
+    assert covered.any()
+    assert np.array_equal(covered, cpu["object_id"] >= 0) and np.array_equal(covered, np.isfinite(cpu["depth"]))
+    assert (cpu["alpha"][~covered] == 0).all()
+    if samples == 1:
+        assert np.array_equal(cpu["alpha"], np.where(covered, 255, 0).astype(np.uint8))
+
+
+def test_alpha_with_samples_is_the_covered_share():
+    scene = phongvk.scene_from_dict({
+        "camera": {"position": [0, -6, 0], "look_at": [0, 0, 0], "width": 64, "height": 48},
+        "objects": [{"shape": "sphere", "radius": 1}], "render": {"samples": 16}})
+    alpha = phongvk.Renderer("gpu").render(scene, outputs=["alpha"])["alpha"]
+    assert alpha.max() == 255 and alpha.min() == 0
+    partial = alpha[(alpha > 0) & (alpha < 255)]
+    assert len(partial) > 20  # the silhouette's pixels
+    assert set(np.unique(partial)) <= {(255 * k + 8) // 16 for k in range(1, 16)}
+
+
+def test_object_ids_name_the_objects_in_order():
+    scene = phongvk.scene_from_dict({
+        "camera": {"position": [0, -6, 0], "look_at": [0, 0, 0], "width": 120, "height": 80},
+        "lights": [{"position": [0, -5, 3]}],
+        "objects": [{"shape": "cube", "center": [-1.2, 0, 0]}, {"shape": "sphere", "center": [1.2, 0, 0]}]})
+    out = phongvk.Renderer("gpu").render(scene, outputs=["object_id", "triangle_id"])
+    ids = out["object_id"]
+    assert ids.dtype == np.int32 and set(np.unique(ids)) == {-1, 0, 1}
+    assert (ids[:, :60] != 1).all() and (ids[:, 60:] != 0).all()  # the cube left, the sphere right
+    assert out["triangle_id"][ids == 0].max() < out["triangle_id"][ids == 1].min()  # objects' triangles in order
+
+
+def test_depth_is_the_distance_along_the_camera_axis_to_the_sphere():
+    """Every pixel's depth against the analytic ray cast of the sphere the icosphere approximates:
+    within the tessellation's sagitta (subdivide 5: under 0.2% of the radius)."""
+    distance, radius, width, height, fov = 4.0, 1.0, 96, 96, 40.0
+    scene = phongvk.scene_from_dict({
+        "camera": {"position": [0, -distance, 0], "look_at": [0, 0, 0], "fov": fov, "width": width, "height": height},
+        "objects": [{"shape": "icosphere", "radius": radius, "subdivide": 5}]})
+    depth = phongvk.Renderer("gpu").render(scene, outputs=["depth"])["depth"]
+    assert depth.dtype == np.float32
+    focal = height / (2 * math.tan(math.radians(fov) / 2))
+    ys, xs = np.mgrid[0:height, 0:width]
+    # The ray through each pixel centre in camera coordinates (x right, y down, z forward), z = 1:
+    # |t (rx, ry, 1) - (0, 0, distance)| = radius, whose near root t is the depth along the axis.
+    rx, ry = (xs + 0.5 - width / 2) / focal, (ys + 0.5 - height / 2) / focal
+    a, b, c = rx ** 2 + ry ** 2 + 1, -2 * distance, distance ** 2 - radius ** 2
+    disc = b * b - 4 * a * c
+    t = (-b - np.sqrt(np.maximum(disc, 0))) / (2 * a)
+    inner, outer = disc > 0.05 * b * b, disc < -0.05 * b * b  # away from the silhouette
+    assert inner.sum() > 500 and np.isfinite(depth[inner]).all()
+    assert np.abs(depth[inner] - t[inner]).max() < 0.002 * radius
+    assert np.isinf(depth[outer]).all()
+
+
+def test_visibility_with_samples_is_the_nearest_samples():
+    scene = phongvk.load_scene(scene_path("scenes/basic.json")).with_render(samples=4)
+    image, triangle, depth = phongvk.Renderer("gpu").render_visibility(scene, 96, 64)
+    assert image.shape == (64, 96, 3) and triangle.shape == (64, 96) and depth.shape == (64, 96)
+    cpu = phongvk.Renderer("cpu").render_visibility(scene, 96, 64)
+    assert np.array_equal(triangle, cpu[1]) and np.array_equal(depth, cpu[2])
+    assert (triangle == phongvk.NO_TRIANGLE).any() and (triangle != phongvk.NO_TRIANGLE).any()
+
+
+def test_bad_outputs_are_clear_errors():
+    scene = phongvk.load_scene(scene_path("scenes/basic.json"))
+    with pytest.raises(ValueError, match=r"outputs: unknown output 'normals' \(color, rgba, alpha, depth"):
+        phongvk.Renderer("cpu").render(scene, 32, 24, outputs=["normals"])
+    with pytest.raises(ValueError, match=r"the graphics backend has no visibility keys"):
+        phongvk.Renderer("graphics").render(scene, 32, 24, outputs=["depth"])
+    color = phongvk.Renderer("graphics").render(scene, 32, 24, outputs="color")["color"]
+    assert color.shape == (24, 32, 3) and isinstance(color, phongvk.Image)
