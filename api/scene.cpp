@@ -4,6 +4,7 @@
 
 #include "api/scene_access.h"
 #include "api/scene_parts.h"
+#include "prepare/scene_data.h"
 
 #include "scene/animate.h"
 #include "scene/camera.h"
@@ -131,6 +132,11 @@ void Scene::remove(ObjectId object) {
   state->spec = std::move(changed);
   state->added.erase(state->added.begin() + ptrdiff_t(i));
   state_ = std::move(state);
+}
+
+std::array<Vec3, 2> Scene::bounds() const {
+  const SceneData data = buildSceneData(*state_->spec);
+  return {Vec3{data.boundsMin.x, data.boundsMin.y, data.boundsMin.z}, Vec3{data.boundsMax.x, data.boundsMax.y, data.boundsMax.z}};
 }
 
 Camera Scene::camera() const { return cameraOf(*state_->spec); }

@@ -406,6 +406,9 @@ trimesh.Trimesh works), or vertices with faces; material and closed as in add_me
       .def(
           "remove", [](Scene& s, unsigned long long id) { s.remove(ObjectId{id}); }, py::arg("object"),
           "Takes out an object added with add() (IndexError for an unknown handle).")
+      .def_property_readonly("bounds", &Scene::bounds,
+                             "The world box around every object's vertices, as built: (min, max), each (x, y, z). "
+                             "Builds the meshes to know.")
       .def_property("camera", &Scene::camera, &Scene::setCamera,
                     "The camera (a phongvk.Camera); assigning one checks it like a scene file's \"camera\".")
       .def_property("lights", &Scene::lights, &Scene::setLights,

@@ -18,6 +18,7 @@
 #include "phongvk/mesh.h"
 #include "phongvk/scene_parts.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -73,6 +74,10 @@ class PHONGVK_API Scene {
   // Moves an object added with add; RangeError for a handle this scene does not hold.
   void setPose(ObjectId object, const Matrix4& pose);
   void remove(ObjectId object);
+
+  // The world box around every object's vertices, as built: {min, max}. Builds the meshes to know
+  // (a renderer builds its own again), so a program placing cameras about a model asks once.
+  std::array<Vec3, 2> bounds() const;
 
   // The camera as a value, and a new one (checked like a scene file's "camera": SceneError
   // naming camera.KEY; ArgumentError for a value that is not finite). A camera of size 0 x 0

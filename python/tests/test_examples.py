@@ -29,3 +29,28 @@ def test_notebook_runs_and_shows_images(tmp_path):
     outputs = [o for c in cells for o in c["outputs"]]
     assert not [o for o in outputs if o["output_type"] == "error"]
     assert sum("image/png" in o.get("data", {}) for o in outputs) >= 2  # the Image itself and the grid
+
+
+def test_dataset_script_writes_views_whose_cameras_and_depths_agree(tmp_path):
+    """The dataset example: every view's files, and its cameras.json and depth consistent: each
+    masked pixel, lifted by its depth through the intrinsics and the pose, lands in the model's box."""
+    import numpy as np
+    import phongvk
+    model = "/usr/share/assimp/models/PLY/Wuson.ply"
+    subprocess.run([sys.executable, str(EXAMPLES / "dataset.py"), model, str(tmp_path), "3", "y"],
+                   capture_output=True, text=True, env=child_environment(), check=True)
+    cameras = json.loads((tmp_path / "cameras.json").read_text())
+    k = cameras["intrinsics"]
+    low, high = np.array(phongvk.load_scene(model, up="y").bounds)
+    margin = 0.01 * np.linalg.norm(high - low)
+    assert cameras["convention"] == "opencv" and len(cameras["views"]) == 3
+    for i, view in enumerate(cameras["views"]):
+        mask = np.array(PIL.Image.open(tmp_path / f"{i:03d}_mask.png"))[..., 0] > 0
+        depth = np.load(tmp_path / f"{i:03d}_depth.npy")
+        assert PIL.Image.open(tmp_path / view["file"]).size == (k["width"], k["height"])
+        assert mask.sum() > 1000 and np.array_equal(mask, np.isfinite(depth))
+        ys, xs = np.nonzero(mask)
+        camera = np.stack([(xs - k["cx"]) / k["fx"], (ys - k["cy"]) / k["fy"], np.ones(len(xs))]) * depth[ys, xs]
+        pose = np.array(view["camera_to_world"])
+        world = (pose[:3, :3] @ camera).T + pose[:3, 3]
+        assert (world >= low - margin).all() and (world <= high + margin).all()
