@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The full CI, what .ci/run runs (22–25 min from a fresh clone on a 2-core machine): scripts/test.sh (build and the
-# whole test suite), then a bounded fuzzing run of the scene loader, the mesh and glTF importers and
-# scene_from_dict's path (scripts/fuzz.sh), then the whole test suite again under ASan + UBSan
-# (scripts/sanitize.sh). Each stage prints how long it took; the last lines are CTest's verdicts.
+# The full CI, what .ci/run runs (about 30 min from a fresh clone on a 2-core machine): scripts/test.sh (build
+# and the whole test suite), then `pip install .` into a fresh virtual environment and the Python
+# suite against it (scripts/pip_check.sh), a bounded fuzzing run of the scene loader, the mesh and
+# glTF importers and scene_from_dict's path (scripts/fuzz.sh), then the whole test suite again under
+# ASan + UBSan (scripts/sanitize.sh). Each stage prints how long it took; the last lines are CTest's verdicts.
 # Run `bash scripts/setup.sh --test` first. JOBS sets the parallelism (default: every core).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,6 +19,7 @@ stage() {
 }
 
 bash scripts/test.sh  # prints its own stage time, 'build + tests'
+stage "pip install" bash scripts/pip_check.sh
 stage "fuzz" bash scripts/fuzz.sh
 stage "sanitizers" bash scripts/sanitize.sh
 echo "== ci took $((SECONDS - start)) s"

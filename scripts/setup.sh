@@ -33,6 +33,7 @@ packages=(
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools  # Vulkan loader and headers, volk, shader compilers
   mesa-vulkan-drivers  # lavapipe: the GPU backend on a machine without a GPU
   python3 python3-dev pybind11-dev python3-numpy  # import phongvk (python/: built by default)
+  python3-setuptools python3-pip python3-venv  # pip install . (pyproject.toml, setup.py), offline
 )
 
 # The tests and the full CI (scripts/test.sh, scripts/ci.sh).

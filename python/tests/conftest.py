@@ -16,9 +16,13 @@ def scene_path(relative):
 
 def child_environment():
     """This process's environment for a child process, its PYTHONPATH made absolute (the child may
-    run in another folder) so that it imports the same phongvk."""
+    run in another folder) and led by the folder this process imports phongvk from, so that the
+    child imports the same phongvk: the build tree's, or a virtual environment's (a notebook's
+    kernel is the system's Python, which does not see the environment's packages)."""
+    import phongvk
     env = dict(os.environ)
-    paths = [str(pathlib.Path(p).resolve()) for p in env.get("PYTHONPATH", "").split(os.pathsep) if p]
+    paths = [str(pathlib.Path(phongvk.__file__).resolve().parents[1])]
+    paths += [str(pathlib.Path(p).resolve()) for p in env.get("PYTHONPATH", "").split(os.pathsep) if p]
     env["PYTHONPATH"] = os.pathsep.join(paths)
     return env
 
