@@ -147,9 +147,9 @@ void Scene::setCamera(const Camera& camera) {
   state_ = std::move(state);
 }
 
-std::vector<PointLight> Scene::lights() const { return lightsOf(*state_->spec); }
+std::vector<Light> Scene::lights() const { return lightsOf(*state_->spec); }
 
-void Scene::setLights(const std::vector<PointLight>& lights) {
+void Scene::setLights(const std::vector<Light>& lights) {
   auto state = std::make_shared<State>(*state_);
   state->spec = std::make_shared<const SceneSpec>(withLights(*state_->spec, lights));
   state_ = std::move(state);

@@ -121,24 +121,28 @@ Camera cameraOf(const SceneSpec& scene) {
   return camera;
 }
 
-SceneSpec withLights(const SceneSpec& scene, const std::vector<PointLight>& lights) {
+SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights) {
   Json json = Json::array();
   for (size_t i = 0; i < lights.size(); ++i) {
-    const PointLight& light = lights[i];
+    const Light& light = lights[i];
     const std::string at = "lights[" + std::to_string(i) + "]";
     requireFinite(light.intensity, at + ".intensity");
-    json.push_back({{"position", light.atCamera ? Json("camera") : vec3Json(light.position, at + ".position")},
-                    {"intensity", light.intensity},
-                    {"color", vec3Json(light.color, at + ".color")}});
+    Json entry = {{"intensity", light.intensity}, {"color", vec3Json(light.color, at + ".color")}};
+    if (light.directional) {
+      entry["direction"] = vec3Json(light.direction, at + ".direction");
+    } else {
+      entry["position"] = light.atCamera ? Json("camera") : vec3Json(light.position, at + ".position");
+    }
+    json.push_back(std::move(entry));
   }
   return withLightsSection(scene, json.dump());
 }
 
-std::vector<PointLight> lightsOf(const SceneSpec& scene) {
-  std::vector<PointLight> lights;
-  for (const Light& l : scene.lights) {
+std::vector<Light> lightsOf(const SceneSpec& scene) {
+  std::vector<Light> lights;
+  for (const LightSpec& l : scene.lights) {
     lights.push_back({{l.position.x, l.position.y, l.position.z}, l.intensity, {l.color.x, l.color.y, l.color.z},
-                      l.atCamera});
+                      l.atCamera, l.directional, {l.direction.x, l.direction.y, l.direction.z}});
   }
   return lights;
 }

@@ -18,8 +18,8 @@ SceneSpec withCamera(const SceneSpec& scene, const Camera& camera);
 // stood before fitting, since where it stands is known only once the meshes are built.
 Camera cameraOf(const SceneSpec& scene);
 
-SceneSpec withLights(const SceneSpec& scene, const std::vector<PointLight>& lights);
-std::vector<PointLight> lightsOf(const SceneSpec& scene);
+SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights);
+std::vector<Light> lightsOf(const SceneSpec& scene);
 
 // `object` placed by `pose` (its linear part and translation), replacing its own; ArgumentError
 // naming "pose" for a matrix that is not an affine map (non-finite, last row not 0 0 0 1, linear

@@ -30,13 +30,13 @@ void fitCamera(CameraSpec& camera, const SceneData& data, const std::string& fil
 }  // namespace
 
 bool needsFraming(const SceneSpec& scene) {
-  return scene.camera.fit || std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return l.atCamera; });
+  return scene.camera.fit || std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightSpec& l) { return l.atCamera; });
 }
 
 SceneSpec framedScene(const SceneSpec& scene, const SceneData& data) {
   SceneSpec framed = scene;
   if (framed.camera.fit) fitCamera(framed.camera, data, scene.path);
-  for (Light& light : framed.lights) {
+  for (LightSpec& light : framed.lights) {
     if (light.atCamera) light.position = framed.camera.position;
   }
   return framed;

@@ -124,9 +124,12 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
   for (const Material& m : scene.materials) data.materials.push_back(toGpu(m));
   if (data.materials.empty()) data.materials.push_back(toGpu(Material{}));
   data.lights.clear();
-  for (const Light& l : scene.lights) {
+  for (const LightSpec& l : scene.lights) {
     gpu::LightData g{};
-    g.position = glm::vec3(l.position - data.lightingOrigin);
+    // A directional light's l, the unit vector toward it, normalised in double: the same floats
+    // for both renderers.
+    g.position = l.directional ? glm::vec3(-glm::normalize(l.direction)) : glm::vec3(l.position - data.lightingOrigin);
+    g.directional = l.directional ? 1.0f : 0.0f;
     g.intensity = l.intensity;
     g.color = l.color;
     data.lights.push_back(g);

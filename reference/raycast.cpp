@@ -51,14 +51,14 @@ glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& eye
   const glm::dvec3 C(m.color);
   glm::dvec3 color = double(m.ka) * C * glm::dvec3(scene.ambient);
   const glm::dvec3 V = glm::normalize(eye - P);
-  for (const Light& light : scene.lights) {
-    const glm::dvec3 toLight = light.position - P;
-    const double d = glm::length(toLight);
+  for (const LightSpec& light : scene.lights) {
+    const glm::dvec3 toLight = light.directional ? -glm::normalize(light.direction) : light.position - P;
+    const double d = light.directional ? 1 : glm::length(toLight);
     if (d == 0) continue;
     const glm::dvec3 l = toLight / d;
     const double NdotL = glm::dot(N, l);
     if (NdotL <= 0) continue;
-    const double S = 1 / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
+    const double S = light.directional ? 1 : 1 / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
     const glm::dvec3 r = 2 * NdotL * N - l;
     const double rV = std::max(glm::dot(r, V), 0.0);
     const double specular = m.n == 0 ? 1 : std::pow(rV, double(m.n));

@@ -26,11 +26,15 @@ struct Material {
   glm::vec3 color = {0.8f, 0.8f, 0.8f};
 };
 
-struct Light {
+struct LightSpec {
   glm::dvec3 position = {0, 0, 0};
   float intensity = 1.0f;
   glm::vec3 color = {1, 1, 1};
   bool atCamera = false;             // "position": "camera": at the eye, wherever the camera is
+  // "direction" instead of "position": a directional light (the sun), whose light travels along
+  // `direction` (non-zero, any length) and reaches every point alike, without fall-off.
+  bool directional = false;
+  glm::dvec3 direction = {0, 0, -1};
 };
 
 struct CameraSpec {
@@ -101,7 +105,7 @@ struct SceneSpec {
   CameraSpec camera;
   glm::vec3 background = {0, 0, 0};
   glm::vec3 ambient = {1, 1, 1};
-  std::vector<Light> lights;
+  std::vector<LightSpec> lights;
   std::vector<Material> materials;   // named ones first (in file order), then inline ones
   std::vector<std::string> materialNames;  // materialNames[i] names materials[i], the named ones
   std::optional<int> defaultMaterial;      // the default material's index, once an object took it

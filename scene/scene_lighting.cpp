@@ -5,13 +5,22 @@
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kLightKeys = {"position", "intensity", "color"};
+const Keys kLightKeys = {"position", "direction", "intensity", "color"};
 const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color"};
 
-Light readLight(const Node& node) {
+LightSpec readLight(const Node& node) {
   requireObject(node);
   checkKeys(node, kLightKeys);
-  Light light;
+  LightSpec light;
+  const std::optional<Node> direction = node.find("direction");
+  if (direction) {
+    if (node.find("position")) node.failAt("direction", "a light has a position or a direction, not both");
+    light.directional = true;
+    light.direction = usableDirection(*direction, vec3(*direction));
+  }
+  if (auto intensity = node.find("intensity")) light.intensity = nonNegativeFloat(*intensity);
+  if (auto lightColor = node.find("color")) light.color = color(*lightColor);
+  if (direction) return light;
   const Node position = node.require("position");
   if (position.json().is_string()) {
     if (string(position) != "camera") position.fail("must be a point or \"camera\", got '" + string(position) + "'");
@@ -26,11 +35,11 @@ Light readLight(const Node& node) {
 
 }  // namespace
 
-std::vector<Light> readLights(const Node& node) {
+std::vector<LightSpec> readLights(const Node& node) {
   requireArray(node);
   if (node.json().size() > MAX_LIGHTS)
     node.fail("a scene has at most " + std::to_string(MAX_LIGHTS) + " lights, this one " + std::to_string(node.json().size()));
-  std::vector<Light> lights;
+  std::vector<LightSpec> lights;
   for (size_t i = 0; i < node.json().size(); ++i) lights.push_back(readLight(node.element(i)));
   return lights;
 }

@@ -32,7 +32,7 @@ double length(const Node& node);  // > 0 and <= MAX_COORDINATE
 glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction);
 // ---- sections ----
 CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
-std::vector<Light> readLights(const Node& node);  // scene_lighting.cpp
+std::vector<LightSpec> readLights(const Node& node);  // scene_lighting.cpp
 Material readMaterial(const Node& node);          // scene_lighting.cpp
 
 // A scene's materials as objects take them (SceneSpec::materials, materialNames, defaultMaterial):

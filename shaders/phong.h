@@ -98,20 +98,23 @@ FN float specularBase(vec3 N, vec3 l, vec3 V, float NdotL, bool blinn) {
 
 // One light's diffuse + specular contribution at P (all positions relative to the lighting origin):
 // S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0; with
-// `blinn`, max(N.h, 0)^n instead of max(r.V, 0)^n (specularBase).
+// `blinn`, max(N.h, 0)^n instead of max(r.V, 0)^n (specularBase). A directional light has the
+// same l at every P (its unit direction) and no fall-off: S = 1.
 // `specular` and `constantAttenuation` let a shader specialized to the scene skip work whose
 // result is known: with ks = 0 the specular term adds exactly +0, and with b = c = 0 the
 // attenuation 1 / (a + b d + c d^2) is exactly 1 / a. Either way the result is bit-identical to
 // the general case (both flags true / false), which the reference uses.
 FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, bool specular,
                        bool constantAttenuation, bool blinn) {
+  bool directional = light.directional != 0.0f;
   PRECISE vec3 toLight = light.position - P;
-  PRECISE float d = lightDistance(toLight);
+  PRECISE float d = directional ? 1.0f : lightDistance(toLight);
   if (d == 0.0f) return vec3(0.0f);  // a light exactly at the vertex adds nothing
-  PRECISE vec3 l = divide(toLight, d);
+  PRECISE vec3 l = directional ? light.position : divide(toLight, d);
   PRECISE float NdotL = dot3(N, l);
   if (NdotL <= 0.0f) return vec3(0.0f);
-  PRECISE float S = held(constantAttenuation
+  PRECISE float S = held(directional ? 1.0f
+                         : constantAttenuation
                              ? divide(1.0f, m.attenuation.x)
                              : divide(1.0f, m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));
   PRECISE float shade = held(m.kd * NdotL);

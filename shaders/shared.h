@@ -148,10 +148,11 @@ struct MaterialData {
 };
 
 struct LightData {
-  vec3 position;     // world coordinates relative to the lighting origin
+  vec3 position;     // a point light: world coordinates relative to the lighting origin;
+                     // a directional light: the unit direction toward it
   float intensity;
   vec3 color;
-  float pad0;
+  float directional;  // 1: a directional light (no position, no fall-off), 0: a point light
 };
 
 // One frame as the scene and its camera define it: built once per frame by makeFrame

@@ -187,7 +187,7 @@ TEST(Api, TypedCameraLightsAndPosesRenderAsTheSameSceneWritten) {
   };
   Scene built = parseScene(R"({"camera": {"position": [9, 0, 0], "look_at": [0, 0, 0]}, "objects": [{"shape": "cube", "size": 0.5}]})");
   built.setCamera(Camera{{2, -3, 1.5}, {0, 0, 0.3}, {0, 0, 1}, 45, 96, 64});
-  built.setLights({PointLight{{2, -3, 3}, 0.9, {1, 1, 1}, false}, PointLight{{0, 0, 0}, 1, {1, 0.5, 0}, true}});
+  built.setLights({Light{{2, -3, 3}, 0.9, {1, 1, 1}, false}, Light{{0, 0, 0}, 1, {1, 0.5, 0}, true}});
   MeshArrays tri;
   tri.positions = {0, 0, 0, 0.8f, 0, 0, 0, 0.8f, 0.3f};
   tri.triangles = {0, 1, 2};

@@ -56,6 +56,20 @@ TEST(Phong, SecondColouredLightAddsItsOwnTerm) {
   expectColor(c, vec3(0.3666667f, 0.1833333f + 0.0607179f, 0.0916667f));
 }
 
+TEST(Phong, DirectionalLightHasOneDirectionAndNoFallOff) {
+  // l = (0, .6, .8) everywhere, S = 1 whatever the attenuation: N.l = .8, r = (0, -.6, .8), with the
+  // eye straight above r.V = .8, spec .8^2 = .64: kd .5 * .8 + ks .3 * .64 = 0.592 per unit colour.
+  const MaterialData m = material();
+  LightData sun = light(vec3(0.0f, 0.6f, 0.8f), 1.0f, vec3(1.0f));
+  sun.directional = 1.0f;
+  for (const vec3& at : {P, vec3(100.0f, -40.0f, 0.0f)}) {
+    const vec3 V = toEye(at, at + vec3(0.0f, 0.0f, 5.0f));
+    expectColor(phongLight(at, N, V, m, sun), vec3(0.592f, 0.296f, 0.148f));
+  }
+  sun.position = vec3(0.0f, 0.6f, -0.8f);  // from below: nothing
+  expectColor(phongLight(P, N, toEye(P, EYE), m, sun), vec3(0.0f));
+}
+
 TEST(Phong, AttenuationOnlyQuadratic) {
   // a = b = 0, c = 1: S = 1/d^2 = 1/4 at d = 2; (kd + ks) * S = 0.2.
   MaterialData m = material();

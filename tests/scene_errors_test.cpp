@@ -107,7 +107,7 @@ TEST(SceneErrors, UnknownKeyNested) {
   EXPECT_EQ(errorFor([](ordered_json& s) {
               s["lights"] = {{{"position", {0, 0, 0}}, {"power", 1}}};
             }),
-            "a.json: lights[0].power: unknown key (allowed: position, intensity, color)");
+            "a.json: lights[0].power: unknown key (allowed: position, direction, intensity, color)");
   EXPECT_EQ(objectError(R"({"shape": "sphere", "radiu": 1})"),
             "a.json: objects[0].radiu: unknown key (allowed: shape, material, subdivide, closed, "
             "scale, rotate, center, radius, segments)");

@@ -85,8 +85,8 @@ class PHONGVK_API Scene {
   Camera camera() const;
   void setCamera(const Camera& camera);
   // The point lights, and new ones (checked like a scene file's "lights").
-  std::vector<PointLight> lights() const;
-  void setLights(const std::vector<PointLight>& lights);
+  std::vector<Light> lights() const;
+  void setLights(const std::vector<Light>& lights);
 
   // The frames of the file's "animate" block (1 without one; this scene is frame 0), each
   // validated like a scene file, with the meshes added with addMesh or add (built once, at their

@@ -51,12 +51,16 @@ PHONGVK_API Camera cameraFromIntrinsics(double fx, double fy, double cx, double 
                                         const Matrix4& cameraToWorld,
                                         PoseConvention convention = PoseConvention::OpenCV);
 
-// A point light (docs/DESIGN.md "Lights"), or one that moves with the camera (atCamera).
-struct PointLight {
+// A light (docs/DESIGN.md "Lights"): a point light at `position`, or one that moves with the camera
+// (atCamera), or a directional light (directional: its light travels along `direction` and reaches
+// every point alike, without fall-off, as the sun's).
+struct Light {
   Vec3 position = {0, 0, 0};
   double intensity = 1;
   Vec3 color = {1, 1, 1};
   bool atCamera = false;
+  bool directional = false;
+  Vec3 direction = {0, 0, -1};
 };
 
 // An object added in code: its handle for setPose and remove (Scene::add).

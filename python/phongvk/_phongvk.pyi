@@ -11,7 +11,7 @@ __revision__: str
 NO_TRIANGLE: int
 PNG_LEVEL_DEFAULT: int
 
-Vec3 = Tuple[float, float, float]
+Vec3 = list[float]  # 3 numbers; any sequence of 3 is accepted where one is assigned
 ArrayLike = npt.ArrayLike
 
 class Error(RuntimeError): ...
@@ -42,11 +42,12 @@ class Camera:
 
 class Light:
     position: Vec3
+    direction: Optional[Vec3]
     intensity: float
     color: Vec3
     at_camera: bool
-    def __init__(self, *, position: Sequence[float] = ..., intensity: float = ..., color: Sequence[float] = ...,
-                 at_camera: bool = ...) -> None: ...
+    def __init__(self, *, position: Sequence[float] = ..., direction: Optional[Sequence[float]] = None,
+                 intensity: float = ..., color: Sequence[float] = ..., at_camera: bool = ...) -> None: ...
 
 class Scene:
     @property
@@ -62,7 +63,7 @@ class Scene:
     @property
     def frame_count(self) -> int: ...
     @property
-    def bounds(self) -> Tuple[Vec3, Vec3]: ...
+    def bounds(self) -> list[Vec3]: ...
     camera: Camera
     lights: list[Light]
     def frame(self, index: int) -> Scene: ...

@@ -200,3 +200,27 @@ def test_bad_values_are_clear_errors_and_change_nothing(call, error, message):
         call(scene)
     assert scene.object_count == 1
     assert np.array_equal(phongvk.Renderer("cpu").render(scene), before)
+
+
+def test_a_directional_light_renders_as_the_same_light_written():
+    written = phongvk.scene_from_dict({"camera": {"position": [3, -2, 1.5], "look_at": [0, 0, 0], "width": 96,
+                                                  "height": 64},
+                                       "lights": [{"direction": [-1, 1, -2], "intensity": 0.8, "color": [1, 0.9, 0.7]}],
+                                       "objects": [{"shape": "sphere", "radius": 0.6}]})
+    built = phongvk.scene_from_dict({"camera": {"position": [3, -2, 1.5], "look_at": [0, 0, 0], "width": 96,
+                                                "height": 64}, "objects": [{"shape": "sphere", "radius": 0.6}]})
+    built.lights = [phongvk.Light(direction=(-1, 1, -2), intensity=0.8, color=(1, 0.9, 0.7))]
+    image = both(built)
+    assert np.array_equal(image, both(written))
+    assert tuple(built.lights[0].direction) == (-1.0, 1.0, -2.0) and phongvk.Light().direction is None
+    # The sun reaches a far copy of the sphere as brightly as the near one: no fall-off.
+    far = phongvk.scene_from_dict({"camera": {"position": [3003, -2, 1.5], "look_at": [3000, 0, 0], "width": 96,
+                                              "height": 64},
+                                   "lights": [{"direction": [-1, 1, -2], "intensity": 0.8, "color": [1, 0.9, 0.7]}],
+                                   "objects": [{"shape": "sphere", "center": [3000, 0, 0], "radius": 0.6}]})
+    assert np.abs(both(far).astype(int) - image.astype(int)).max() <= 1
+    with pytest.raises(phongvk.SceneError, match=r"lights\[0\].direction: a light has a position or a direction, not both"):
+        phongvk.scene_from_dict({"camera": {"position": [3, 0, 0], "look_at": [0, 0, 0]}, "objects": [{"shape": "cube"}],
+                                 "lights": [{"position": [0, 0, 3], "direction": [0, 0, -1]}]})
+    with pytest.raises(phongvk.SceneError, match=r"lights\[0\].direction: must have a non-zero finite length"):
+        built.lights = [phongvk.Light(direction=(0, 0, 0))]
