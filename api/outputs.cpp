@@ -1,55 +1,50 @@
 // outputs.cpp — see outputs.h.
 #include "api/outputs.h"
 
-#include <bit>
+#include "shaders/depth.h"
+
+#include <algorithm>
 #include <cstdint>
-#include <limits>
+#include <cstring>
 
 namespace phongvk {
-namespace {
 
-constexpr uint64_t NO_KEY = ~uint64_t(0);  // the cleared key: no triangle
-
-// The nearest of a pixel's samples and how many of them a triangle covers.
-struct PixelKey {
-  uint64_t key = NO_KEY;
-  int covered = 0;
-};
-
-PixelKey pixelKey(const std::vector<uint64_t>& keys, int x, int y, int side, int sampleWidth) {
-  PixelKey p;
-  for (int j = 0; j < side; ++j) {
-    for (int i = 0; i < side; ++i) {
-      const uint64_t key = keys[size_t(y * side + j) * size_t(sampleWidth) + size_t(x * side + i)];
-      p.covered += key != NO_KEY;
-      p.key = std::min(p.key, key);
-    }
-  }
-  return p;
+bool needsKeys(const Outputs& outputs) {
+  return outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds;
 }
 
-}  // namespace
-
 RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& data, const Outputs& outputs) {
-  RenderedFrame frame;
-  frame.image = std::move(out.image);
-  const int width = frame.image.width, height = frame.image.height, samples = side * side;
+  const int width = out.image.width, height = out.image.height, samples = side * side, sampleWidth = width * side;
   const size_t pixels = size_t(width) * size_t(height);
-  if (outputs.alpha) frame.alpha.resize(pixels);
-  if (outputs.depth) frame.depth.resize(pixels);
-  if (outputs.objectIds) frame.objectIds.resize(pixels);
-  if (outputs.triangleIds) frame.triangleIds.resize(pixels);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const size_t i = size_t(y) * size_t(width) + size_t(x);
-      const PixelKey p = pixelKey(out.keys, x, y, side, width * side);
-      const bool covered = p.key != NO_KEY;
-      const uint32_t triangle = uint32_t(p.key);  // the whole scene's index (a share's keys are offset)
-      if (outputs.alpha) frame.alpha[i] = uint8_t((255 * p.covered + samples / 2) / samples);
-      if (outputs.depth)
-        frame.depth[i] = covered ? std::bit_cast<float>(uint32_t(p.key >> 32)) : std::numeric_limits<float>::infinity();
-      if (outputs.triangleIds) frame.triangleIds[i] = covered ? int32_t(triangle) : -1;
-      if (outputs.objectIds) frame.objectIds[i] = covered ? int32_t(data.triangles[triangle - data.triangleBase].w) : -1;
+  // Per pixel, the nearest of its samples (the smallest key) and how many of them a triangle covers.
+  std::vector<uint64_t> keys(pixels, gpu::KEY_CLEAR);
+  std::vector<uint8_t> alpha(outputs.alpha ? pixels : 0);
+  for (size_t i = 0; i < pixels; ++i) {
+    const size_t x = i % size_t(width), y = i / size_t(width);
+    int covered = 0;
+    for (int j = 0; j < side; ++j) {
+      for (int k = 0; k < side; ++k) {
+        const uint64_t key = out.keys[(y * side + j) * size_t(sampleWidth) + x * side + k];
+        covered += key != gpu::KEY_CLEAR;
+        keys[i] = std::min(keys[i], key);
+      }
+    }
+    if (outputs.alpha) alpha[i] = uint8_t((255 * covered + samples / 2) / samples);  // rounded as the colours are
+  }
+  // The keys read as the visibility buffer reads them (image.h visibilityOf).
+  RenderOutput perPixel{std::move(out.image), std::move(keys)};
+  Visibility visibility = visibilityOf(perPixel);
+  RenderedFrame frame{std::move(perPixel.image), std::move(alpha)};
+  if (outputs.depth) frame.depth = std::move(visibility.depth);
+  if (outputs.triangleIds) {
+    frame.triangleIds.resize(pixels);  // NO_TRIANGLE reads as -1
+    std::memcpy(frame.triangleIds.data(), visibility.triangle.data(), pixels * sizeof(int32_t));
+  }
+  if (outputs.objectIds) {
+    frame.objectIds.resize(pixels);
+    for (size_t i = 0; i < pixels; ++i) {
+      const uint32_t triangle = visibility.triangle[i];  // the whole scene's index (a share's keys are offset)
+      frame.objectIds[i] = triangle == NO_TRIANGLE ? -1 : int32_t(data.triangles[triangle - data.triangleBase].w);
     }
   }
   return frame;

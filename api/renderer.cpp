@@ -70,7 +70,7 @@ RenderOutput Renderer::Impl::render(const Scene& scene, bool withKeys, Image sto
 
 RenderedFrame Renderer::Impl::renderOutputs(const Scene& scene, const Outputs& outputs) {
   const std::lock_guard<std::mutex> one(busy_);
-  const bool keys = outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds;
+  const bool keys = needsKeys(outputs);
   RenderOutput out = renderHeld(scene, keys, {});
   if (!keys) return {std::move(out.image)};
   return outputsFromKeys(std::move(out), sampleGridSide(data_->samples), *data_, outputs);
@@ -124,7 +124,7 @@ RenderOutput Renderer::renderWithKeys(const Scene& scene) {
 }
 
 RenderedFrame Renderer::renderOutputs(const Scene& scene, const Outputs& outputs) {
-  if (impl_->backend() == Backend::Graphics && (outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds)) {
+  if (impl_->backend() == Backend::Graphics && needsKeys(outputs)) {
     throw ArgumentError("the graphics backend has no visibility keys, so no alpha, depth or ids; use the gpu or cpu backend");
   }
   return impl_->renderOutputs(scene, outputs);

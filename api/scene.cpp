@@ -59,6 +59,15 @@ struct Scene::State {
   Scene with(std::shared_ptr<const SceneSpec> other) const {
     return Scene(std::make_shared<const State>(State{std::move(other), sequence, added, nextId}));
   }
+  // This scene with a copy of its model and of this state changed by change(spec, state).
+  template <typename Change>
+  Scene changed(Change change) const {
+    auto copy = std::make_shared<SceneSpec>(*spec);
+    State next = *this;
+    change(*copy, next);
+    next.spec = std::move(copy);
+    return Scene(std::make_shared<const State>(std::move(next)));
+  }
 };
 
 Scene::Scene(std::shared_ptr<const State> state) : state_(std::move(state)) {}
@@ -101,37 +110,32 @@ void Scene::addMesh(const MeshArrays& mesh, const std::string& material, bool cl
 }
 
 ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::string& material, bool closed) {
-  AddedMesh added{ObjectId{state_->nextId}, std::make_shared<const Mesh>(meshFromArrays(mesh)), material, closed, pose};
-  auto changed = std::make_shared<SceneSpec>(*state_->spec);
-  appendAdded(*changed, added);
-  auto state = std::make_shared<State>(*state_);
-  state->spec = std::move(changed);
-  state->added.push_back(std::move(added));
-  ++state->nextId;
-  state_ = std::move(state);
-  return ObjectId{state_->nextId - 1};
+  const ObjectId id{state_->nextId};
+  const AddedMesh added{id, std::make_shared<const Mesh>(meshFromArrays(mesh)), material, closed, pose};
+  *this = state_->changed([&](SceneSpec& spec, State& state) {
+    appendAdded(spec, added);
+    state.added.push_back(added);
+    ++state.nextId;
+  });
+  return id;
 }
 
 void Scene::setPose(ObjectId object, const Matrix4& pose) {
   const size_t i = state_->position(object, path());
-  auto changed = std::make_shared<SceneSpec>(*state_->spec);
-  placeObject(changed->objects[state_->objectIndex(i)], pose);
-  auto state = std::make_shared<State>(*state_);
-  state->spec = std::move(changed);
-  state->added[i].pose = pose;
-  state_ = std::move(state);
+  *this = state_->changed([&](SceneSpec& spec, State& state) {
+    placeObject(spec.objects[state.objectIndex(i)], pose);
+    state.added[i].pose = pose;
+  });
 }
 
 void Scene::remove(ObjectId object) {
   const size_t i = state_->position(object, path());
-  auto changed = std::make_shared<SceneSpec>(*state_->spec);
-  const size_t index = state_->objectIndex(i);
-  changed->objects.erase(changed->objects.begin() + ptrdiff_t(index));
-  for (size_t k = index; k < changed->objects.size(); ++k) changed->objects[k].jsonPath = "objects[" + std::to_string(k) + "]";
-  auto state = std::make_shared<State>(*state_);
-  state->spec = std::move(changed);
-  state->added.erase(state->added.begin() + ptrdiff_t(i));
-  state_ = std::move(state);
+  *this = state_->changed([&](SceneSpec& spec, State& state) {
+    const size_t index = state.objectIndex(i);
+    spec.objects.erase(spec.objects.begin() + ptrdiff_t(index));
+    for (size_t k = index; k < spec.objects.size(); ++k) spec.objects[k].jsonPath = "objects[" + std::to_string(k) + "]";
+    state.added.erase(state.added.begin() + ptrdiff_t(i));
+  });
 }
 
 std::array<Vec3, 2> Scene::bounds() const {
@@ -142,17 +146,13 @@ std::array<Vec3, 2> Scene::bounds() const {
 Camera Scene::camera() const { return cameraOf(*state_->spec); }
 
 void Scene::setCamera(const Camera& camera) {
-  auto state = std::make_shared<State>(*state_);
-  state->spec = std::make_shared<const SceneSpec>(withCamera(*state_->spec, camera));
-  state_ = std::move(state);
+  *this = state_->with(std::make_shared<const SceneSpec>(withCamera(*state_->spec, camera)));
 }
 
 std::vector<Light> Scene::lights() const { return lightsOf(*state_->spec); }
 
 void Scene::setLights(const std::vector<Light>& lights) {
-  auto state = std::make_shared<State>(*state_);
-  state->spec = std::make_shared<const SceneSpec>(withLights(*state_->spec, lights));
-  state_ = std::move(state);
+  *this = state_->with(std::make_shared<const SceneSpec>(withLights(*state_->spec, lights)));
 }
 
 int Scene::frameCount() const { return state_->sequence ? state_->sequence->frameCount() : 1; }
@@ -177,6 +177,12 @@ Scene firstFrame(std::shared_ptr<const SceneSequence> sequence) {
 }
 
 }  // namespace
+
+ModelUp parseModelUp(const std::string& name) {
+  if (name == "y") return ModelUp::Y;
+  if (name == "z") return ModelUp::Z;
+  throw ArgumentError("up: expected 'y' or 'z', got '" + name + "'");
+}
 
 Scene loadScene(const std::string& path, const LoadOptions& options) {
   std::optional<UpAxis> up;

@@ -92,6 +92,7 @@ Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int widt
 
 SceneSpec withCamera(const SceneSpec& scene, const Camera& camera) {
   const View current = makeView(scene.camera);
+  const bool sized = camera.width > 0 || camera.height > 0;  // else the scene's own size
   requireFinite(camera.fov, "camera.fov");
   requireFinite(camera.nearPlane, "camera.near");
   requireFinite(camera.farPlane, "camera.far");
@@ -99,8 +100,8 @@ SceneSpec withCamera(const SceneSpec& scene, const Camera& camera) {
                {"look_at", vec3Json(camera.lookAt, "camera.look_at")},
                {"up", vec3Json(camera.up, "camera.up")},
                {"fov", camera.fov},
-               {"width", camera.width > 0 || camera.height > 0 ? camera.width : current.width},
-               {"height", camera.width > 0 || camera.height > 0 ? camera.height : current.height},
+               {"width", sized ? camera.width : current.width},
+               {"height", sized ? camera.height : current.height},
                {"near", camera.nearPlane},
                {"far", camera.farPlane}};
   return withCameraSection(scene, json.dump());

@@ -66,9 +66,7 @@ Scene frameAsAsked(const Scene& sequence, int index, const ViewOptions& options)
 }
 
 LoadOptions loadOptions(const ViewOptions& options) {
-  LoadOptions load;
-  if (!options.up.empty()) load.up = options.up == "y" ? ModelUp::Y : ModelUp::Z;
-  return load;
+  return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up)};
 }
 
 Scene loadEveryFrameValidated(const ViewOptions& options) {

@@ -98,8 +98,6 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   createBuffer(scene_.clipList, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
 }
 
-void GpuRenderer::releaseScene() { scene_ = {}; }
-
 // New keys are cleared by the first frame (keysDirty_). Where the host reads the colours from the
 // key slots it resets them as it goes, so the next frame need not clear the key buffer; elsewhere
 // (the pack pass, frames with keys, frames rendered again) the next frame clears it with one fill,

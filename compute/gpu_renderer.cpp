@@ -79,7 +79,7 @@ void GpuRenderer::startRetries() {
 
 void GpuRenderer::replaceScene(const SceneData& data) {
   checkSceneFits(data);  // before anything is released
-  releaseScene();        // the old meshes go before the new ones are allocated
+  scene_ = {};  // the old meshes go before the new ones are allocated
   compileSceneModes(data);
   uploadScene(data);
   startRetries();

@@ -163,7 +163,6 @@ class GpuRenderer {
   void compileSceneModes(const SceneData& data);
   void createFrameBuffers();
   void uploadScene(const SceneData& data);
-  void releaseScene();  // the scene's buffers (release: all of them)
   void startRetries();
   void ensureImageBuffers(uint32_t width, uint32_t height);
   void createLargeBuffersFor(VkDeviceSize pixels);

@@ -178,11 +178,12 @@ Result released(Renderer& renderer, const Scene& scene, std::optional<int> width
   return (renderer.*call)(s);
 }
 
-py::tuple visibilityArrays(RenderOutput&& out) {
-  Visibility v = visibilityOf(out);
-  const py::ssize_t h = v.height, w = v.width;
-  return py::make_tuple(imageArray(std::move(out.image)), ownedArray(std::move(v.triangle), {h, w}),
-                        ownedArray(std::move(v.depth), {h, w}));
+// One frame of `scene` at the asked size with `outputs`, the GIL released meanwhile.
+RenderedFrame renderedFrame(Renderer& renderer, const Scene& scene, std::optional<int> width, std::optional<int> height,
+                            const Outputs& outputs) {
+  const Scene s = sized(scene, width, height);
+  py::gil_scoped_release release;
+  return renderer.renderOutputs(s, outputs);
 }
 
 // The output names render(outputs=...) takes, as the library's Outputs.
@@ -223,7 +224,7 @@ py::dict outputsDict(RenderedFrame&& frame, const std::vector<std::string>& name
       d["triangle_id"] = ownedArray(std::move(frame.triangleIds), {h, w});
     }
   }
-  // Last: rgba above copied from the image.
+  // The colour last: rgba above copied from the image this moves.
   if (std::find(names.begin(), names.end(), "color") != names.end()) d["color"] = imageArray(std::move(frame.image));
   return d;
 }
@@ -440,10 +441,7 @@ trimesh.Trimesh works), or vertices with faces; material and closed as in add_me
   m.def(
       "load_scene",
       [](const std::string& path, std::optional<std::string> up) {
-        LoadOptions options;
-        if (up && *up != "y" && *up != "z") throw ArgumentError("up: expected 'y' or 'z', got '" + *up + "'");
-        if (up) options.up = *up == "y" ? ModelUp::Y : ModelUp::Z;
-        return loadScene(path, options);
+        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual});
       },
       py::arg("path"), py::arg("up") = py::none(),
       R"(Reads and validates a scene file (the CLI's schema), or a model file (.obj .ply .stl .gltf
@@ -489,26 +487,14 @@ other threads go on; one renderer used from several threads renders one frame at
           "render_outputs",
           [](Renderer& r, const Scene& scene, const std::vector<std::string>& names, std::optional<int> width,
              std::optional<int> height) {
-            const Outputs outputs = outputsNamed(names);
-            const Scene s = sized(scene, width, height);
-            RenderedFrame frame;
-            {
-              py::gil_scoped_release release;
-              frame = r.renderOutputs(s, outputs);
-            }
-            return outputsDict(std::move(frame), names);
+            return outputsDict(renderedFrame(r, scene, width, height, outputsNamed(names)), names);
           },
           py::arg("scene"), py::arg("outputs"), py::arg("width") = py::none(), py::arg("height") = py::none(),
           "render(scene, outputs=...) without the package's Image view: a dict of arrays by name.")
       .def(
           "render_visibility",
           [](Renderer& r, const Scene& scene, std::optional<int> width, std::optional<int> height) {
-            const Scene s = sized(scene, width, height);
-            RenderedFrame frame;
-            {
-              py::gil_scoped_release release;
-              frame = r.renderOutputs(s, Outputs{.depth = true, .triangleIds = true});
-            }
+            RenderedFrame frame = renderedFrame(r, scene, width, height, Outputs{.depth = true, .triangleIds = true});
             const py::ssize_t h = frame.image.height, w = frame.image.width;
             std::vector<uint32_t> triangle(frame.triangleIds.size());
             std::memcpy(triangle.data(), frame.triangleIds.data(), triangle.size() * sizeof(uint32_t));  // -1: NO_TRIANGLE

@@ -83,10 +83,6 @@ Mesh meshFromArrays(const MeshArrays& a) {
   return mesh;
 }
 
-void addMeshObject(SceneSpec& scene, const MeshArrays& arrays, const std::string& material, bool closed) {
-  addMeshObject(scene, std::make_shared<const Mesh>(meshFromArrays(arrays)), material, closed);
-}
-
 void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const std::string& material, bool closed) {
   Object object;
   object.shape = Shape::Mesh;

@@ -17,13 +17,11 @@ namespace phongvk {
 // position, an index outside the vertices, a normal without direction, a wrong count.
 Mesh meshFromArrays(const MeshArrays& arrays);
 
-// Appends the arrays as a mesh object ("objects[N]") to `scene`, with `material`: empty for the
-// default material, a material's name, or JSON text (a quoted name or an object of material
-// fields), read like a scene file's "material" (messages name "objects[N].material"). Throws std::invalid_argument for bad
-// arrays, SceneError for a bad material; `scene` is unchanged then.
-void addMeshObject(SceneSpec& scene, const MeshArrays& arrays, const std::string& material, bool closed);
-// The same for a mesh already built from arrays (meshFromArrays): how a scene's added meshes
-// follow it into its other frames, built once.
+// Appends a mesh built from arrays (meshFromArrays, once: a scene's added meshes follow it into its
+// other frames) as a mesh object ("objects[N]") to `scene`, with `material`: empty for the default
+// material, a material's name, or JSON text (a quoted name or an object of material fields), read
+// like a scene file's "material" (messages name "objects[N].material"). Throws SceneError for a bad
+// material; `scene` is unchanged then.
 void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const std::string& material, bool closed);
 
 }  // namespace phongvk

@@ -108,6 +108,10 @@ class PHONGVK_API Scene {
 // model whose exporter used the other convention.
 enum class ModelUp { Usual, Y, Z };
 
+// "y" or "z", as the CLI's --up and Python's up= take it; ArgumentError "up: expected 'y' or 'z',
+// got '...'" for anything else.
+PHONGVK_API ModelUp parseModelUp(const std::string& name);
+
 struct LoadOptions {
   ModelUp up = ModelUp::Usual;  // only for a model file alone: a scene file names each object's "up"
 };
