@@ -20,12 +20,13 @@ namespace phongvk {
 
 namespace {
 
-// A mesh given to addMesh, built once, with what it was added with: it follows the scene into
-// its other frames (Scene::frame).
+// A mesh given to addMesh, built once, with what it was added with (its material as a scene file's
+// "material": a name or an object of fields): it follows the scene into its other frames
+// (Scene::frame).
 struct AddedMesh {
   ObjectId id;
   std::shared_ptr<const Mesh> mesh;
-  std::string material;
+  scenejson::Json material;
   bool closed = false;
   Matrix4 pose = IDENTITY_POSE;
 };
@@ -55,6 +56,18 @@ struct Scene::State {
   // The index in spec->objects of added[i].
   size_t objectIndex(size_t i) const { return spec->objects.size() - added.size() + i; }
 
+  // Adds `mesh` to `scene` (whose state this is) with `material` as a scene file's "material".
+  ObjectId add(Scene& scene, const MeshArrays& mesh, const Matrix4& pose, scenejson::Json material, bool closed) const {
+    const ObjectId id{nextId};
+    const AddedMesh added{id, std::make_shared<const Mesh>(meshFromArrays(mesh)), std::move(material), closed, pose};
+    scene = changed([&](SceneSpec& spec, State& state) {
+      appendAdded(spec, added);
+      state.added.push_back(added);
+      ++state.nextId;
+    });
+    return id;
+  }
+
   // This scene with another model: the sequence and the added meshes stay.
   Scene with(std::shared_ptr<const SceneSpec> other) const {
     return Scene(std::make_shared<const State>(State{std::move(other), sequence, added, nextId}));
@@ -71,6 +84,9 @@ struct Scene::State {
 };
 
 Scene::Scene(std::shared_ptr<const State> state) : state_(std::move(state)) {}
+
+Scene::Scene(int width, int height)
+    : state_(std::make_shared<const State>(State{std::make_shared<const SceneSpec>(sceneInCode(width, height))})) {}
 
 const SceneSpec& SceneAccess::spec(const Scene& scene) { return *scene.state_->spec; }
 
@@ -91,9 +107,13 @@ Scene Scene::withImageSize(int width, int height) const {
   return state_->with(std::move(resized));
 }
 
-Scene Scene::withRender(const std::string& json) const {
-  return state_->with(std::make_shared<SceneSpec>(withRenderOptions(*state_->spec, json)));
+Scene Scene::withRender(const RenderSettings& settings) const {
+  return state_->with(std::make_shared<const SceneSpec>(withRenderSettings(*state_->spec, settings)));
 }
+
+RenderSettings Scene::renderSettings() const { return renderSettingsOf(*state_->spec); }
+
+void Scene::setRenderSettings(const RenderSettings& settings) { *this = withRender(settings); }
 
 Scene Scene::share(int part, int parts) const {
   if (parts < 1 || part < 0 || part >= parts) {
@@ -105,19 +125,20 @@ Scene Scene::share(int part, int parts) const {
   return state_->with(std::move(shared));
 }
 
-void Scene::addMesh(const MeshArrays& mesh, const std::string& material, bool closed) {
+void Scene::addMesh(const MeshArrays& mesh, const Material& material, bool closed) {
   add(mesh, IDENTITY_POSE, material, closed);
 }
 
-ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::string& material, bool closed) {
-  const ObjectId id{state_->nextId};
-  const AddedMesh added{id, std::make_shared<const Mesh>(meshFromArrays(mesh)), material, closed, pose};
-  *this = state_->changed([&](SceneSpec& spec, State& state) {
-    appendAdded(spec, added);
-    state.added.push_back(added);
-    ++state.nextId;
-  });
-  return id;
+void Scene::addMesh(const MeshArrays& mesh, const std::string& materialName, bool closed) {
+  add(mesh, IDENTITY_POSE, materialName, closed);
+}
+
+ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const Material& material, bool closed) {
+  return state_->add(*this, mesh, pose, materialJson(material), closed);
+}
+
+ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::string& materialName, bool closed) {
+  return state_->add(*this, mesh, pose, scenejson::Json(materialName), closed);
 }
 
 void Scene::setPose(ObjectId object, const Matrix4& pose) {

@@ -5,6 +5,7 @@
 #include "scene/camera.h"
 #include "scene/scene_json.h"
 
+#include <array>
 #include <cmath>
 
 namespace phongvk {
@@ -90,21 +91,30 @@ Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int widt
   return cameraFromPose(cameraToWorld, convention, fov, width, height);
 }
 
-SceneSpec withCamera(const SceneSpec& scene, const Camera& camera) {
-  const View current = makeView(scene.camera);
-  const bool sized = camera.width > 0 || camera.height > 0;  // else the scene's own size
+namespace {
+
+// `camera` at width x height as a scene file's "camera".
+Json cameraJson(const Camera& camera, int width, int height) {
   requireFinite(camera.fov, "camera.fov");
   requireFinite(camera.nearPlane, "camera.near");
   requireFinite(camera.farPlane, "camera.far");
-  Json json = {{"position", vec3Json(camera.position, "camera.position")},
-               {"look_at", vec3Json(camera.lookAt, "camera.look_at")},
-               {"up", vec3Json(camera.up, "camera.up")},
-               {"fov", camera.fov},
-               {"width", sized ? camera.width : current.width},
-               {"height", sized ? camera.height : current.height},
-               {"near", camera.nearPlane},
-               {"far", camera.farPlane}};
-  return withCameraSection(scene, json.dump());
+  return {{"position", vec3Json(camera.position, "camera.position")},
+          {"look_at", vec3Json(camera.lookAt, "camera.look_at")},
+          {"up", vec3Json(camera.up, "camera.up")},
+          {"fov", camera.fov},
+          {"width", width},
+          {"height", height},
+          {"near", camera.nearPlane},
+          {"far", camera.farPlane}};
+}
+
+}  // namespace
+
+SceneSpec withCamera(const SceneSpec& scene, const Camera& camera) {
+  const View current = makeView(scene.camera);
+  const bool sized = camera.width > 0 || camera.height > 0;  // else the scene's own size
+  const Json json = cameraJson(camera, sized ? camera.width : current.width, sized ? camera.height : current.height);
+  return withSection(scene, "camera", json.dump());
 }
 
 Camera cameraOf(const SceneSpec& scene) {
@@ -136,7 +146,7 @@ SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights) {
     }
     json.push_back(std::move(entry));
   }
-  return withLightsSection(scene, json.dump());
+  return withSection(scene, "lights", json.dump());
 }
 
 std::vector<Light> lightsOf(const SceneSpec& scene) {
@@ -146,6 +156,62 @@ std::vector<Light> lightsOf(const SceneSpec& scene) {
                       l.atCamera, l.directional, {l.direction.x, l.direction.y, l.direction.z}});
   }
   return lights;
+}
+
+Json materialJson(const Material& m) {
+  for (const auto& [value, key] : {std::pair{m.ka, "ka"}, {m.kd, "kd"}, {m.ks, "ks"}, {m.n, "n"}})
+    requireFinite(value, std::string("material.") + key);
+  return {{"ka", m.ka},
+          {"kd", m.kd},
+          {"ks", m.ks},
+          {"n", m.n},
+          {"attenuation", vec3Json(m.attenuation, "material.attenuation")},
+          {"color", vec3Json(m.color, "material.color")}};
+}
+
+SceneSpec withRenderSettings(const SceneSpec& scene, const RenderSettings& settings) {
+  const Json render = {{"shading", shadingName(settings.shading)},
+                       {"specular", specularName(settings.specular)},
+                       {"interpolation", interpolationName(settings.interpolation)},
+                       {"samples", settings.samples}};
+  const Json background = vec3Json(settings.background, "background");
+  return withSection(withSection(scene, "render", render.dump()), "background", background.dump());
+}
+
+RenderSettings renderSettingsOf(const SceneSpec& scene) {
+  const glm::vec3 b = scene.background;
+  return {scene.shading, scene.specular, scene.interpolation, scene.samples, {b.x, b.y, b.z}};
+}
+
+SceneSpec sceneInCode(int width, int height) {
+  const SceneSpec camera = withSection(SceneSpec{}, "camera", cameraJson(Camera{}, width, height).dump());
+  return withLights(camera, {Light{.atCamera = true}});
+}
+
+namespace {
+
+// The name of choice `value` among `names`; "" (which no scene file's reader takes) for a value
+// outside the enum.
+template <typename E, size_t N>
+const char* nameOf(E value, const std::array<const char*, N>& names) {
+  const size_t index = size_t(value);
+  return index < N ? names[index] : "";
+}
+
+// The choice `name` stands for, read as a scene file's render.KEY.
+SceneSpec renderOption(const char* key, const std::string& name) {
+  return withSection(SceneSpec{}, "render", Json{{key, name}}.dump());
+}
+
+}  // namespace
+
+const char* shadingName(Shading shading) { return nameOf(shading, SHADING_NAMES); }
+const char* specularName(Specular specular) { return nameOf(specular, SPECULAR_NAMES); }
+const char* interpolationName(Interpolation interpolation) { return nameOf(interpolation, INTERPOLATION_NAMES); }
+Shading parseShading(const std::string& name) { return renderOption("shading", name).shading; }
+Specular parseSpecular(const std::string& name) { return renderOption("specular", name).specular; }
+Interpolation parseInterpolation(const std::string& name) {
+  return renderOption("interpolation", name).interpolation;
 }
 
 void placeObject(Object& object, const Matrix4& pose) {

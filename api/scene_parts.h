@@ -1,11 +1,12 @@
-// scene_parts.h — the typed camera, lights and poses (include/phongvk/scene_parts.h) to and from
-// the scene model: a camera or lights become the scene file's section and go through its checks
-// (scene.h withCameraSection, withLightsSection), so a typed value and a file say the same and
-// fail with the same messages.
+// scene_parts.h — the typed camera, lights, materials, render settings and poses
+// (include/phongvk/scene_parts.h) to and from the scene model: each becomes the scene file's
+// section (or material object) and goes through its checks (scene.h withSection, scene_sections.h
+// MaterialTable), so a typed value and a file say the same and fail with the same messages.
 #pragma once
 
 #include "phongvk/scene_parts.h"
 #include "scene/scene.h"
+#include "scene/scene_json.h"
 
 #include <string>
 #include <vector>
@@ -20,6 +21,18 @@ Camera cameraOf(const SceneSpec& scene);
 
 SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights);
 std::vector<Light> lightsOf(const SceneSpec& scene);
+
+// `material` as a scene file's material object, for the scene's MaterialTable to read;
+// ArgumentError naming material.KEY for a value that is not finite.
+scenejson::Json materialJson(const Material& material);
+
+// `scene` with `settings` (its "render" and "background"); SceneError as a file's.
+SceneSpec withRenderSettings(const SceneSpec& scene, const RenderSettings& settings);
+RenderSettings renderSettingsOf(const SceneSpec& scene);
+
+// The scene Scene(width, height) starts from: the default Camera at that size, one white light at
+// the camera, no objects.
+SceneSpec sceneInCode(int width, int height);
 
 // `object` placed by `pose` (its linear part and translation), replacing its own; ArgumentError
 // naming "pose" for a matrix that is not an affine map (non-finite, last row not 0 0 0 1, linear

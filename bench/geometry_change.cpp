@@ -36,11 +36,10 @@ MeshArrays waveGrid(int n, float phase) {
 }
 
 Scene sceneOf(const MeshArrays& mesh, int width, int height) {
-  Scene scene = parseScene(R"({"camera": {"position": [0.2, -1.1, 0.9], "look_at": [0, 0, 0], "width": )" +
-                               std::to_string(width) + R"(, "height": )" + std::to_string(height) +
-                               R"(}, "lights": [{"position": [0.5, -1, 2]}], "objects": []})",
-                           "geometry change", ".", true);
-  scene.addMesh(mesh, R"({"ks": 0.4, "attenuation": [1, 0, 0]})");
+  Scene scene(width, height);
+  scene.setCamera({.position = {0.2, -1.1, 0.9}, .lookAt = {0, 0, 0}});
+  scene.setLights({{.position = {0.5, -1, 2}}});
+  scene.addMesh(mesh, Material{.ks = 0.4, .attenuation = {1, 0, 0}});
   return scene;
 }
 
@@ -56,7 +55,7 @@ GeometryChangeRun measure(Backend backend, int n, int width, int height, int rou
   GeometryChangeRun run = named(backend, n, width, height);
   Renderer renderer(backend);
   const Scene fixed = sceneOf(waveGrid(n, 0), width, height);
-  const Scene variants[2] = {fixed.withRender(R"({"specular": "blinn"})"), fixed.withRender(R"({"specular": "phong"})")};
+  const Scene variants[2] = {fixed.withRender({.specular = Specular::Blinn}), fixed.withRender({.specular = Specular::Phong})};
   renderer.render(sceneOf(waveGrid(n, 0.5f), width, height));  // warm-up: every pipeline the frames use
   for (const Scene& s : variants) renderer.render(s);
   std::vector<double> fixedMs, newMs, buildMs;

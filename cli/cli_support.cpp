@@ -38,14 +38,11 @@ int guarded(const std::function<int()>& command) {
 }
 
 Scene sizedAsAsked(const Scene& scene, const ViewOptions& options) {
-  std::string render;
-  auto add = [&](const char* key, const std::string& value) {
-    render += std::string(render.empty() ? "{" : ", ") + "\"" + key + "\": " + value;
-  };
-  if (!options.shading.empty()) add("shading", "\"" + options.shading + "\"");
-  if (!options.specular.empty()) add("specular", "\"" + options.specular + "\"");
-  if (options.samples > 0) add("samples", std::to_string(options.samples));
-  const Scene rendered = render.empty() ? scene : scene.withRender(render + "}");
+  RenderSettings settings = scene.renderSettings();
+  if (!options.shading.empty()) settings.shading = parseShading(options.shading);
+  if (!options.specular.empty()) settings.specular = parseSpecular(options.specular);
+  if (options.samples > 0) settings.samples = options.samples;
+  const Scene rendered = scene.withRender(settings);
   if (options.width <= 0 && options.height <= 0) return rendered;
   return rendered.withImageSize(options.width, options.height);
 }

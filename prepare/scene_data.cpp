@@ -11,7 +11,7 @@ namespace phongvk {
 
 namespace {
 
-gpu::MaterialData toGpu(const Material& m) {
+gpu::MaterialData toGpu(const MaterialSpec& m) {
   gpu::MaterialData g{};
   g.color = m.color;
   g.ka = m.ka;
@@ -121,8 +121,8 @@ SceneData buildSceneData(const SceneSpec& scene) {
 
 void refreshShading(SceneData& data, const SceneSpec& scene) {
   data.materials.clear();
-  for (const Material& m : scene.materials) data.materials.push_back(toGpu(m));
-  if (data.materials.empty()) data.materials.push_back(toGpu(Material{}));
+  for (const MaterialSpec& m : scene.materials) data.materials.push_back(toGpu(m));
+  if (data.materials.empty()) data.materials.push_back(toGpu(MaterialSpec{}));
   data.lights.clear();
   for (const LightSpec& l : scene.lights) {
     gpu::LightData g{};

@@ -1,6 +1,5 @@
-// json_writer.h — Python values as JSON text, for the scene loader (scene_from_dict, with_render,
-// add_mesh's material). Header-only, so that the Python-dict fuzz target (fuzz/dict_fuzzer.cpp)
-// runs the very code the module runs.
+// json_writer.h — Python values as JSON text, for the scene loader (scene_from_dict). Header-only,
+// so that the Python-dict fuzz target (fuzz/dict_fuzzer.cpp) runs the very code the module runs.
 #pragma once
 
 #include <phongvk/phongvk.h>

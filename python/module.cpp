@@ -123,10 +123,6 @@ MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const
   return mesh;
 }
 
-std::string materialText(const py::object& material) {
-  return material.is_none() ? "" : JsonWriter("").write(material);
-}
-
 // A (4, 4) array (or rows of 4 numbers) as a row-major Matrix4; None is the identity.
 Matrix4 matrix4(const py::object& value, const char* name) {
   if (value.is_none()) return IDENTITY_POSE;
@@ -146,19 +142,73 @@ PoseConvention convention(const std::string& name) {
   throw ArgumentError("convention: expected 'opengl' or 'opencv', got '" + name + "'");
 }
 
+std::string floatText(double x) { return py::str(py::float_(x)); }
+
+std::string vec3Text(const Vec3& v) { return "(" + floatText(v[0]) + ", " + floatText(v[1]) + ", " + floatText(v[2]) + ")"; }
+
+// ---- materials and render settings ----
+
+// `fields` (a dict or kwargs: attribute names to values) set on `value`, a phongvk.Material or
+// RenderSettings, as its keyword constructor sets them; SceneError "<what>: unknown key 'x'
+// (allowed: ...)" for a name it does not have, as a scene file's section says it.
+void setFields(py::object& value, const py::dict& fields, const std::string& what) {
+  for (const auto& [key, field] : fields) {
+    const std::string name = py::str(key);
+    if (name.empty() || name[0] == '_' || !py::hasattr(value, name.c_str())) {
+      std::string allowed;
+      for (const py::handle attribute : py::module_::import("builtins").attr("dir")(value)) {
+        const std::string a = py::str(attribute);
+        if (a[0] != '_') allowed += (allowed.empty() ? "" : ", ") + a;
+      }
+      throw SceneError(what + ": unknown key '" + name + "' (allowed: " + allowed + ")");
+    }
+    value.attr(name.c_str()) = field;
+  }
+}
+
+// A material given to add or add_mesh: a phongvk.Material, a dict of its fields, or None (the
+// default material).
+Material materialOf(const py::object& material) {
+  if (material.is_none()) return Material{};
+  if (py::isinstance<Material>(material)) return material.cast<Material>();
+  if (!py::isinstance<py::dict>(material)) {
+    throw py::type_error("material: expected a phongvk.Material, a dict of its fields, a material name or None, got " +
+                         std::string(py::str(py::type::of(material).attr("__name__"))));
+  }
+  py::object value = py::cast(Material{});
+  setFields(value, material.cast<py::dict>(), "material");
+  return value.cast<Material>();
+}
+
 void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, const py::object& normals,
              const py::object& material, bool closed) {
-  scene.addMesh(meshArrays(vertices, faces, normals), materialText(material), closed);
+  const MeshArrays mesh = meshArrays(vertices, faces, normals);
+  if (py::isinstance<py::str>(material)) return scene.addMesh(mesh, material.cast<std::string>(), closed);
+  scene.addMesh(mesh, materialOf(material), closed);
 }
 
-unsigned long long addObject(Scene& scene, const py::object& mesh, const py::object& faces, const py::object& pose,
+unsigned long long addObject(Scene& scene, const py::object& object, const py::object& faces, const py::object& pose,
                              const py::object& material, bool closed) {
-  return scene.add(meshArrays(mesh, faces, py::none()), matrix4(pose, "pose"), materialText(material), closed).value;
+  const MeshArrays mesh = meshArrays(object, faces, py::none());
+  const Matrix4 placed = matrix4(pose, "pose");
+  if (py::isinstance<py::str>(material)) return scene.add(mesh, placed, material.cast<std::string>(), closed).value;
+  return scene.add(mesh, placed, materialOf(material), closed).value;
 }
 
-std::string vec3Text(const Vec3& v) {
-  return "(" + std::string(py::str(py::float_(v[0]))) + ", " + std::string(py::str(py::float_(v[1]))) + ", " +
-         std::string(py::str(py::float_(v[2]))) + ")";
+// `scene` with_render(settings, **options): `settings` (a phongvk.RenderSettings, a dict of its
+// fields, or None for the scene's own), then the options over it.
+Scene withRender(const Scene& scene, const py::object& settings, const py::kwargs& options) {
+  py::object value = py::cast(scene.renderSettings());
+  if (py::isinstance<RenderSettings>(settings)) {
+    value = py::cast(settings.cast<RenderSettings>());
+  } else if (py::isinstance<py::dict>(settings)) {
+    setFields(value, settings.cast<py::dict>(), "render");
+  } else if (!settings.is_none()) {
+    throw py::type_error("settings: expected a phongvk.RenderSettings, a dict of its fields or None, got " +
+                         std::string(py::str(py::type::of(settings).attr("__name__"))));
+  }
+  setFields(value, options, "render");
+  return scene.withRender(value.cast<RenderSettings>());
 }
 
 // ---- rendering ----
@@ -376,12 +426,74 @@ Scene.lights, checked like a scene file's "lights".)")
                ", color=" + vec3Text(l.color) + ")";
       });
 
+  const Material material;
+  py::class_<Material>(m, "Material", R"(A material, as a scene file's material object: ka, kd, ks (the
+ambient, diffuse and specular coefficients), n (the specular exponent, the shininess), attenuation
+(a, b, c of the fall-off 1 / (a + b d + c d^2)) and color (RGB). The defaults are the scene file's:
+0.15, 1.0, 0.8, 10, (1, 0.2, 0.2), grey 0.8. Given to Scene.add or add_mesh, it is checked like a
+scene file's material (SceneError naming objects[N].material.KEY).)")
+      .def(py::init([](double ka, double kd, double ks, double n, Vec3 attenuation, Vec3 color) {
+             return Material{ka, kd, ks, n, attenuation, color};
+           }),
+           py::kw_only(), py::arg("ka") = material.ka, py::arg("kd") = material.kd, py::arg("ks") = material.ks,
+           py::arg("n") = material.n, py::arg("attenuation") = material.attenuation, py::arg("color") = material.color)
+      .def_readwrite("ka", &Material::ka)
+      .def_readwrite("kd", &Material::kd)
+      .def_readwrite("ks", &Material::ks)
+      .def_readwrite("n", &Material::n)
+      .def_readwrite("attenuation", &Material::attenuation)
+      .def_readwrite("color", &Material::color)
+      .def("__eq__", [](const Material& a, const Material& b) { return a == b; }, py::is_operator())
+      .def("__repr__", [](const Material& x) {
+        return "phongvk.Material(ka=" + floatText(x.ka) + ", kd=" + floatText(x.kd) + ", ks=" + floatText(x.ks) +
+               ", n=" + floatText(x.n) + ", attenuation=" + vec3Text(x.attenuation) + ", color=" + vec3Text(x.color) + ")";
+      });
+
+  const RenderSettings settings;
+  py::class_<RenderSettings>(m, "RenderSettings", R"(How a scene is rendered: its scene file's "render" options
+and background. shading: "gouraud" (lit at the vertices), "flat" (once per triangle) or "phong" (at
+every pixel); specular: "phong" or "blinn" (the highlight's base); interpolation: "perspective" or
+"screen"; samples per pixel: 1, 4, 9 or 16; background: RGB in [0, 1]. The defaults are the scene
+file's. A name that is none of the choices raises SceneError at once; the rest is checked when a
+scene takes the settings (Scene.render_settings, with_render), like a scene file's "render".)")
+      .def(py::init([](const std::string& shading, const std::string& specular, const std::string& interpolation,
+                       int samples, Vec3 background) {
+             return RenderSettings{parseShading(shading), parseSpecular(specular), parseInterpolation(interpolation),
+                                   samples, background};
+           }),
+           py::kw_only(), py::arg("shading") = shadingName(settings.shading),
+           py::arg("specular") = specularName(settings.specular),
+           py::arg("interpolation") = interpolationName(settings.interpolation), py::arg("samples") = settings.samples,
+           py::arg("background") = settings.background)
+      .def_property(
+          "shading", [](const RenderSettings& s) { return shadingName(s.shading); },
+          [](RenderSettings& s, const std::string& name) { s.shading = parseShading(name); },
+          "\"gouraud\", \"flat\" or \"phong\".")
+      .def_property(
+          "specular", [](const RenderSettings& s) { return specularName(s.specular); },
+          [](RenderSettings& s, const std::string& name) { s.specular = parseSpecular(name); }, "\"phong\" or \"blinn\".")
+      .def_property(
+          "interpolation", [](const RenderSettings& s) { return interpolationName(s.interpolation); },
+          [](RenderSettings& s, const std::string& name) { s.interpolation = parseInterpolation(name); },
+          "\"perspective\" or \"screen\".")
+      .def_readwrite("samples", &RenderSettings::samples)
+      .def_readwrite("background", &RenderSettings::background)
+      .def("__eq__", [](const RenderSettings& a, const RenderSettings& b) { return a == b; }, py::is_operator())
+      .def("__repr__", [](const RenderSettings& s) {
+        return std::string("phongvk.RenderSettings(shading='") + shadingName(s.shading) + "', specular='" +
+               specularName(s.specular) + "', interpolation='" + interpolationName(s.interpolation) +
+               "', samples=" + std::to_string(s.samples) + ", background=" + vec3Text(s.background) + ")";
+      });
+
   py::class_<Scene>(m, "Scene", R"(A validated scene: camera, lights, materials, objects.
 
-Made by load_scene(path) or scene_from_dict(d); meshes can be added as numpy arrays with
-add_mesh(). A scene file with an "animate" block is frame 0 of its sequence; frame(i) gives the
-others.)")
-      .def_property_readonly("path", &Scene::path, "The file the scene came from ('' for one made from a dict).")
+Made by Scene(width, height) (an empty scene to build in code: the default Camera at that size,
+one white light at the camera, no objects yet), load_scene(path) or scene_from_dict(d); meshes are
+added as numpy arrays with add() or add_mesh(). A scene file with an "animate" block is frame 0 of
+its sequence; frame(i) gives the others.)")
+      .def(py::init<int, int>(), py::arg("width"), py::arg("height"),
+           "An empty scene rendered at width x height pixels (1..16384 each); SceneError for a size out of range.")
+      .def_property_readonly("path", &Scene::path, "The file the scene came from ('' for one made in code or from a dict).")
       .def_property_readonly("width", &Scene::width, "Width in pixels of the image the scene's camera renders.")
       .def_property_readonly("height", &Scene::height, "Height in pixels of the image the scene's camera renders.")
       .def_property_readonly("object_count", &Scene::objectCount, "How many objects the scene has.")
@@ -390,13 +502,14 @@ others.)")
                              "Frames of the scene's animation (1 for a scene without an \"animate\" block).")
       .def("frame", &Scene::frame, py::arg("index"),
            "Frame `index` of the scene's animation, validated like a scene file (IndexError when out of range).")
-      .def(
-          "with_render",
-          [](const Scene& s, const py::kwargs& options) { return s.withRender(JsonWriter("").write(options)); },
-          R"(The same scene with some of its "render" options replaced, e.g.
-with_render(shading="phong", samples=4): shading ("gouraud", "flat", "phong"), specular ("phong",
-"blinn"), samples (1, 4, 9, 16), interpolation ("perspective", "screen"). Checked like a scene
-file's; a bad value raises SceneError naming render.KEY.)")
+      .def("with_render", &withRender, py::arg("settings") = py::none(),
+           R"(The same scene rendered with other settings: a phongvk.RenderSettings, or the scene's own
+with some replaced, by a dict or by keywords: with_render(shading="phong", samples=4). The keys are
+RenderSettings' (shading, specular, interpolation, samples, background). Checked like a scene file's
+"render"; a bad value raises SceneError naming render.KEY.)")
+      .def_property("render_settings", &Scene::renderSettings, &Scene::setRenderSettings,
+                    "The render settings (a phongvk.RenderSettings); assigning some checks them like a scene "
+                    "file's \"render\" and \"background\".")
       .def("add_mesh", &addMesh, py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none(),
            py::arg("material") = py::none(), py::arg("closed") = false,
            R"(Adds a triangle mesh object; it follows the scene into its other frames (frame(i)).
@@ -408,8 +521,8 @@ faces: (M, 3) integer array of vertex indices (or rows of 3 integers), counter-c
     from outside.
 normals: optional (N, 3) floating-point array of vertex normals; computed from the faces
     (area-weighted) when not given.
-material: None (the default material), the name of one of the scene's materials, or a dict of
-    material fields ({"ks": 0.2, "color": [1, 0, 0]}), checked like a scene file's.
+material: None (the default material), a phongvk.Material, a dict of its fields ({"ks": 0.2,
+    "color": [1, 0, 0]}), or the name of one of the scene's materials; checked like a scene file's.
 closed: True if the mesh is a closed surface whose back faces may be culled.
 
 A wrong shape or dtype, a non-finite value or an index out of range raises ValueError naming the
@@ -433,7 +546,7 @@ trimesh.Trimesh works), or vertices with faces; material and closed as in add_me
       .def_property("lights", &Scene::lights, &Scene::setLights,
                     "The lights (phongvk.Light); assigning a list checks it like a scene file's \"lights\".")
       .def("__repr__", [](const Scene& s) {
-        return "<phongvk.Scene " + (s.path().empty() ? std::string("(from a dict)") : s.path()) + ": " +
+        return "<phongvk.Scene " + (s.path().empty() ? std::string("(no file)") : s.path()) + ": " +
                std::to_string(s.objectCount()) + " objects, " + std::to_string(s.lightCount()) + " lights, " +
                std::to_string(s.width()) + "x" + std::to_string(s.height()) + ">";
       });

@@ -47,7 +47,7 @@ double nearerHit(const glm::dvec3& eye, const glm::dvec3& d, const glm::dvec3& c
 // docs/DESIGN.md "Phong": ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), the
 // specular term only where N.l > 0, a light exactly at P adding nothing.
 glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& eye, const SceneSpec& scene,
-                 const Material& m) {
+                 const MaterialSpec& m) {
   const glm::dvec3 C(m.color);
   glm::dvec3 color = double(m.ka) * C * glm::dvec3(scene.ambient);
   const glm::dvec3 V = glm::normalize(eye - P);
@@ -76,7 +76,7 @@ void writeColor(uint8_t* rgb, const glm::dvec3& c) {
 
 Image raycastSphere(const SceneSpec& scene, const View& view) {
   const Object& sphere = theSphere(scene);
-  const Material& material = scene.materials.empty() ? Material{} : scene.materials.at(sphere.material);
+  const MaterialSpec& material = scene.materials.empty() ? MaterialSpec{} : scene.materials.at(sphere.material);
   Image image(view.width, view.height);
   for (int y = 0; y < view.height; ++y) {
     for (int x = 0; x < view.width; ++x) {

@@ -83,7 +83,7 @@ Mesh meshFromArrays(const MeshArrays& a) {
   return mesh;
 }
 
-void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const std::string& material, bool closed) {
+void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::Json& material, bool closed) {
   Object object;
   object.shape = Shape::Mesh;
   object.jsonPath = "objects[" + std::to_string(scene.objects.size()) + "]";
@@ -91,15 +91,9 @@ void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const std
   object.arrays = std::move(mesh);
   SceneSpec changed = scene;  // the material may add an entry; nothing changes if it fails
   scenejson::MaterialTable table(changed);
-  const size_t first = material.find_first_not_of(" \t\n");
-  if (first == std::string::npos) {
-    object.material = table.forObject(std::nullopt);
-  } else {
-    // JSON text, or a bare name.
-    const bool json = material[first] == '{' || material[first] == '"';
-    const scenejson::Json value = json ? scenejson::parseJson(material, scene.path) : scenejson::Json(material);
-    object.material = table.forObject(scenejson::Node(value, object.jsonPath + ".material", scene.path));
-  }
+  std::optional<scenejson::Node> node;
+  if (!material.is_null()) node.emplace(material, object.jsonPath + ".material", scene.path);
+  object.material = table.forObject(node);
   changed.objects.push_back(std::move(object));
   scene = std::move(changed);
 }

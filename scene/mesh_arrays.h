@@ -5,6 +5,7 @@
 #include "geometry/mesh.h"
 #include "phongvk/mesh.h"
 #include "scene/scene.h"
+#include "scene/scene_json.h"
 
 #include <memory>
 #include <string>
@@ -18,10 +19,10 @@ namespace phongvk {
 Mesh meshFromArrays(const MeshArrays& arrays);
 
 // Appends a mesh built from arrays (meshFromArrays, once: a scene's added meshes follow it into its
-// other frames) as a mesh object ("objects[N]") to `scene`, with `material`: empty for the default
-// material, a material's name, or JSON text (a quoted name or an object of material fields), read
+// other frames) as a mesh object ("objects[N]") to `scene`, with `material`: null for the default
+// material, a string naming one of the scene's materials, or an object of material fields, read
 // like a scene file's "material" (messages name "objects[N].material"). Throws SceneError for a bad
 // material; `scene` is unchanged then.
-void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const std::string& material, bool closed);
+void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::Json& material, bool closed);
 
 }  // namespace phongvk

@@ -46,9 +46,9 @@ int samplesPerPixel(const Node& node) {
 void readRender(const Node& node, SceneSpec& scene) {
   requireObject(node);
   checkKeys(node, kRenderKeys);
-  if (auto v = node.find("interpolation")) scene.interpolation = choice<Interpolation>(*v, std::array{"perspective", "screen"});
-  if (auto v = node.find("shading")) scene.shading = choice<Shading>(*v, std::array{"gouraud", "flat", "phong"});
-  if (auto v = node.find("specular")) scene.specular = choice<Specular>(*v, std::array{"phong", "blinn"});
+  if (auto v = node.find("interpolation")) scene.interpolation = choice<Interpolation>(*v, INTERPOLATION_NAMES);
+  if (auto v = node.find("shading")) scene.shading = choice<Shading>(*v, SHADING_NAMES);
+  if (auto v = node.find("specular")) scene.specular = choice<Specular>(*v, SPECULAR_NAMES);
   if (auto v = node.find("samples")) scene.samples = samplesPerPixel(*v);
 }
 
@@ -74,21 +74,15 @@ SceneSpec readScene(const Node& root, const std::string& path, const std::string
 
 }  // namespace scenejson
 
-SceneSpec withRenderOptions(SceneSpec scene, const std::string& json) {
+SceneSpec withSection(SceneSpec scene, const std::string& key, const std::string& json) {
   const Json value = parseJson(json, scene.path);
-  readRender(Node(value, "render", scene.path), scene);
-  return scene;
-}
-
-SceneSpec withCameraSection(SceneSpec scene, const std::string& json) {
-  const Json value = parseJson(json, scene.path);
-  scene.camera = readCamera(Node(value, "camera", scene.path));
-  return scene;
-}
-
-SceneSpec withLightsSection(SceneSpec scene, const std::string& json) {
-  const Json value = parseJson(json, scene.path);
-  scene.lights = readLights(Node(value, "lights", scene.path));
+  const Node node(value, key, scene.path);
+  if (key == "camera") scene.camera = readCamera(node);
+  else if (key == "lights") scene.lights = readLights(node);
+  else if (key == "background") scene.background = unitColor(node);
+  else if (key == "ambient") scene.ambient = color(node);
+  else if (key == "render") readRender(node, scene);
+  else throw std::logic_error("withSection: no section '" + key + "'");
   return scene;
 }
 

@@ -4,9 +4,11 @@
 
 #include "geometry/mesh.h"
 #include "phongvk/errors.h"
+#include "phongvk/scene_parts.h"  // Shading, Specular, Interpolation: the public enums are the model's
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -16,8 +18,8 @@
 
 namespace phongvk {
 
-// Defaults are the values the paper's own code used.
-struct Material {
+// Defaults are the values the paper's own code used (the public Material, scene_parts.h, has the same).
+struct MaterialSpec {
   float ka = 0.15f;
   float kd = 1.0f;
   float ks = 0.8f;
@@ -69,9 +71,10 @@ struct FileVersion {
 };
 
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
-enum class Interpolation { Perspective, Screen };
-enum class Shading { Gouraud, Flat, Phong };
-enum class Specular { Phong, Blinn };
+// The scene file's names of the render choices, in the order of their enums (scene_parts.h).
+inline constexpr std::array<const char*, 2> INTERPOLATION_NAMES = {"perspective", "screen"};
+inline constexpr std::array<const char*, 3> SHADING_NAMES = {"gouraud", "flat", "phong"};
+inline constexpr std::array<const char*, 2> SPECULAR_NAMES = {"phong", "blinn"};
 enum class UpAxis { Z, Y };
 
 struct Object {
@@ -106,7 +109,7 @@ struct SceneSpec {
   glm::vec3 background = {0, 0, 0};
   glm::vec3 ambient = {1, 1, 1};
   std::vector<LightSpec> lights;
-  std::vector<Material> materials;   // named ones first (in file order), then inline ones
+  std::vector<MaterialSpec> materials;   // named ones first (in file order), then inline ones
   std::vector<std::string> materialNames;  // materialNames[i] names materials[i], the named ones
   std::optional<int> defaultMaterial;      // the default material's index, once an object took it
   std::vector<Object> objects;
@@ -123,15 +126,12 @@ struct SceneSpec {
   int shareParts = 1;
 };
 
-// `scene` with the "render" options in `json` (a JSON object of render keys) replacing its own,
-// validated as a scene file's "render". Throws SceneError.
-SceneSpec withRenderOptions(SceneSpec scene, const std::string& json);
-
-// `scene` with its "camera" (or its "lights") replaced by `json`, validated as a scene file's
-// section of that name (SceneError "camera.fov: ..."). How a scene built in code takes a typed
-// camera or lights (api/scene_parts.cpp): one set of checks and messages for both.
-SceneSpec withCameraSection(SceneSpec scene, const std::string& json);
-SceneSpec withLightsSection(SceneSpec scene, const std::string& json);
+// `scene` with the scene file's top-level section `key` ("camera", "lights", "background",
+// "ambient" or "render") read from `json` and validated as the file's section of that name
+// (SceneError "camera.fov: ..."). "render" replaces the options `json` names and keeps the others;
+// the other sections are replaced whole. How a scene built in code takes a typed camera, lights or
+// render settings (api/scene_parts.cpp): one set of checks and messages for both.
+SceneSpec withSection(SceneSpec scene, const std::string& key, const std::string& json);
 
 // Reads and validates a scene file. Throws SceneError naming the file and the JSON path.
 // A file with an "animate" block gives its frame 0 (animate.h has the other frames).

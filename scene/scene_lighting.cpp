@@ -62,10 +62,10 @@ glm::vec3 readAttenuation(const Node& node) {
 
 }  // namespace
 
-Material readMaterial(const Node& node) {
+MaterialSpec readMaterial(const Node& node) {
   requireObject(node);
   checkKeys(node, kMaterialKeys);
-  Material material;
+  MaterialSpec material;
   if (auto ka = node.find("ka")) material.ka = nonNegativeFloat(*ka);
   if (auto kd = node.find("kd")) material.kd = nonNegativeFloat(*kd);
   if (auto ks = node.find("ks")) material.ks = nonNegativeFloat(*ks);

@@ -149,7 +149,7 @@ bool takesBaseColors(const Node& node, const Object& object) {
 int objectMaterial(const Node& node, const Object& object, MaterialTable& materials) {
   if (!object.baseColors) return materials.forObject(node.find("material"));
   const std::optional<Node> inline_ = node.find("material");
-  Material white = inline_ ? readMaterial(*inline_) : Material{};
+  MaterialSpec white = inline_ ? readMaterial(*inline_) : MaterialSpec{};
   white.color = glm::vec3(1.0f);
   return materials.add(white);
 }

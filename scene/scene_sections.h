@@ -33,7 +33,7 @@ glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction);
 // ---- sections ----
 CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
 std::vector<LightSpec> readLights(const Node& node);  // scene_lighting.cpp
-Material readMaterial(const Node& node);          // scene_lighting.cpp
+MaterialSpec readMaterial(const Node& node);          // scene_lighting.cpp
 
 // A scene's materials as objects take them (SceneSpec::materials, materialNames, defaultMaterial):
 // the named materials first, in file order, then one entry per inline material, and one shared
@@ -52,7 +52,7 @@ class MaterialTable {
   }
 
   // The index for an object's "material": absent, a name, or an inline material object.
-  int add(const Material& material) {
+  int add(const MaterialSpec& material) {
     scene_.materials.push_back(material);
     return int(scene_.materials.size()) - 1;
   }
@@ -69,7 +69,7 @@ class MaterialTable {
 
  private:
   int defaultIndex() {
-    if (!scene_.defaultMaterial) scene_.defaultMaterial = add(Material{});
+    if (!scene_.defaultMaterial) scene_.defaultMaterial = add(MaterialSpec{});
     return *scene_.defaultMaterial;
   }
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace phongvk {
 namespace {
@@ -65,11 +66,12 @@ TEST(Api, ANewGeometryEachFrameRendersAsTheReferenceAndCompilesNothingAgain) {
   Renderer gpu(validatedGpu());
   Renderer cpu(Backend::Cpu);
   const auto frame = [](int k) {
-    const std::string lights = k % 3 == 0 ? R"([{"position": [2, -3, 3]}])"
-                                          : R"([{"position": [2, -3, 3]}, {"position": [-2, -1, 2], "color": [1, 0.5, 0]}])";
-    Scene s = parseScene(R"({"camera": {"position": [2, -1.5, 1], "look_at": [0, 0, 0], "width": 160, "height": 120},
-        "lights": )" + lights + R"(, "objects": [], "render": {"shading": ")" + (k % 4 == 1 ? "phong" : "gouraud") + R"("}})",
-                         "frame.json", ".", true);
+    Scene s(160, 120);
+    s.setCamera({.position = {2, -1.5, 1}, .lookAt = {0, 0, 0}});
+    std::vector<Light> lights = {{.position = {2, -3, 3}}};
+    if (k % 3 != 0) lights.push_back({.position = {-2, -1, 2}, .color = {1, 0.5, 0}});
+    s.setLights(lights);
+    s.setRenderSettings({.shading = k % 4 == 1 ? Shading::Phong : Shading::Gouraud});
     MeshArrays mesh;  // a fan of k + 3 triangles around the origin, scaled per frame
     const int n = 3 + 5 * (k % 5);
     mesh.positions = {0, 0, 0.3f};
@@ -221,7 +223,7 @@ TEST(Api, TypedCameraLightsAndPosesRenderAsTheSameSceneWritten) {
 
 // Alpha, depth and ids come from the keys: the same bytes on both backends, with samples too.
 TEST(Api, FrameOutputsAreTheSameOnBothBackends) {
-  const Scene scene = loadScene(source("scenes/basic.json")).withImageSize(120, 80).withRender(R"({"samples": 4})");
+  const Scene scene = loadScene(source("scenes/basic.json")).withImageSize(120, 80).withRender({.samples = 4});
   const Outputs all{.alpha = true, .depth = true, .objectIds = true, .triangleIds = true};
   Renderer gpu(validatedGpu()), cpu(Backend::Cpu);
   const RenderedFrame a = gpu.renderOutputs(scene, all), b = cpu.renderOutputs(scene, all);

@@ -47,7 +47,7 @@ constexpr int HEIGHT = 160;
 struct PinCase {
   std::string scene;
   int frame = 0;
-  std::string render;  // JSON object of render keys ("" for none), as Scene::withRender takes
+  std::string render;  // JSON object of render keys ("" for none), as a scene file's "render"
 };
 
 // How GoogleTest names a case in a failure: "scenes/basic.json frame 0 {"specular": "blinn"}".
@@ -163,8 +163,8 @@ class PinnedImages : public ::testing::TestWithParam<PinCase> {
   // The case in `shading` on both backends; a failure, and nullopt, where they differ.
   static std::optional<PinHashes> renderBoth(const PinCase& c, const char* shading) {
     const std::string name = caseName(c, shading);
-    const Scene scene =
-        loadScene(test::sourcePath(c.scene)).frame(c.frame).withImageSize(WIDTH, HEIGHT).withRender(render(c, shading));
+    const Scene scene = test::withRenderOptions(
+        loadScene(test::sourcePath(c.scene)).frame(c.frame).withImageSize(WIDTH, HEIGHT), render(c, shading));
     const RenderOutput reference = cpu_->renderWithKeys(scene);
     const RenderOutput gpu = gpu_->renderWithKeys(scene);
     if (gpu.image.rgb != reference.image.rgb || gpu.keys != reference.keys) {

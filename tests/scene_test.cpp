@@ -127,7 +127,7 @@ TEST(SceneSpec, MaterialIndicesNamedFirstThenInline) {
   EXPECT_EQ(scene.materials[0].ks, 0.1f);
   EXPECT_EQ(scene.materials[1].ks, 0.2f);
   EXPECT_EQ(scene.materials[2].ks, 0.3f);
-  EXPECT_EQ(scene.materials[3].ks, Material{}.ks);
+  EXPECT_EQ(scene.materials[3].ks, MaterialSpec{}.ks);
   EXPECT_EQ(scene.materials[4].ks, 0.4f);
 }
 
@@ -152,7 +152,7 @@ TEST(SceneSpec, RenderModesDefaultToThePapersAndCanBeChanged) {
   EXPECT_EQ(scene.shading, Shading::Phong);
   EXPECT_EQ(scene.specular, Specular::Blinn);
   EXPECT_EQ(scene.samples, 9);
-  const SceneSpec flat = withRenderOptions(scene, R"({"shading": "flat", "samples": 1})");
+  const SceneSpec flat = withSection(scene, "render", R"({"shading": "flat", "samples": 1})");
   EXPECT_EQ(flat.shading, Shading::Flat);
   EXPECT_EQ(flat.specular, Specular::Blinn) << "options not named keep the scene's";
   EXPECT_EQ(flat.samples, 1);

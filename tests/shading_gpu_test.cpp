@@ -64,7 +64,7 @@ Renderer* ShadingModes::cpu_ = nullptr;
 TEST_P(ShadingModes, GpuMatchesReferenceInEveryMode) {
   const Scene scene = loadScene(test::sourcePath(GetParam())).withImageSize(240, 160);
   for (const std::string& mode : kModes) {
-    const Scene moded = scene.withRender(mode);
+    const Scene moded = test::withRenderOptions(scene, mode);
     const RenderOutput reference = cpu_->renderWithKeys(moded);
     const RenderOutput gpu = gpu_->renderWithKeys(moded);
     expectSame(reference, gpu, GetParam() + " " + mode);
@@ -87,7 +87,7 @@ TEST(ShadingLimits, TheMostLightsRenderTheReferenceBytesInEveryMode) {
       "lights": [)" + lights + R"(], "objects": [{"shape": "icosphere", "radius": 1, "subdivide": 5}]})");
   Renderer gpu(Backend::Gpu), cpu(Backend::Cpu);
   for (const char* mode : {R"({"shading": "gouraud"})", R"({"shading": "flat", "samples": 4})", R"({"shading": "phong", "samples": 4})"}) {
-    const Scene moded = scene.withRender(mode);
+    const Scene moded = test::withRenderOptions(scene, mode);
     expectSame(cpu.renderWithKeys(moded), gpu.renderWithKeys(moded), mode);
   }
 }
@@ -98,7 +98,7 @@ TEST(ShadingLayouts, EveryLayoutAndOutputGivesTheReferenceBytes) {
   VulkanContext context = createContext({-1, true});
   for (const char* file : {"scenes/floor_and_walls.json", "scenes/paper/fig3_two_lights.json", "scenes/stress/near_plane.json"}) {
     for (const char* mode : {R"({"shading": "flat"})", R"({"shading": "phong", "specular": "blinn"})"}) {
-      const SceneSpec spec = withRenderOptions(loadSceneSpec(test::sourcePath(file)), mode);
+      const SceneSpec spec = withSection(loadSceneSpec(test::sourcePath(file)), "render", mode);
       const SceneData data = buildSceneData(spec);
       const FrameInputs in = makeFrame(data, makeView(withImageSize(spec.camera, 320, 240)));
       const RenderOutput reference = renderReference(data, in);
@@ -133,12 +133,12 @@ TEST(ShadingModesShow, PhongShowsTheHighlightGouraudMisses) {
   const Scene sphere = coarseShinySphere();
   Renderer gpu(Backend::Gpu), cpu(Backend::Cpu);
   const Image gouraud = gpu.render(sphere);
-  const Image phong = gpu.render(sphere.withRender(R"({"shading": "phong"})"));
+  const Image phong = gpu.render(sphere.withRender({.shading = Shading::Phong}));
   EXPECT_EQ(gouraud.rgb, cpu.render(sphere).rgb);
-  EXPECT_EQ(phong.rgb, cpu.render(sphere.withRender(R"({"shading": "phong"})")).rgb);
+  EXPECT_EQ(phong.rgb, cpu.render(sphere.withRender({.shading = Shading::Phong})).rgb);
   EXPECT_EQ(brightest(phong), 255) << "the highlight saturates";
   EXPECT_LT(brightest(gouraud), 160) << "no vertex sits on the highlight";
-  const Image blinn = gpu.render(sphere.withRender(R"({"shading": "phong", "specular": "blinn"})"));
+  const Image blinn = gpu.render(sphere.withRender({.shading = Shading::Phong, .specular = Specular::Blinn}));
   EXPECT_NE(blinn.rgb, phong.rgb) << "Blinn's half vector makes another highlight";
 }
 
@@ -157,7 +157,7 @@ TEST(ShadingModesShow, FlatShadingGivesEachTriangleOneColour) {
     }
     return std::make_pair(first.size(), mismatched);
   };
-  const auto [flatTriangles, flatMismatched] = coloursPerTriangle(gpu.renderWithKeys(sphere.withRender(R"({"shading": "flat"})")));
+  const auto [flatTriangles, flatMismatched] = coloursPerTriangle(gpu.renderWithKeys(sphere.withRender({.shading = Shading::Flat})));
   EXPECT_GT(flatTriangles, 20u) << "triangles seen";
   EXPECT_EQ(flatMismatched, 0u) << "pixels of a flat triangle with another colour";
   EXPECT_GT(coloursPerTriangle(gpu.renderWithKeys(sphere)).second, 10000u) << "Gouraud varies within triangles";
@@ -179,7 +179,7 @@ TEST(ShadingModesShow, SamplesAntiAliasEdges) {
   };
   const Image one = gpu.render(triangle);
   EXPECT_EQ(levels(one), 2) << "background and the triangle only";
-  const Scene sixteen = triangle.withRender(R"({"samples": 16})");
+  const Scene sixteen = triangle.withRender({.samples = 16});
   const RenderOutput aa = gpu.renderWithKeys(sixteen);
   EXPECT_EQ(aa.image.width, 96);
   EXPECT_EQ(aa.keys.size(), 96u * 64u * 16u) << "a key per sample";
@@ -194,7 +194,7 @@ TEST(ShadingModesShow, SamplesAntiAliasEdges) {
 TEST(ShadingModesShow, GraphicsBackendRefusesOtherShading) {
   Renderer graphics(Backend::Graphics);
   try {
-    graphics.render(coarseShinySphere().withRender(R"({"shading": "phong"})"));
+    graphics.render(coarseShinySphere().withRender({.shading = Shading::Phong}));
     FAIL() << "no error";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("renders Gouraud shading"), std::string::npos) << e.what();

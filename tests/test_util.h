@@ -1,7 +1,9 @@
 // test_util.h — small helpers shared by the test suites.
 #pragma once
 
+#include "phongvk/phongvk.h"
 #include "prepare/scene_data.h"
+#include "scene/scene_json.h"
 
 #include <gtest/gtest.h>
 
@@ -83,5 +85,21 @@ CommandResult runCliWithEnvironment(const std::string& assignments, const std::s
 // The same, but as an unprivileged user when the tests run as root (CI containers do), so file
 // permissions apply: through `setpriv` (util-linux) as uid/gid 65534 (nobody).
 CommandResult runCliUnprivileged(const std::string& args);
+
+// `scene` with the render options of `json`, an object of a scene file's "render" keys
+// ({"shading": "phong", "samples": 4}), in place of its own; the options it does not name keep the
+// scene's. The tests' render modes are written as a scene file writes them.
+inline Scene withRenderOptions(const Scene& scene, const std::string& json) {
+  RenderSettings settings = scene.renderSettings();
+  const scenejson::Json options = scenejson::Json::parse(json);
+  for (const auto& [key, value] : options.items()) {
+    if (key == "shading") settings.shading = parseShading(value.get<std::string>());
+    else if (key == "specular") settings.specular = parseSpecular(value.get<std::string>());
+    else if (key == "interpolation") settings.interpolation = parseInterpolation(value.get<std::string>());
+    else if (key == "samples") settings.samples = value.get<int>();
+    else ADD_FAILURE() << "no render option '" << key << "'";
+  }
+  return scene.withRender(settings);
+}
 
 }  // namespace phongvk::test

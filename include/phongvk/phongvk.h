@@ -35,6 +35,12 @@ PHONGVK_API const char* revision();
 // copy (copies share the validated model). Meshes are built by the renderer that first renders it.
 class PHONGVK_API Scene {
  public:
+  // An empty scene to build in code, rendered at width x height pixels (1..16384 each): the
+  // default Camera (scene_parts.h), one white light at the camera, the scene file's defaults
+  // for the rest, and no objects yet (add some with add or addMesh; rendering a scene without
+  // objects throws SceneError). SceneError for a size out of range.
+  Scene(int width, int height);
+
   // The file it came from, as given ("" for a scene made from text without a name).
   const std::string& path() const;
   // The image the scene's camera renders (or the size set by withImageSize).
@@ -46,10 +52,13 @@ class PHONGVK_API Scene {
   // is kept and the aspect follows the new size. Throws SceneError for a size out of range.
   Scene withImageSize(int width, int height) const;
 
-  // The same scene with some of its "render" options replaced: `json` is an object of render keys
-  // ({"shading": "phong", "samples": 4}; docs/DESIGN.md "Scene file"), validated like a scene
-  // file's (SceneError naming render.KEY). The others keep the scene's values.
-  Scene withRender(const std::string& json) const;
+  // The same scene rendered with `settings` (checked like a scene file's "render" and
+  // "background": SceneError naming render.KEY or background[i]; ArgumentError for a colour that is
+  // not finite).
+  Scene withRender(const RenderSettings& settings) const;
+  // The scene's render settings, and new ones (checked as withRender checks them).
+  RenderSettings renderSettings() const;
+  void setRenderSettings(const RenderSettings& settings);
 
   // One share of the scene for a process of `parts` that render it together (phongvk render --mpi):
   // the part-th of `parts` near-equal contiguous ranges of its triangles, in file order, with every
@@ -59,18 +68,20 @@ class PHONGVK_API Scene {
   // for a part out of 0..parts-1, or (when rendered) a scene of fewer triangles than parts.
   Scene share(int part, int parts) const;
 
-  // Adds `mesh` as an object of this scene (not of copies made before). `material`: empty for the
-  // default material, the name of one of the scene's materials, or JSON text of material fields
-  // ({"ks": 0.2}), read like a scene file's. Throws ArgumentError naming the array
-  // ("vertices", "faces", "normals") and its first bad row, SceneError for a bad material; the
-  // scene is unchanged then.
-  void addMesh(const MeshArrays& mesh, const std::string& material = "", bool closed = false);
+  // Adds `mesh` as an object of this scene (not of copies made before), with `material` (checked
+  // like a scene file's: SceneError naming objects[N].material.KEY, ArgumentError for a value that
+  // is not finite), or the scene's material named `materialName` (a scene file's "materials";
+  // SceneError for a name it does not have). Throws ArgumentError naming the array ("vertices",
+  // "faces", "normals") and its first bad row; the scene is unchanged then.
+  void addMesh(const MeshArrays& mesh, const Material& material = {}, bool closed = false);
+  void addMesh(const MeshArrays& mesh, const std::string& materialName, bool closed = false);
 
   // The same, placed by `pose` (local to world, scene_parts.h Matrix4: the mesh's vertices are in
   // its own coordinates), and a handle to move it (setPose) or take it out (remove). Throws as
   // addMesh, and ArgumentError naming "pose" for a matrix that is not an affine map.
-  ObjectId add(const MeshArrays& mesh, const Matrix4& pose = IDENTITY_POSE, const std::string& material = "",
+  ObjectId add(const MeshArrays& mesh, const Matrix4& pose = IDENTITY_POSE, const Material& material = {},
                bool closed = false);
+  ObjectId add(const MeshArrays& mesh, const Matrix4& pose, const std::string& materialName, bool closed = false);
   // Moves an object added with add; RangeError for a handle this scene does not hold.
   void setPose(ObjectId object, const Matrix4& pose);
   void remove(ObjectId object);
@@ -123,8 +134,9 @@ struct LoadOptions {
 PHONGVK_API Scene loadScene(const std::string& path, const LoadOptions& options = {});
 
 // The same from JSON text: `name` stands for the file in messages (none when empty) and relative
-// mesh paths resolve against `baseDir`. With `objectsLater` the scene may have no objects yet
-// ("objects": []) and get them from addMesh; rendering a scene without objects throws SceneError.
+// mesh paths resolve against `baseDir`. With `objectsLater` the text may have no objects yet
+// ("objects": [], as Python's scene_from_dict allows) and get them from add or addMesh; rendering
+// a scene without objects throws SceneError. A scene built in code starts from Scene(width, height).
 PHONGVK_API Scene parseScene(const std::string& json, const std::string& name = "scene.json",
                              const std::string& baseDir = ".", bool objectsLater = false);
 

@@ -1,6 +1,7 @@
-// scene_parts.h — a scene's camera, lights and poses as values, for a program that drives a scene
-// from code (Scene::setCamera, setLights, add, setPose) instead of a scene file. Each is checked
-// like the scene file's section it stands for, with the same messages ("camera.fov: ...").
+// scene_parts.h — a scene's camera, lights, materials, render settings and poses as values, for a
+// program that drives a scene from code (Scene::setCamera, setLights, add, setPose,
+// setRenderSettings) instead of a scene file. Each is checked like the scene file's section it
+// stands for, with the same messages ("camera.fov: ...", "objects[2].material.ks: ...").
 #pragma once
 
 #include "phongvk/export.h"
@@ -62,6 +63,49 @@ struct Light {
   bool directional = false;
   Vec3 direction = {0, 0, -1};
 };
+
+// A material (docs/DESIGN.md "Phong, per vertex"), as a scene file's material object: the ambient,
+// diffuse and specular coefficients, the specular exponent n (the shininess), the attenuation
+// a, b, c of the fall-off 1 / (a + b d + c d^2) and the colour (RGB >= 0). The defaults are the
+// scene file's (the paper's).
+struct Material {
+  double ka = 0.15;
+  double kd = 1.0;
+  double ks = 0.8;
+  double n = 10;
+  Vec3 attenuation = {1, 0.2, 0.2};
+  Vec3 color = {0.8, 0.8, 0.8};
+  bool operator==(const Material&) const = default;
+};
+
+// The choices of a scene file's "render" section (docs/DESIGN.md "Shading", "Gouraud"): where the
+// Phong equation is evaluated, the highlight's base, and how barycentrics are interpolated.
+enum class Shading { Gouraud, Flat, Phong };
+enum class Specular { Phong, Blinn };
+enum class Interpolation { Perspective, Screen };
+
+// How a scene is rendered: its "render" section (shading, specular, interpolation, samples per
+// pixel: 1, 4, 9 or 16) and its background colour (RGB in [0, 1]; a scene gives it back as the
+// renderers hold it, in 32-bit floats). The defaults are the scene file's. Where nothing is drawn,
+// a frame's alpha output (Outputs::alpha) says so.
+struct RenderSettings {
+  Shading shading = Shading::Gouraud;
+  Specular specular = Specular::Phong;
+  Interpolation interpolation = Interpolation::Perspective;
+  int samples = 1;
+  Vec3 background = {0, 0, 0};
+  bool operator==(const RenderSettings&) const = default;
+};
+
+// The scene file's names of the choices ("gouraud", "blinn", "screen"), and the choice a name
+// stands for: SceneError as a scene file's ("render.shading: must be one of gouraud, flat, phong,
+// got 'smooth'") for any other name.
+PHONGVK_API const char* shadingName(Shading shading);
+PHONGVK_API const char* specularName(Specular specular);
+PHONGVK_API const char* interpolationName(Interpolation interpolation);
+PHONGVK_API Shading parseShading(const std::string& name);
+PHONGVK_API Specular parseSpecular(const std::string& name);
+PHONGVK_API Interpolation parseInterpolation(const std::string& name);
 
 // An object added in code: its handle for setPose and remove (Scene::add).
 struct ObjectId {

@@ -7,7 +7,8 @@
 
 Both renderers ("gpu", the Vulkan compute port, and "cpu", the reference) give the same bytes;
 phongvk.diff(scene) compares them. Meshes come from scene files or as numpy arrays
-(Scene.add_mesh). Everything here is the C++ library's public API (include/phongvk/phongvk.h);
+(Scene.add, Scene.add_mesh) with typed cameras, lights, materials and render settings (Camera,
+Light, Material, RenderSettings). Everything here is the C++ library's public API (include/phongvk/phongvk.h);
 this package only shapes it for Python.
 """
 
@@ -30,9 +31,11 @@ from ._phongvk import (
     DeviceError,
     Error,
     Light,
+    Material,
     NoDeviceError,
     OutputError,
     RangeError,
+    RenderSettings,
     Scene,
     SceneError,
     __revision__,
@@ -46,13 +49,13 @@ from ._phongvk import (
 )
 
 # What the compiled module defines reads as phongvk's own (phongvk.SceneError in a traceback).
-for _name in ("ArgumentError", "Camera", "DeviceError", "Error", "Light", "NoDeviceError", "OutputError",
-              "RangeError", "Scene", "SceneError"):
+for _name in ("ArgumentError", "Camera", "DeviceError", "Error", "Light", "Material", "NoDeviceError",
+              "OutputError", "RangeError", "RenderSettings", "Scene", "SceneError"):
     getattr(_phongvk, _name).__module__ = __name__
 
 __all__ = [
-    "ArgumentError", "Camera", "DeviceError", "Error", "Image", "Light", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT", "NoDeviceError",
-    "OutputError", "RangeError", "Renderer", "Scene", "SceneError",
+    "ArgumentError", "Camera", "DeviceError", "Error", "Image", "Light", "Material", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT",
+    "NoDeviceError", "OutputError", "RangeError", "RenderSettings", "Renderer", "Scene", "SceneError",
     "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
 ]
 

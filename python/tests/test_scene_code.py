@@ -224,3 +224,140 @@ def test_a_directional_light_renders_as_the_same_light_written():
                                  "lights": [{"position": [0, 0, 3], "direction": [0, 0, -1]}]})
     with pytest.raises(phongvk.SceneError, match=r"lights\[0\].direction: must have a non-zero finite length"):
         built.lights = [phongvk.Light(direction=(0, 0, 0))]
+
+
+# ---- materials and render settings as values ----
+
+def written_scene(tmp_path, material=None, **more):
+    """The scene Scene(96, 64) starts from, as a dict: the default camera at that size, a light at
+    the camera, and the octahedron as an OBJ file with `material` (none: the default)."""
+    vertices, faces = octahedron()
+    obj = tmp_path / "octahedron.obj"
+    if not obj.exists():
+        obj.write_text("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in vertices.tolist()) +
+                       "".join("f %d %d %d\n" % tuple(x + 1 for x in t) for t in faces.tolist()))
+    mesh = {"shape": "mesh", "file": "octahedron.obj"}
+    if material is not None:
+        mesh["material"] = material
+    return phongvk.scene_from_dict(dict({"camera": {"position": [0, -5, 2], "look_at": [0, 0, 0], "width": 96,
+                                                    "height": 64},
+                                         "lights": [{"position": "camera"}], "objects": [mesh]}, **more),
+                                   base_dir=str(tmp_path))
+
+
+def built_scene(material=None):
+    scene = phongvk.Scene(96, 64)
+    scene.add(*octahedron(), material=material)
+    return scene
+
+
+MATERIAL_FIELDS = [{"ka": 0.6}, {"kd": 0.3}, {"ks": 0.1}, {"n": 40}, {"attenuation": [1, 0.05, 0]},
+                   {"color": [0.9, 0.3, 0.1]},
+                   {"ka": 0.3, "kd": 0.7, "ks": 1, "n": 3, "attenuation": [0.5, 0, 0.01], "color": [0.2, 1, 0.6]}]
+
+
+@pytest.mark.parametrize("fields", MATERIAL_FIELDS)
+def test_every_material_field_renders_as_the_file_says_it(tmp_path, fields):
+    expected = both(written_scene(tmp_path, fields))
+    assert np.array_equal(both(built_scene(phongvk.Material(**fields))), expected)
+    assert np.array_equal(both(built_scene(fields)), expected)  # a dict of the fields, as before
+    material = phongvk.Material()
+    for key, value in fields.items():
+        setattr(material, key, value)
+    assert np.array_equal(both(built_scene(material)), expected)
+
+
+RENDER_FIELDS = [({"shading": "flat"}, {}), ({"shading": "phong"}, {}), ({"specular": "blinn"}, {}),
+                 ({"interpolation": "screen"}, {}), ({"samples": 4}, {}), ({"samples": 16}, {}),
+                 ({}, {"background": [0.25, 0.5, 0.75]}),
+                 ({"shading": "phong", "specular": "blinn", "interpolation": "screen", "samples": 9},
+                  {"background": [1, 0.5, 0]})]
+
+
+@pytest.mark.parametrize("render, top", RENDER_FIELDS)
+def test_every_render_setting_renders_as_the_file_says_it(tmp_path, render, top):
+    file = written_scene(tmp_path, render=render, **top)
+    expected = both(file)
+    settings = phongvk.RenderSettings(**render, **top)
+    assert file.render_settings == settings
+    scene = built_scene()
+    assert np.array_equal(both(scene.with_render(settings)), expected)
+    assert np.array_equal(both(scene.with_render(dict(render, **top))), expected)
+    assert np.array_equal(both(scene.with_render(**render, **top)), expected)
+    scene.render_settings = settings
+    assert scene.render_settings == settings
+    assert np.array_equal(both(scene), expected)
+
+
+def test_defaults_are_the_files_defaults(tmp_path):
+    material = phongvk.Material()
+    assert (material.ka, material.kd, material.ks, material.n) == (0.15, 1.0, 0.8, 10.0)
+    assert tuple(material.attenuation) == (1, 0.2, 0.2) and tuple(material.color) == (0.8, 0.8, 0.8)
+    assert written_scene(tmp_path).render_settings == phongvk.RenderSettings()
+    settings = phongvk.RenderSettings()
+    assert (settings.shading, settings.specular, settings.interpolation, settings.samples) == \
+        ("gouraud", "phong", "perspective", 1)
+    assert tuple(settings.background) == (0, 0, 0)
+    expected = both(written_scene(tmp_path))
+    assert np.array_equal(both(built_scene()), expected)
+    assert np.array_equal(both(built_scene(phongvk.Material())), expected)
+    empty = phongvk.Scene(96, 64)
+    assert (empty.width, empty.height, empty.object_count) == (96, 64, 0)
+    assert [light.at_camera for light in empty.lights] == [True]
+    with pytest.raises(phongvk.SceneError, match="objects: scene has no objects"):
+        phongvk.Renderer("cpu").render(empty)
+
+
+@pytest.mark.parametrize("fields", [{"ka": -0.5}, {"kd": -1}, {"ks": -1}, {"n": -2}, {"ks": 1e39},
+                                    {"attenuation": [0, 0, 0]}, {"attenuation": [1, -3, 1]},
+                                    {"color": [0.5, -0.1, 0]}])
+def test_a_bad_material_fails_with_the_files_message(tmp_path, fields):
+    with pytest.raises(phongvk.SceneError) as file_error:
+        written_scene(tmp_path, fields)
+    message = str(file_error.value)
+    assert "objects[0].material." + next(iter(fields)) in message
+    scene = phongvk.Scene(96, 64)
+    for material in (phongvk.Material(**fields), fields):
+        with pytest.raises(phongvk.SceneError) as error:
+            scene.add(*octahedron(), material=material)
+        assert str(error.value) == message
+    assert scene.object_count == 0
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda s: s.add(*octahedron(), material=phongvk.Material(ka=math.nan)), ValueError,
+     r"material.ka: must be finite, got nan"),
+    (lambda s: s.add(*octahedron(), material={"shine": 3}), phongvk.SceneError,
+     r"material: unknown key 'shine' \(allowed: attenuation, color, ka, kd, ks, n\)"),
+    (lambda s: s.add(*octahedron(), material="gold"), phongvk.SceneError,
+     r"objects\[0\].material: unknown material 'gold'"),
+    (lambda s: s.add(*octahedron(), material=3), TypeError, r"material: expected a phongvk.Material"),
+    (lambda s: setattr(s, "render_settings", phongvk.RenderSettings(samples=3)), phongvk.SceneError,
+     r"render.samples: must be 1, 4, 9 or 16 \(a regular grid of samples per pixel\), got 3"),
+    (lambda s: setattr(s, "render_settings", phongvk.RenderSettings(background=(1.5, 0, 0))), phongvk.SceneError,
+     r"background\[0\]: must be between 0 and 1, got 1.5"),
+    (lambda s: phongvk.RenderSettings(shading="smooth"), phongvk.SceneError,
+     r"render.shading: must be one of gouraud, flat, phong, got 'smooth'"),
+    (lambda s: setattr(phongvk.RenderSettings(), "specular", "cook"), phongvk.SceneError,
+     r"render.specular: must be one of phong, blinn, got 'cook'"),
+    (lambda s: s.with_render(shading="smooth"), phongvk.SceneError, r"render.shading: must be one of"),
+    (lambda s: s.with_render(gamma=2.2), phongvk.SceneError,
+     r"render: unknown key 'gamma' \(allowed: background, interpolation, samples, shading, specular\)"),
+    (lambda s: s.with_render("phong"), TypeError, r"settings: expected a phongvk.RenderSettings"),
+])
+def test_bad_materials_and_settings_are_clear_errors(call, error, message):
+    scene = phongvk.Scene(32, 24)
+    with pytest.raises(error, match=message):
+        call(scene)
+    assert scene.object_count == 0 and scene.render_settings == phongvk.RenderSettings()
+
+
+def test_materials_and_settings_say_what_they_are():
+    assert repr(phongvk.Material(ks=0.2)) == ("phongvk.Material(ka=0.15, kd=1.0, ks=0.2, n=10.0, "
+                                              "attenuation=(1.0, 0.2, 0.2), color=(0.8, 0.8, 0.8))")
+    assert repr(phongvk.RenderSettings(shading="phong", samples=4)) == (
+        "phongvk.RenderSettings(shading='phong', specular='phong', interpolation='perspective', samples=4, "
+        "background=(0.0, 0.0, 0.0))")
+    assert "shininess" in phongvk.Material.__doc__ and "samples" in phongvk.RenderSettings.__doc__
+    assert "width x height" in phongvk.Scene.__init__.__doc__
+    assert phongvk.Material(ks=0.2) != phongvk.Material()

@@ -1,0 +1,219 @@
+// scene_parts_gpu_test.cpp — materials and render settings given as typed values (scene_parts.h):
+// a scene built in code renders the bytes of the same scene written as a file, field by field, on
+// both backends; a bad value fails with the file's message; the defaults are the file's.
+#include "phongvk/phongvk.h"
+#include "test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace phongvk {
+namespace {
+
+// An octahedron about the origin, as arrays and as the same OBJ file.
+MeshArrays octahedron() {
+  MeshArrays mesh;
+  mesh.positions = {0.5f, 0, 0, -0.5f, 0, 0, 0, 0.5f, 0, 0, -0.5f, 0, 0, 0, 0.5f, 0, 0, -0.5f};
+  mesh.triangles = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+  return mesh;
+}
+
+std::string octahedronObj() {
+  const MeshArrays mesh = octahedron();
+  std::string text;
+  for (size_t i = 0; i < mesh.positions.size(); i += 3) {
+    text += "v " + std::to_string(mesh.positions[i]) + " " + std::to_string(mesh.positions[i + 1]) + " " +
+            std::to_string(mesh.positions[i + 2]) + "\n";
+  }
+  for (size_t i = 0; i < mesh.triangles.size(); i += 3) {
+    text += "f " + std::to_string(mesh.triangles[i] + 1) + " " + std::to_string(mesh.triangles[i + 1] + 1) + " " +
+            std::to_string(mesh.triangles[i + 2] + 1) + "\n";
+  }
+  return text;
+}
+
+// The scene Scene(96, 64) starts from, written as a file: the default camera at that size and one
+// light at the camera; `more` adds top-level keys and `material` the octahedron's (none: "").
+std::string written(const std::string& material, const std::string& more = "") {
+  return R"({"camera": {"position": [0, -5, 2], "look_at": [0, 0, 0], "width": 96, "height": 64},
+             "lights": [{"position": "camera"}], )" + more + R"("objects": [{"shape": "mesh", "file": "oct.obj")" +
+         (material.empty() ? "" : R"(, "material": )" + material) + "}]}";
+}
+
+// A value set in code, and the same written in the file.
+template <typename T>
+struct Field {
+  std::string json;
+  std::function<void(T&)> set;
+};
+
+const std::vector<Field<Material>> MATERIAL_FIELDS = {
+    {R"({"ka": 0.6})", [](Material& m) { m.ka = 0.6; }},
+    {R"({"kd": 0.3})", [](Material& m) { m.kd = 0.3; }},
+    {R"({"ks": 0.1})", [](Material& m) { m.ks = 0.1; }},
+    {R"({"n": 40})", [](Material& m) { m.n = 40; }},
+    {R"({"attenuation": [1, 0.05, 0]})", [](Material& m) { m.attenuation = {1, 0.05, 0}; }},
+    {R"({"color": [0.9, 0.3, 0.1]})", [](Material& m) { m.color = {0.9, 0.3, 0.1}; }},
+    {R"({"ka": 0.3, "kd": 0.7, "ks": 1, "n": 3, "attenuation": [0.5, 0, 0.01], "color": [0.2, 1, 0.6]})",
+     [](Material& m) { m = {0.3, 0.7, 1, 3, {0.5, 0, 0.01}, {0.2, 1, 0.6}}; }},
+};
+
+// Render settings: the file's "render" (and "background") keys, and the same set in code.
+const std::vector<Field<RenderSettings>> RENDER_FIELDS = {
+    {R"("render": {"shading": "flat"}, )", [](RenderSettings& s) { s.shading = Shading::Flat; }},
+    {R"("render": {"shading": "phong"}, )", [](RenderSettings& s) { s.shading = Shading::Phong; }},
+    {R"("render": {"specular": "blinn"}, )", [](RenderSettings& s) { s.specular = Specular::Blinn; }},
+    {R"("render": {"interpolation": "screen"}, )", [](RenderSettings& s) { s.interpolation = Interpolation::Screen; }},
+    {R"("render": {"samples": 4}, )", [](RenderSettings& s) { s.samples = 4; }},
+    {R"("render": {"samples": 16}, )", [](RenderSettings& s) { s.samples = 16; }},
+    {R"("background": [0.25, 0.5, 0.75], )", [](RenderSettings& s) { s.background = {0.25, 0.5, 0.75}; }},
+    {R"("render": {"shading": "phong", "specular": "blinn", "samples": 9, "interpolation": "screen"},
+        "background": [1, 0.5, 0], )",
+     [](RenderSettings& s) { s = {Shading::Phong, Specular::Blinn, Interpolation::Screen, 9, {1, 0.5, 0}}; }},
+};
+
+class SceneParts : public ::testing::Test {
+ protected:
+  void SetUp() override { test::writeFile(dir_ + "/oct.obj", octahedronObj()); }
+
+  Scene file(const std::string& text) const { return parseScene(text, "", dir_); }
+
+  // The octahedron added in code with `material`, in the empty scene of that size.
+  static Scene built(const Material& material) {
+    Scene scene(96, 64);
+    scene.add(octahedron(), IDENTITY_POSE, material);
+    return scene;
+  }
+
+  // Both backends render `code` as the reference renders `file`.
+  void expectSame(const Scene& code, const Scene& file, const std::string& what) {
+    const Image expected = cpu_.render(file);
+    EXPECT_TRUE(cpu_.render(code).rgb == expected.rgb) << what << ": cpu";
+    EXPECT_TRUE(gpu_.render(code).rgb == expected.rgb) << what << ": gpu";
+  }
+
+  std::string dir_ = test::makeTempDir();
+  Renderer cpu_{Backend::Cpu};
+  Renderer gpu_{RendererOptions{Backend::Gpu, -1, true}};
+};
+
+TEST_F(SceneParts, EveryMaterialFieldRendersAsTheFileSaysIt) {
+  expectSame(built(Material{}), file(written("")), "the default material");
+  for (const Field<Material>& field : MATERIAL_FIELDS) {
+    Material material;
+    field.set(material);
+    expectSame(built(material), file(written(field.json)), field.json);
+  }
+}
+
+TEST_F(SceneParts, EveryRenderSettingRendersAsTheFileSaysIt) {
+  const Scene plain = built(Material{});
+  for (const Field<RenderSettings>& field : RENDER_FIELDS) {
+    RenderSettings settings;
+    field.set(settings);
+    Scene assigned = plain;
+    assigned.setRenderSettings(settings);
+    EXPECT_EQ(assigned.renderSettings(), settings) << field.json;
+    EXPECT_EQ(file(written("", field.json)).renderSettings(), settings) << field.json;
+    expectSame(assigned, file(written("", field.json)), field.json);
+    expectSame(plain.withRender(settings), file(written("", field.json)), field.json);
+  }
+}
+
+TEST_F(SceneParts, DefaultsAreTheFilesDefaults) {
+  const Scene empty(96, 64);
+  EXPECT_EQ(empty.renderSettings(), RenderSettings{});
+  EXPECT_EQ(file(written("")).renderSettings(), RenderSettings{});
+  EXPECT_EQ(empty.objectCount(), 0u);
+  EXPECT_EQ(empty.lightCount(), 1u);
+  EXPECT_TRUE(empty.lights()[0].atCamera);
+  EXPECT_EQ(empty.camera().position, Camera{}.position);
+  EXPECT_EQ((std::pair{empty.width(), empty.height()}), (std::pair{96, 64}));
+  // Material{} is the material an object that names none gets.
+  Scene defaulted(96, 64);
+  defaulted.addMesh(octahedron());
+  expectSame(defaulted, file(written("")), "addMesh without a material");
+  EXPECT_EQ(test::thrownMessage<SceneError>([&] { cpu_.render(empty); }), "objects: scene has no objects");
+}
+
+// The message of the SceneError or ArgumentError `call` throws.
+std::string failure(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const SceneError& e) {
+    return std::string("SceneError: ") + e.what();
+  } catch (const ArgumentError& e) {
+    return std::string("ArgumentError: ") + e.what();
+  }
+  return "(no error)";
+}
+
+TEST_F(SceneParts, BadMaterialsFailWithTheFilesMessage) {
+  for (const Field<Material>& bad : std::vector<Field<Material>>{
+           {R"({"ka": -0.5})", [](Material& m) { m.ka = -0.5; }},
+           {R"({"kd": -1})", [](Material& m) { m.kd = -1; }},
+           {R"({"ks": -1})", [](Material& m) { m.ks = -1; }},
+           {R"({"n": -2})", [](Material& m) { m.n = -2; }},
+           {R"({"ks": 1e39})", [](Material& m) { m.ks = 1e39; }},
+           {R"({"attenuation": [0, 0, 0]})", [](Material& m) { m.attenuation = {0, 0, 0}; }},
+           {R"({"attenuation": [1, -3, 1]})", [](Material& m) { m.attenuation = {1, -3, 1}; }},
+           {R"({"color": [0.5, -0.1, 0]})", [](Material& m) { m.color = {0.5, -0.1, 0}; }}}) {
+    Material material;
+    bad.set(material);
+    Scene scene(96, 64);
+    const std::string expected = failure([&] { file(written(bad.json)); });
+    EXPECT_NE(expected.find("objects[0].material."), std::string::npos) << expected;
+    EXPECT_EQ(failure([&] { scene.add(octahedron(), IDENTITY_POSE, material); }), expected);
+    EXPECT_EQ(scene.objectCount(), 0u) << "a failed add changes nothing";
+  }
+  Scene scene(96, 64);
+  EXPECT_EQ(failure([&] { scene.addMesh(octahedron(), Material{.ka = NAN}); }),
+            "ArgumentError: material.ka: must be finite, got nan");
+  EXPECT_EQ(failure([&] { scene.addMesh(octahedron(), Material{.color = {0, INFINITY, 0}}); }),
+            "ArgumentError: material.color[1]: must be finite, got inf");
+  EXPECT_EQ(failure([&] { scene.addMesh(octahedron(), "gold"); }),
+            "SceneError: objects[0].material: unknown material 'gold' (no named materials are defined)");
+}
+
+TEST_F(SceneParts, BadRenderSettingsFailWithTheFilesMessage) {
+  for (const Field<RenderSettings>& bad : std::vector<Field<RenderSettings>>{
+           {R"("render": {"samples": 3}, )", [](RenderSettings& s) { s.samples = 3; }},
+           {R"("render": {"samples": 25}, )", [](RenderSettings& s) { s.samples = 25; }},
+           {R"("background": [1.5, 0, 0], )", [](RenderSettings& s) { s.background = {1.5, 0, 0}; }},
+           {R"("background": [0, 0, -1], )", [](RenderSettings& s) { s.background = {0, 0, -1}; }}}) {
+    RenderSettings settings;
+    bad.set(settings);
+    Scene scene = built(Material{});
+    const std::string expected = failure([&] { file(written("", bad.json)); });
+    EXPECT_EQ(failure([&] { scene.setRenderSettings(settings); }), expected);
+    EXPECT_EQ(failure([&] { scene.withRender(settings); }), expected);
+    EXPECT_EQ(scene.renderSettings(), RenderSettings{}) << "a failed assignment changes nothing";
+  }
+  EXPECT_EQ(failure([] { parseShading("smooth"); }),
+            "SceneError: render.shading: must be one of gouraud, flat, phong, got 'smooth'");
+  EXPECT_EQ(failure([] { parseSpecular("cook-torrance"); }),
+            "SceneError: render.specular: must be one of phong, blinn, got 'cook-torrance'");
+  EXPECT_EQ(failure([] { parseInterpolation("linear"); }),
+            "SceneError: render.interpolation: must be one of perspective, screen, got 'linear'");
+  EXPECT_EQ(failure([&] { built(Material{}).withRender({.shading = Shading(7)}); }),
+            "SceneError: render.shading: must be one of gouraud, flat, phong, got ''");
+  EXPECT_EQ(failure([&] { built(Material{}).withRender({.background = {NAN, 0, 0}}); }),
+            "ArgumentError: background[0]: must be finite, got nan");
+}
+
+TEST(SceneNames, EveryChoiceHasTheFilesNameBothWays) {
+  for (Shading s : {Shading::Gouraud, Shading::Flat, Shading::Phong}) EXPECT_EQ(parseShading(shadingName(s)), s);
+  for (Specular s : {Specular::Phong, Specular::Blinn}) EXPECT_EQ(parseSpecular(specularName(s)), s);
+  for (Interpolation i : {Interpolation::Perspective, Interpolation::Screen})
+    EXPECT_EQ(parseInterpolation(interpolationName(i)), i);
+  EXPECT_STREQ(shadingName(Shading::Phong), "phong");
+  EXPECT_STREQ(specularName(Specular::Blinn), "blinn");
+  EXPECT_STREQ(interpolationName(Interpolation::Screen), "screen");
+}
+
+}  // namespace
+}  // namespace phongvk
