@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The full CI, what .ci/run runs (about 30 min from a fresh clone on a 2-core machine): scripts/test.sh (build
 # and the whole test suite), then `pip install .` into a fresh virtual environment and the Python
-# suite against it (scripts/pip_check.sh), a bounded fuzzing run of the scene loader, the mesh and
+# suite against it (scripts/pip_check.sh), the GPU check's dry run on lavapipe (scripts/gpu_check.sh),
+# a bounded fuzzing run of the scene loader, the mesh and
 # glTF importers and scene_from_dict's path (scripts/fuzz.sh), then the whole test suite again under
 # ASan + UBSan (scripts/sanitize.sh). Each stage prints how long it took; the last lines are CTest's verdicts.
 # Run `bash scripts/setup.sh --test` first. JOBS sets the parallelism (default: every core).
@@ -20,6 +21,9 @@ stage() {
 
 bash scripts/test.sh  # prints its own stage time, 'build + tests'
 stage "pip install" bash scripts/pip_check.sh
+# The GPU check's own dry run (a few scenes and suites of each stage, lavapipe standing in for the
+# GPU), so the script a GPU machine runs does not rot between the times one is at hand.
+stage "gpu check (dry run)" bash scripts/gpu_check.sh --allow-cpu --quick --no-setup --skip bench --out build/gpu_check
 stage "fuzz" bash scripts/fuzz.sh
 stage "sanitizers" bash scripts/sanitize.sh
 echo "== ci took $((SECONDS - start)) s"
