@@ -176,6 +176,12 @@ void Scene::setLights(const std::vector<Light>& lights) {
   *this = state_->with(std::make_shared<const SceneSpec>(withLights(*state_->spec, lights)));
 }
 
+Vec3 Scene::ambient() const { return ambientOf(*state_->spec); }
+
+void Scene::setAmbient(const Vec3& ambient) {
+  *this = state_->with(std::make_shared<const SceneSpec>(withAmbient(*state_->spec, ambient)));
+}
+
 int Scene::frameCount() const { return state_->sequence ? state_->sequence->frameCount() : 1; }
 
 Scene Scene::frame(int index) const {

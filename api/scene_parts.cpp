@@ -158,6 +158,12 @@ std::vector<Light> lightsOf(const SceneSpec& scene) {
   return lights;
 }
 
+SceneSpec withAmbient(const SceneSpec& scene, const Vec3& ambient) {
+  return withSection(scene, "ambient", vec3Json(ambient, "ambient").dump());
+}
+
+Vec3 ambientOf(const SceneSpec& scene) { return {scene.ambient.x, scene.ambient.y, scene.ambient.z}; }
+
 Json materialJson(const Material& m) {
   for (const auto& [value, key] : {std::pair{m.ka, "ka"}, {m.kd, "kd"}, {m.ks, "ks"}, {m.n, "n"}})
     requireFinite(value, std::string("material.") + key);

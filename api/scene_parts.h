@@ -22,6 +22,9 @@ Camera cameraOf(const SceneSpec& scene);
 SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights);
 std::vector<Light> lightsOf(const SceneSpec& scene);
 
+SceneSpec withAmbient(const SceneSpec& scene, const Vec3& ambient);
+Vec3 ambientOf(const SceneSpec& scene);
+
 // `material` as a scene file's material object, for the scene's MaterialTable to read;
 // ArgumentError naming material.KEY for a value that is not finite.
 scenejson::Json materialJson(const Material& material);

@@ -545,6 +545,9 @@ trimesh.Trimesh works), or vertices with faces; material and closed as in add_me
                     "The camera (a phongvk.Camera); assigning one checks it like a scene file's \"camera\".")
       .def_property("lights", &Scene::lights, &Scene::setLights,
                     "The lights (phongvk.Light); assigning a list checks it like a scene file's \"lights\".")
+      .def_property("ambient", &Scene::ambient, &Scene::setAmbient,
+                    "The ambient light, RGB (default white); assigning one checks it like a scene file's "
+                    "\"ambient\".")
       .def("__repr__", [](const Scene& s) {
         return "<phongvk.Scene " + (s.path().empty() ? std::string("(no file)") : s.path()) + ": " +
                std::to_string(s.objectCount()) + " objects, " + std::to_string(s.lightCount()) + " lights, " +

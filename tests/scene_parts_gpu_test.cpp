@@ -76,6 +76,18 @@ const std::vector<Field<RenderSettings>> RENDER_FIELDS = {
      [](RenderSettings& s) { s = {Shading::Phong, Specular::Blinn, Interpolation::Screen, 9, {1, 0.5, 0}}; }},
 };
 
+// The message of the SceneError or ArgumentError `call` throws.
+std::string failure(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const SceneError& e) {
+    return std::string("SceneError: ") + e.what();
+  } catch (const ArgumentError& e) {
+    return std::string("ArgumentError: ") + e.what();
+  }
+  return "(no error)";
+}
+
 class SceneParts : public ::testing::Test {
  protected:
   void SetUp() override { test::writeFile(dir_ + "/oct.obj", octahedronObj()); }
@@ -124,9 +136,22 @@ TEST_F(SceneParts, EveryRenderSettingRendersAsTheFileSaysIt) {
   }
 }
 
+TEST_F(SceneParts, TheAmbientLightRendersAsTheFileSaysIt) {
+  Scene scene = built(Material{.ka = 0.8});
+  scene.setAmbient({0.5, 0.25, 0});
+  EXPECT_EQ(scene.ambient(), (Vec3{0.5, 0.25, 0}));
+  expectSame(scene, file(written(R"({"ka": 0.8})", R"("ambient": [0.5, 0.25, 0], )")), "ambient");
+  const std::string expected = failure([&] { file(written("", R"("ambient": [1, -1, 0], )")); });
+  EXPECT_EQ(expected, "SceneError: ambient[1]: must be >= 0, got -1");
+  EXPECT_EQ(failure([&] { scene.setAmbient({1, -1, 0}); }), expected);
+  EXPECT_EQ(failure([&] { scene.setAmbient({1, NAN, 0}); }), "ArgumentError: ambient[1]: must be finite, got nan");
+  EXPECT_EQ(scene.ambient(), (Vec3{0.5, 0.25, 0})) << "a failed assignment changes nothing";
+}
+
 TEST_F(SceneParts, DefaultsAreTheFilesDefaults) {
   const Scene empty(96, 64);
   EXPECT_EQ(empty.renderSettings(), RenderSettings{});
+  EXPECT_EQ(empty.ambient(), (Vec3{1, 1, 1}));
   EXPECT_EQ(file(written("")).renderSettings(), RenderSettings{});
   EXPECT_EQ(empty.objectCount(), 0u);
   EXPECT_EQ(empty.lightCount(), 1u);
@@ -138,18 +163,6 @@ TEST_F(SceneParts, DefaultsAreTheFilesDefaults) {
   defaulted.addMesh(octahedron());
   expectSame(defaulted, file(written("")), "addMesh without a material");
   EXPECT_EQ(test::thrownMessage<SceneError>([&] { cpu_.render(empty); }), "objects: scene has no objects");
-}
-
-// The message of the SceneError or ArgumentError `call` throws.
-std::string failure(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const SceneError& e) {
-    return std::string("SceneError: ") + e.what();
-  } catch (const ArgumentError& e) {
-    return std::string("ArgumentError: ") + e.what();
-  }
-  return "(no error)";
 }
 
 TEST_F(SceneParts, BadMaterialsFailWithTheFilesMessage) {

@@ -98,6 +98,10 @@ class PHONGVK_API Scene {
   // The point lights, and new ones (checked like a scene file's "lights").
   std::vector<Light> lights() const;
   void setLights(const std::vector<Light>& lights);
+  // The ambient light (RGB >= 0, default white), and a new one (checked like a scene file's
+  // "ambient"; given back in 32-bit floats, as the renderers hold it).
+  Vec3 ambient() const;
+  void setAmbient(const Vec3& ambient);
 
   // The frames of the file's "animate" block (1 without one; this scene is frame 0), each
   // validated like a scene file, with the meshes added with addMesh or add (built once, at their

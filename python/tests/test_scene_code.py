@@ -289,6 +289,16 @@ def test_every_render_setting_renders_as_the_file_says_it(tmp_path, render, top)
     assert np.array_equal(both(scene), expected)
 
 
+def test_the_ambient_light_renders_as_the_file_says_it(tmp_path):
+    scene = built_scene(phongvk.Material(ka=0.8))
+    assert tuple(scene.ambient) == (1, 1, 1)
+    scene.ambient = (0.5, 0.25, 0)
+    assert tuple(scene.ambient) == (0.5, 0.25, 0)
+    assert np.array_equal(both(scene), both(written_scene(tmp_path, {"ka": 0.8}, ambient=[0.5, 0.25, 0])))
+    with pytest.raises(phongvk.SceneError, match=r"^ambient\[1\]: must be >= 0, got -1$"):
+        scene.ambient = (1, -1, 0)
+
+
 def test_defaults_are_the_files_defaults(tmp_path):
     material = phongvk.Material()
     assert (material.ka, material.kd, material.ks, material.n) == (0.15, 1.0, 0.8, 10.0)
