@@ -437,12 +437,13 @@ scene file's material (SceneError naming objects[N].material.KEY).)")
            }),
            py::kw_only(), py::arg("ka") = material.ka, py::arg("kd") = material.kd, py::arg("ks") = material.ks,
            py::arg("n") = material.n, py::arg("attenuation") = material.attenuation, py::arg("color") = material.color)
-      .def_readwrite("ka", &Material::ka)
-      .def_readwrite("kd", &Material::kd)
-      .def_readwrite("ks", &Material::ks)
-      .def_readwrite("n", &Material::n)
-      .def_readwrite("attenuation", &Material::attenuation)
-      .def_readwrite("color", &Material::color)
+      .def_readwrite("ka", &Material::ka, "Ambient coefficient (>= 0).")
+      .def_readwrite("kd", &Material::kd, "Diffuse coefficient (>= 0).")
+      .def_readwrite("ks", &Material::ks, "Specular coefficient (>= 0).")
+      .def_readwrite("n", &Material::n, "Specular exponent, the shininess (>= 0).")
+      .def_readwrite("attenuation", &Material::attenuation,
+                     "(a, b, c) of the fall-off 1 / (a + b d + c d^2), positive at every distance d > 0.")
+      .def_readwrite("color", &Material::color, "RGB (>= 0).")
       .def("__eq__", [](const Material& a, const Material& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const Material& x) {
         return "phongvk.Material(ka=" + floatText(x.ka) + ", kd=" + floatText(x.kd) + ", ks=" + floatText(x.ks) +
@@ -476,8 +477,8 @@ scene takes the settings (Scene.render_settings, with_render), like a scene file
           "interpolation", [](const RenderSettings& s) { return interpolationName(s.interpolation); },
           [](RenderSettings& s, const std::string& name) { s.interpolation = parseInterpolation(name); },
           "\"perspective\" or \"screen\".")
-      .def_readwrite("samples", &RenderSettings::samples)
-      .def_readwrite("background", &RenderSettings::background)
+      .def_readwrite("samples", &RenderSettings::samples, "Samples per pixel: 1, 4, 9 or 16 (a regular grid).")
+      .def_readwrite("background", &RenderSettings::background, "RGB in [0, 1] where nothing is drawn.")
       .def("__eq__", [](const RenderSettings& a, const RenderSettings& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const RenderSettings& s) {
         return std::string("phongvk.RenderSettings(shading='") + shadingName(s.shading) + "', specular='" +
@@ -570,8 +571,8 @@ up: None, "y" or "z": the up axis of a model file loaded alone, for one whose ex
         R"(A scene from a dict with the scene file's schema, validated the same way.
 
 Relative mesh paths resolve against base_dir (the working directory when None). The dict may have
-no objects yet ("objects": []) and get them from add_mesh(); rendering a scene without objects
-raises SceneError.)");
+no objects yet ("objects": []) and get them from add() or add_mesh(); rendering a scene without
+objects raises SceneError. A scene built in code needs no dict: Scene(width, height).)");
 
   py::class_<Renderer>(m, "Renderer", R"(Renders scenes on one backend.
 
