@@ -108,7 +108,7 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image sto
   uploadFrame(in);
   selectPipelines(in);
   if (!frameColorsInKeys_) ensureColorBuffer(true);
-  while (!renderAttempt()) selectPipelines(in);  // the lists may now be taken in chunks (prepareRetry)
+  while (!renderAttempt()) selectPipelines(in);  // the clip pass may now clip, the lists be taken in chunks
 
   RenderOutput out;
   out.image = readImage(std::move(storage));
@@ -152,13 +152,16 @@ void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer
   submitAndWait(context_, cmd);
 }
 
-// Makes room for what the last attempt lacked (STATUS_* flags): twice the large triangles' lists,
+// Makes room for what the last attempt lacked (STATUS_* flags): the clip pass that clips (kept for
+// the renderer's later frames), or twice the large triangles' lists,
 // or 16 times the workgroups per pass, or, with the most workgroups, the bins' lists taken in
 // chunks of LIST_CHUNK_FIRST entries and then a quarter as many each time (gpu_layout.h). The
 // attempt's keys and colours are thrown away, and the next one transforms and relights the
 // vertices (a cut-short shade pass may have left some out). The new sizes are kept for later frames.
 void GpuRenderer::prepareRetry(uint32_t statusFlags) {
-  if (statusFlags & STATUS_LARGE_OVERFLOW) {
+  if (statusFlags & STATUS_NEEDS_CLIPPING) {
+    clipPolygons_ = true;  // render selects the clip pass that clips
+  } else if (statusFlags & STATUS_LARGE_OVERFLOW) {
     createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
                        uint32_t(std::min<uint64_t>(2ull * largeSetupCapacity_, UINT32_MAX)));
     updateDescriptors();

@@ -112,6 +112,7 @@ class GpuRenderer {
   // 0, or how many entries of each bin's large-triangle list resolve takes per round since a frame
   // had lists too long for the device's loop budget (gpu_layout.h LIST_CHUNK_FIRST).
   uint32_t listChunk() const { return listChunk_; }
+  bool clipsPolygons() const { return clipPolygons_; }
   // Time spent compiling its pipeline set's pipelines so far, construction included (a shared set:
   // by every renderer that compiled into it).
   double compileMs() const { return pipelines_->compileMs(); }
@@ -184,6 +185,8 @@ class GpuRenderer {
   bool exactFloats_ = false;    // the passes' _exact builds
   uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
   bool binPass_ = false;       // SPEC_BIN_PASS: WorkLayout::Gpu runs the bin pass
+  bool clipPolygons_ = false;  // since a frame met a triangle to clip unforeseen (kept after)
+  bool frameClips_ = false;    // SPEC_CLIP_POLYGONS: this frame's (clipPolygons_ or FrameInputs::mayClip)
   bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
   bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
   uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)

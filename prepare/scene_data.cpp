@@ -72,6 +72,30 @@ glm::vec3 inBasis(const View& view, const glm::dvec3& v) {
   return glm::vec3(glm::dot(view.right, v), glm::dot(view.up, v), glm::dot(view.forward, v));
 }
 
+// Whether world point p lies outside the clip volume (clip.h insidePlanes) in `view`, or within a
+// margin of its planes that covers the float arithmetic of the passes' positions.
+bool nearOrOutsideClipVolume(const View& view, const glm::dvec3& p) {
+  const glm::dvec3 d = p - view.eye;
+  const double z = glm::dot(view.forward, d);
+  const double x = std::abs(view.focal * glm::dot(view.right, d));
+  const double y = std::abs(view.focal * glm::dot(view.up, d));
+  const double band = double(gpu::GUARD_BAND) * z;
+  constexpr double MARGIN = 1e-5;  // relative; float positions are good to a few 1e-7
+  return !(z - view.nearPlane > MARGIN * (glm::length(d) + view.nearPlane) && band - x > MARGIN * (band + x) &&
+           band - y > MARGIN * (band + y));
+}
+
+// Whether any corner of the scene's box is near or outside the clip volume (FrameInputs::mayClip).
+bool boxMayClip(const SceneData& data, const View& view) {
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? data.boundsMax.x : data.boundsMin.x,
+                       (corner & 2) ? data.boundsMax.y : data.boundsMin.y,
+                       (corner & 4) ? data.boundsMax.z : data.boundsMin.z);
+    if (nearOrOutsideClipVolume(view, p)) return true;
+  }
+  return false;
+}
+
 glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
   glm::dvec3 sum(0.0);
   for (const glm::dvec3& o : origins) sum += o;
@@ -196,6 +220,7 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   }
   in.lights = data.lights;
   in.materials = data.materials;
+  in.mayClip = boxMayClip(data, view);
   return in;
 }
 

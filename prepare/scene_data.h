@@ -43,6 +43,10 @@ struct FrameInputs {
   std::vector<gpu::ObjectData> objects;
   std::vector<gpu::LightData> lights;
   std::vector<gpu::MaterialData> materials;
+  // Whether a triangle may cross the near plane or the guard band (the scene's box does, with a
+  // margin for the passes' float arithmetic): the compute port's clip pass then carries the
+  // polygon clipper. False means none can (the box holds every vertex, the clip volume is convex).
+  bool mayClip = true;
 };
 
 // Builds every object's mesh and flattens the scene. Throws SceneError, also for a scene without

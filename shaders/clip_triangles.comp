@@ -14,6 +14,12 @@
 
 layout(local_size_x = CLIP_GROUP_SIZE) in;
 
+// Whether triangles crossing the near plane or the guard band are clipped here. Without it, the
+// first such triangle asks the host for a frame with it (STATUS_NEEDS_CLIPPING): the clipper is
+// most of this pass's code, and lavapipe generates a pass's machine code when it first runs it,
+// seconds for the clipper, which most scenes never need (docs/DECISIONS.md).
+layout(constant_id = SPEC_CLIP_POLYGONS) const bool CLIP_POLYGONS = false;
+
 void main() {
   loadUniforms();
   for (uint k = gl_GlobalInvocationID.x; k < clipList.count; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
@@ -27,8 +33,14 @@ void main() {
     // clipper runs in a 0/1-trip loop (on lavapipe no cheaper than an if: a loop body runs once,
     // masked, even when no lane enters it).
     bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane);
+    if (!inside && !CLIP_POLYGONS) {
+      atomicOr(status.flags, STATUS_NEEDS_CLIPPING);
+      continue;
+    }
     bool drawn = inside && setupUnclipped(h0, h1, h2, frame, t);
-    for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
+    if (CLIP_POLYGONS) {
+      for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
+    }
     if (!drawn) continue;
     for (int f = 0; f + 2 < t.count; ++f) {
       TriangleSetup sub = fanTriangle(t, f);

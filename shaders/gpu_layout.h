@@ -84,6 +84,9 @@ PHONGVK_CONST uint STATUS_LOOP_LIMIT = 2;
 // Not a failure: resolve_large, taking bins' lists a chunk at a time (SPEC_LIST_CHUNK), left some
 // bin's list unfinished; the host runs it again (a round) until no bin is left.
 PHONGVK_CONST uint STATUS_MORE_ROUNDS = 4;
+// The clip pass met a triangle crossing the near plane or the guard band while built without
+// polygon clipping (SPEC_CLIP_POLYGONS): the host renders the frame again with it.
+PHONGVK_CONST uint STATUS_NEEDS_CLIPPING = 8;
 // Iterations of the loop-budget probe (PassControl.loopProbe; a uniform value, so no compiler unrolls it).
 PHONGVK_CONST uint LOOP_PROBE_ITERATIONS = 2;
 

@@ -99,7 +99,8 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(SPEC_SELFTEST_SLOTS, 7)             \
   X(SPEC_LIST_CHUNK, 8)                 \
   X(SPEC_SHADING, 9)                    \
-  X(SPEC_BLINN, 10)
+  X(SPEC_BLINN, 10)                     \
+  X(SPEC_CLIP_POLYGONS, 11)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;

@@ -259,6 +259,42 @@ TEST(GpuRender, FrameOutOfLoopIterationsIsRenderedAgainWithMoreWorkgroups) {
   EXPECT_EQ(context.validation->count(), 0u);
 }
 
+// The clip pass carries the polygon clipper only in frames whose scene box reaches outside the clip
+// volume (FrameInputs::mayClip), and from the first frame whose clip pass met a triangle to clip
+// all the same (that frame rendered again with it). Every frame gives the reference's bytes.
+TEST(GpuRender, ClipperOnlyWhereAFrameMayNeedIt) {
+  const SceneSpec insideSpec = loadSceneSpec(test::sourcePath("scenes/basic.json"));
+  const SceneSpec crossingSpec = loadSceneSpec(test::sourcePath("scenes/stress/near_plane.json"));
+  const SceneData inside = buildSceneData(insideSpec), crossing = buildSceneData(crossingSpec);
+  const FrameInputs insideFrame = makeFrame(inside, makeView(insideSpec.camera));
+  FrameInputs crossingFrame = makeFrame(crossing, makeView(crossingSpec.camera));
+  EXPECT_FALSE(insideFrame.mayClip) << "basic.json's box lies in front of the camera";
+  EXPECT_TRUE(crossingFrame.mayClip) << "near_plane.json crosses the near plane";
+  VulkanContext context = createContext({-1, true});
+  {
+    GpuRenderer gpu(context, crossing);
+    EXPECT_EQ(gpu.render(crossingFrame).image.rgb, renderReference(crossing, crossingFrame).image.rgb);
+    EXPECT_EQ(gpu.framesRepeated(), 0u) << "foreseen: the first attempt clips";
+    EXPECT_FALSE(gpu.clipsPolygons());
+    // Unforeseen (a frame told that nothing crosses): the clip pass asks for the clipper.
+    crossingFrame.mayClip = false;
+    EXPECT_EQ(gpu.render(crossingFrame).image.rgb, renderReference(crossing, crossingFrame).image.rgb);
+    EXPECT_EQ(gpu.framesRepeated(), 1u);
+    EXPECT_TRUE(gpu.clipsPolygons()) << "kept for the later frames";
+    gpu.replaceScene(inside);
+    EXPECT_EQ(gpu.render(insideFrame).image.rgb, renderReference(inside, insideFrame).image.rgb);
+    EXPECT_EQ(gpu.framesRepeated(), 1u);
+  }
+  {
+    GpuRenderer gpu(context, inside);
+    EXPECT_EQ(gpu.render(insideFrame).image.rgb, renderReference(inside, insideFrame).image.rgb);
+    EXPECT_EQ(gpu.framesRepeated(), 0u);
+    EXPECT_FALSE(gpu.clipsPolygons());
+  }
+  destroyContext(context);
+  EXPECT_EQ(context.validation->count(), 0u);
+}
+
 TEST(GpuRender, OverflowingTheLargeTriangleListStillMatchesEveryRun) {
   // 40 open cubes stacked in front of the camera, every face filling much of the 640x480 view:
   // about 40 * 8 large triangles each reserving a bin entry for most of the 300 bins, far more

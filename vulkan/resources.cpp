@@ -127,11 +127,29 @@ void createBuffer(Buffer& result, const VulkanContext& context, VkDeviceSize siz
   }
 }
 
+namespace {
+
+// The size a texel buffer of `bytes` is made with: padded by up to 17 texels so that neither is it
+// a power of two nor are its bits 8-15 all zero. lavapipe (llvmpipe, Mesa 22.3) keys the machine
+// code it generates for a pipeline on what it reads of each bound texel buffer's size, and those
+// two properties of it are what moved the key: unpadded, a scene whose counts made one of them
+// differ paid seconds of code generation on its first frame, although every pipeline was one it
+// had compiled before (docs/DECISIONS.md, "One machine code for every scene").
+// Never past the device's texel limit (the padding is only for lavapipe's sake).
+VkDeviceSize texelBufferBytes(VkDeviceSize bytes, const VulkanContext& context) {
+  VkDeviceSize size = std::max(bytes, TEXEL_BYTES);
+  while ((size & (size - 1)) == 0 || ((size >> 8) & 0xFF) == 0) size += TEXEL_BYTES;
+  const VkDeviceSize limit = VkDeviceSize(context.properties.limits.maxTexelBufferElements) * TEXEL_BYTES;
+  return size <= limit ? size : std::max(bytes, TEXEL_BYTES);
+}
+
+}  // namespace
+
 void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
                        VkBufferUsageFlags usage, MemoryKind kind) {
   assert(bytes % TEXEL_BYTES == 0);
   result = {};
-  createBuffer(result.buffer, context, std::max(bytes, TEXEL_BYTES), usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+  createBuffer(result.buffer, context, texelBufferBytes(bytes, context), usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
                kind);
   try {
     if (data && bytes) uploadToBuffer(context, result.buffer, data, bytes);

@@ -76,7 +76,8 @@ struct TexelBuffer {
 };
 inline constexpr VkDeviceSize TEXEL_BYTES = 16;
 
-// `bytes` (a multiple of TEXEL_BYTES; 0 still gets one texel) in a new texel buffer, filled from
+// `bytes` (a multiple of TEXEL_BYTES; 0 still gets one texel) in a new texel buffer, a few texels
+// longer than asked for where lavapipe needs it (resources.cpp texelBufferBytes), filled from
 // `data` if it is not null; `usage` is added to UNIFORM_TEXEL_BUFFER (e.g. STORAGE for a pass that
 // writes it).
 void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
