@@ -2,7 +2,8 @@
 # Regenerates docs/BENCHMARKS.md and docs/bench_error.png: builds phongvk_bench in Release (in
 # build/, as scripts/test.sh does, so either reuses the other's work) and runs the benchmark
 # harness (bench/): every scene on the reference, the compute port and the graphics pipeline,
-# median of 5 frames after a warm-up. Run `bash scripts/setup.sh --test` first (gnuplot draws the plot).
+# median of 5 frames after a warm-up, then the peer section (bench/peers.py: phongvk against
+# moderngl from Python, docs/BENCHMARKS_PEERS.md). Run `bash scripts/setup.sh --test` first (gnuplot draws the plot).
 # Extra arguments go to phongvk_bench, e.g. `--repeat 9`, `--device 1`.
 # It takes about 2–3 minutes on the 2-core CPU-only machine (lavapipe); each backend is measured in
 # 3 interleaved rounds, so load from elsewhere on a shared machine biases no comparison.
@@ -16,3 +17,6 @@ cmake --build build --target phongvk_bench phongvk -j"$(nproc)"
 echo "== benchmark"
 revision=$(git describe --always --dirty 2>/dev/null || echo unknown)
 ./build/bench/phongvk_bench --revision "$revision" --out docs/BENCHMARKS.md --plot docs/bench_error.png "$@"
+
+echo "== peers (phongvk against moderngl from Python)"
+PYTHONPATH=build/python /usr/bin/python3 bench/peers.py --out docs/BENCHMARKS_PEERS.md

@@ -2,9 +2,9 @@
 # Installs what phongvk needs, from Debian 12 packages only. Run as root (or with sudo).
 #
 #   bash scripts/setup.sh          # to build the library, the phongvk command, the Python package and
-#                                  # the benchmark, and to render (21 packages)
+#                                  # the benchmark, and to render (24 packages)
 #   bash scripts/setup.sh --test   # and everything the tests and the full CI need: scripts/test.sh,
-#                                  # scripts/ci.sh (fuzz.sh, sanitize.sh) (18 more)
+#                                  # scripts/ci.sh (fuzz.sh, sanitize.sh) (20 more)
 #
 # Idempotent: when every package is there it does nothing (no apt-get at all). When another
 # apt-get or dpkg holds a lock (unattended-upgrades, a second setup), it waits for it, up to
@@ -45,6 +45,7 @@ test_packages=(
   vulkan-validationlayers  # PHONGVK_VALIDATE=1 in every GPU test, and `phongvk --validate`
   vulkan-tools  # vulkaninfo, to see what a device offers when a gpu test fails there
   gnuplot-nox  # the benchmark's plot: CTest's bench_smoke and scripts/bench.sh
+  python3-moderngl libegl1  # the benchmark's peer (bench/peers.py, headless EGL): CTest's bench_peers_smoke
   libopenmpi-dev openmpi-bin  # phongvk render --mpi (built where found) and CTest's mpi_render
   slurm-wlm munge  # scripts/slurm/ and CTest's slurm_array (tests/slurm_test.sh starts a one-node cluster)
   clang libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's sanitizer runtimes
