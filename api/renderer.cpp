@@ -88,7 +88,7 @@ RenderOutput Renderer::Impl::renderHeld(const Scene& scene, bool withKeys, Image
   if (const uint32_t base = data_->triangleBase) {
     for (uint64_t& key : out.keys) key += key != ~uint64_t(0) ? base : 0;
   }
-  ++framesRendered_;
+  if (framesRendered_++ == 0) firstFrameMs_ = lastFrameTime().deviceMs;
   return out;
 }
 
@@ -101,6 +101,7 @@ RendererStats Renderer::Impl::stats() const {
   s.framesRepeated = framesRepeated();
   s.triangles = data_ ? data_->triangles.size() : 0;
   s.buildMs = buildMs_;
+  s.firstFrameMs = firstFrameMs_;
   s.validationMessages = validationMessages();
   addStartup(s);
   return s;

@@ -59,6 +59,7 @@ class Renderer::Impl {
   uint64_t sceneBuilds_ = 0;
   uint64_t framesRendered_ = 0;
   double buildMs_ = 0;
+  double firstFrameMs_ = 0;  // RendererStats::firstFrameMs
 };
 
 struct RendererAccess {

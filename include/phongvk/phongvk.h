@@ -188,6 +188,10 @@ struct RendererStats {
   double probeMs = 0;
   bool probeCached = false;
   double pipelinesMs = 0;
+  // The renderer's first frame on the device (ms; 0 before it). lavapipe generates each pass's
+  // machine code when the pass first runs, so on a new machine (no Mesa shader cache yet) this is
+  // most of a first render; later processes take the code from the cache.
+  double firstFrameMs = 0;
 };
 
 // What a frame can give besides its colours (Renderer::renderOutputs).
