@@ -125,7 +125,7 @@ Scene Scene::share(int part, int parts) const {
   return state_->with(std::move(shared));
 }
 
-void Scene::addMesh(const MeshArrays& mesh, const Material& material, bool closed) {
+void Scene::addMesh(const MeshArrays& mesh, const std::optional<Material>& material, bool closed) {
   add(mesh, IDENTITY_POSE, material, closed);
 }
 
@@ -133,8 +133,9 @@ void Scene::addMesh(const MeshArrays& mesh, const std::string& materialName, boo
   add(mesh, IDENTITY_POSE, materialName, closed);
 }
 
-ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const Material& material, bool closed) {
-  return state_->add(*this, mesh, pose, materialJson(material), closed);
+ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::optional<Material>& material,
+                    bool closed) {
+  return state_->add(*this, mesh, pose, material ? materialJson(*material) : scenejson::Json(), closed);
 }
 
 ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::string& materialName, bool closed) {

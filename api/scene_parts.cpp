@@ -191,7 +191,10 @@ RenderSettings renderSettingsOf(const SceneSpec& scene) {
 
 SceneSpec sceneInCode(int width, int height) {
   const SceneSpec camera = withSection(SceneSpec{}, "camera", cameraJson(Camera{}, width, height).dump());
-  return withLights(camera, {Light{.atCamera = true}});
+  SceneSpec spec = withLights(camera, {Light{.atCamera = true}});
+  spec.materials.push_back(noFallOffMaterial());  // the default material (Scene(width, height))
+  spec.defaultMaterial = int(spec.materials.size()) - 1;
+  return spec;
 }
 
 namespace {

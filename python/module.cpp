@@ -167,9 +167,9 @@ void setFields(py::object& value, const py::dict& fields, const std::string& wha
 }
 
 // A material given to add or add_mesh: a phongvk.Material, a dict of its fields, or None (the
-// default material).
-Material materialOf(const py::object& material) {
-  if (material.is_none()) return Material{};
+// scene's default material).
+std::optional<Material> materialOf(const py::object& material) {
+  if (material.is_none()) return std::nullopt;
   if (py::isinstance<Material>(material)) return material.cast<Material>();
   if (!py::isinstance<py::dict>(material)) {
     throw py::type_error("material: expected a phongvk.Material, a dict of its fields, a material name or None, got " +
@@ -433,8 +433,10 @@ Scene.lights, checked like a scene file's "lights".)")
   const Material material;
   py::class_<Material>(m, "Material", R"(A material, as a scene file's material object: ka, kd, ks (the
 ambient, diffuse and specular coefficients), n (the specular exponent, the shininess), attenuation
-(a, b, c of the fall-off 1 / (a + b d + c d^2)) and color (RGB). The defaults are the scene file's:
-0.15, 1.0, 0.8, 10, (1, 0.2, 0.2), grey 0.8. Given to Scene.add or add_mesh, it is checked like a
+(a, b, c of the fall-off 1 / (a + b d + c d^2)) and color (RGB). The defaults are the scene file's
+but the fall-off: 0.15, 1.0, 0.8, 10, (1, 0, 0), grey 0.8; no fall-off, as a model file rendered
+alone has, so a scene built in code is well exposed at any distance (a scene file's default
+attenuation is the paper's (1, 0.2, 0.2)). Given to Scene.add or add_mesh, it is checked like a
 scene file's material (SceneError naming objects[N].material.KEY).)")
       .def(py::init([](double ka, double kd, double ks, double n, Vec3 attenuation, Vec3 color) {
              return Material{ka, kd, ks, n, attenuation, color};
@@ -526,7 +528,8 @@ faces: (M, 3) integer array of vertex indices (or rows of 3 integers), counter-c
     from outside.
 normals: optional (N, 3) floating-point array of vertex normals; computed from the faces
     (area-weighted) when not given.
-material: None (the default material), a phongvk.Material, a dict of its fields ({"ks": 0.2,
+material: None (the scene's default material: Material() in a Scene(width, height), the file's
+    default in a scene from a file or dict), a phongvk.Material, a dict of its fields ({"ks": 0.2,
     "color": [1, 0, 0]}), or the name of one of the scene's materials; checked like a scene file's.
 closed: True if the mesh is a closed surface whose back faces may be culled.
 

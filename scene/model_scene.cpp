@@ -18,6 +18,7 @@ scenejson::Json modelScene(const std::string& path, std::optional<UpAxis> up) {
   if (!detected.format) throw SceneError(detected.problem);  // "<path>: <why>": the user's file alone
   const MeshFormat format = *detected.format;
   const std::string file = std::filesystem::absolute(path).string();
+  const glm::vec3 noFallOff = noFallOffMaterial().attenuation;
   return scenejson::Json{
       {"camera", {{"fit", true}, {"fov", 40}, {"width", 960}, {"height", 720}}},
       {"background", {0.12, 0.12, 0.14}},
@@ -27,7 +28,7 @@ scenejson::Json modelScene(const std::string& path, std::optional<UpAxis> up) {
        {{{"shape", "mesh"},
          {"file", file},
          {"up", up ? (*up == UpAxis::Y ? "y" : "z") : usuallyYUp(format) ? "y" : "z"},
-         {"material", {{"attenuation", {1, 0, 0}}}}}}},
+         {"material", {{"attenuation", {noFallOff.x, noFallOff.y, noFallOff.z}}}}}}},
   };
 }
 

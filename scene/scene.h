@@ -28,6 +28,15 @@ struct MaterialSpec {
   glm::vec3 color = {0.8f, 0.8f, 0.8f};
 };
 
+// The material of a model file rendered alone (model_scene.cpp) and the default one of a scene
+// built in code (Scene(width, height)): the file's default without fall-off, so that the light at
+// the camera leaves a mesh well exposed at any distance.
+inline MaterialSpec noFallOffMaterial() {
+  MaterialSpec m;
+  m.attenuation = {1.0f, 0.0f, 0.0f};
+  return m;
+}
+
 struct LightSpec {
   glm::dvec3 position = {0, 0, 0};
   float intensity = 1.0f;

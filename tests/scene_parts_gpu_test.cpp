@@ -44,6 +44,12 @@ std::string written(const std::string& material, const std::string& more = "") {
          (material.empty() ? "" : R"(, "material": )" + material) + "}]}";
 }
 
+// A material object of a file as Material{} with its fields: the file's without fall-off.
+std::string inCode(const std::string& material) {
+  if (material.find("attenuation") != std::string::npos) return material;
+  return R"({"attenuation": [1, 0, 0])" + (material.size() > 2 ? ", " + material.substr(1) : std::string("}"));
+}
+
 // A value set in code, and the same written in the file.
 template <typename T>
 struct Field {
@@ -114,11 +120,11 @@ class SceneParts : public ::testing::Test {
 };
 
 TEST_F(SceneParts, EveryMaterialFieldRendersAsTheFileSaysIt) {
-  expectSame(built(Material{}), file(written("")), "the default material");
+  expectSame(built(Material{}), file(written(inCode("{}"))), "the default material");
   for (const Field<Material>& field : MATERIAL_FIELDS) {
     Material material;
     field.set(material);
-    expectSame(built(material), file(written(field.json)), field.json);
+    expectSame(built(material), file(written(inCode(field.json))), field.json);
   }
 }
 
@@ -131,8 +137,8 @@ TEST_F(SceneParts, EveryRenderSettingRendersAsTheFileSaysIt) {
     assigned.setRenderSettings(settings);
     EXPECT_EQ(assigned.renderSettings(), settings) << field.json;
     EXPECT_EQ(file(written("", field.json)).renderSettings(), settings) << field.json;
-    expectSame(assigned, file(written("", field.json)), field.json);
-    expectSame(plain.withRender(settings), file(written("", field.json)), field.json);
+    expectSame(assigned, file(written(inCode("{}"), field.json)), field.json);
+    expectSame(plain.withRender(settings), file(written(inCode("{}"), field.json)), field.json);
   }
 }
 
@@ -140,7 +146,7 @@ TEST_F(SceneParts, TheAmbientLightRendersAsTheFileSaysIt) {
   Scene scene = built(Material{.ka = 0.8});
   scene.setAmbient({0.5, 0.25, 0});
   EXPECT_EQ(scene.ambient(), (Vec3{0.5, 0.25, 0}));
-  expectSame(scene, file(written(R"({"ka": 0.8})", R"("ambient": [0.5, 0.25, 0], )")), "ambient");
+  expectSame(scene, file(written(inCode(R"({"ka": 0.8})"), R"("ambient": [0.5, 0.25, 0], )")), "ambient");
   const std::string expected = failure([&] { file(written("", R"("ambient": [1, -1, 0], )")); });
   EXPECT_EQ(expected, "SceneError: ambient[1]: must be >= 0, got -1");
   EXPECT_EQ(failure([&] { scene.setAmbient({1, -1, 0}); }), expected);
@@ -148,7 +154,7 @@ TEST_F(SceneParts, TheAmbientLightRendersAsTheFileSaysIt) {
   EXPECT_EQ(scene.ambient(), (Vec3{0.5, 0.25, 0})) << "a failed assignment changes nothing";
 }
 
-TEST_F(SceneParts, DefaultsAreTheFilesDefaults) {
+TEST_F(SceneParts, DefaultsAreTheFilesButTheFallOff) {
   const Scene empty(96, 64);
   EXPECT_EQ(empty.renderSettings(), RenderSettings{});
   EXPECT_EQ(empty.ambient(), (Vec3{1, 1, 1}));
@@ -158,10 +164,16 @@ TEST_F(SceneParts, DefaultsAreTheFilesDefaults) {
   EXPECT_TRUE(empty.lights()[0].atCamera);
   EXPECT_EQ(empty.camera().position, Camera{}.position);
   EXPECT_EQ((std::pair{empty.width(), empty.height()}), (std::pair{96, 64}));
-  // Material{} is the material an object that names none gets.
+  // Material{} is the material an object of a scene file that names none gets, without fall-off,
+  // and the one a mesh added in code without a material gets, as a model file alone has.
+  expectSame(built(Material{}), file(written(inCode("{}"))), "Material{}");
+  expectSame(built(Material{.attenuation = {1, 0.2, 0.2}}), file(written("")), "the file's default");
   Scene defaulted(96, 64);
   defaulted.addMesh(octahedron());
-  expectSame(defaulted, file(written("")), "addMesh without a material");
+  expectSame(defaulted, file(written(R"({"attenuation": [1, 0, 0]})")), "addMesh without a material");
+  Scene added(96, 64);
+  added.add(octahedron());
+  expectSame(added, file(written(R"({"attenuation": [1, 0, 0]})")), "add without a material");
   EXPECT_EQ(test::thrownMessage<SceneError>([&] { cpu_.render(empty); }), "objects: scene has no objects");
 }
 

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,9 @@ class PHONGVK_API Scene {
   // An empty scene to build in code, rendered at width x height pixels (1..16384 each): the
   // default Camera (scene_parts.h), one white light at the camera, the scene file's defaults
   // for the rest, and no objects yet (add some with add or addMesh; rendering a scene without
-  // objects throws SceneError). SceneError for a size out of range.
+  // objects throws SceneError). A mesh added without a material gets Material{}, which has no
+  // fall-off, as a model file rendered alone (scene_parts.h): lit by the light at the camera, it
+  // is well exposed at any distance. SceneError for a size out of range.
   Scene(int width, int height);
 
   // The file it came from, as given ("" for a scene made from text without a name).
@@ -70,17 +73,18 @@ class PHONGVK_API Scene {
 
   // Adds `mesh` as an object of this scene (not of copies made before), with `material` (checked
   // like a scene file's: SceneError naming objects[N].material.KEY, ArgumentError for a value that
-  // is not finite), or the scene's material named `materialName` (a scene file's "materials";
-  // SceneError for a name it does not have). Throws ArgumentError naming the array ("vertices",
+  // is not finite; none: the scene's default material, the file's own for a scene from a file,
+  // Material{} for Scene(width, height)), or the scene's material named `materialName` (a scene
+  // file's "materials"; SceneError for a name it does not have). Throws ArgumentError naming the array ("vertices",
   // "faces", "normals") and its first bad row; the scene is unchanged then.
-  void addMesh(const MeshArrays& mesh, const Material& material = {}, bool closed = false);
+  void addMesh(const MeshArrays& mesh, const std::optional<Material>& material = std::nullopt, bool closed = false);
   void addMesh(const MeshArrays& mesh, const std::string& materialName, bool closed = false);
 
   // The same, placed by `pose` (local to world, scene_parts.h Matrix4: the mesh's vertices are in
   // its own coordinates), and a handle to move it (setPose) or take it out (remove). Throws as
   // addMesh, and ArgumentError naming "pose" for a matrix that is not an affine map.
-  ObjectId add(const MeshArrays& mesh, const Matrix4& pose = IDENTITY_POSE, const Material& material = {},
-               bool closed = false);
+  ObjectId add(const MeshArrays& mesh, const Matrix4& pose = IDENTITY_POSE,
+               const std::optional<Material>& material = std::nullopt, bool closed = false);
   ObjectId add(const MeshArrays& mesh, const Matrix4& pose, const std::string& materialName, bool closed = false);
   // Moves an object added with add; RangeError for a handle this scene does not hold.
   void setPose(ObjectId object, const Matrix4& pose);

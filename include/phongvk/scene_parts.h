@@ -67,13 +67,15 @@ struct Light {
 // A material (docs/DESIGN.md "Phong, per vertex"), as a scene file's material object: the ambient,
 // diffuse and specular coefficients, the specular exponent n (the shininess), the attenuation
 // a, b, c of the fall-off 1 / (a + b d + c d^2) and the colour (RGB >= 0). The defaults are the
-// scene file's (the paper's).
+// scene file's (the paper's) but the attenuation: [1, 0, 0], no fall-off, as a model file rendered
+// alone has, so that a scene built in code is well exposed at any distance without tuning (a scene
+// file's default is [1, 0.2, 0.2]; docs/DECISIONS.md, "Defaults of a scene built in code").
 struct Material {
   double ka = 0.15;
   double kd = 1.0;
   double ks = 0.8;
   double n = 10;
-  Vec3 attenuation = {1, 0.2, 0.2};
+  Vec3 attenuation = {1, 0, 0};
   Vec3 color = {0.8, 0.8, 0.8};
   bool operator==(const Material&) const = default;
 };

@@ -245,6 +245,11 @@ def written_scene(tmp_path, material=None, **more):
                                    base_dir=str(tmp_path))
 
 
+# Material() and the material a mesh added without one gets in Scene(width, height): the file's
+# default without fall-off, as a model file rendered alone has.
+NO_FALL_OFF = {"attenuation": [1, 0, 0]}
+
+
 def built_scene(material=None):
     scene = phongvk.Scene(96, 64)
     scene.add(*octahedron(), material=material)
@@ -258,7 +263,7 @@ MATERIAL_FIELDS = [{"ka": 0.6}, {"kd": 0.3}, {"ks": 0.1}, {"n": 40}, {"attenuati
 
 @pytest.mark.parametrize("fields", MATERIAL_FIELDS)
 def test_every_material_field_renders_as_the_file_says_it(tmp_path, fields):
-    expected = both(written_scene(tmp_path, fields))
+    expected = both(written_scene(tmp_path, dict(NO_FALL_OFF, **fields)))
     assert np.array_equal(both(built_scene(phongvk.Material(**fields))), expected)
     assert np.array_equal(both(built_scene(fields)), expected)  # a dict of the fields, as before
     material = phongvk.Material()
@@ -276,7 +281,7 @@ RENDER_FIELDS = [({"shading": "flat"}, {}), ({"shading": "phong"}, {}), ({"specu
 
 @pytest.mark.parametrize("render, top", RENDER_FIELDS)
 def test_every_render_setting_renders_as_the_file_says_it(tmp_path, render, top):
-    file = written_scene(tmp_path, render=render, **top)
+    file = written_scene(tmp_path, NO_FALL_OFF, render=render, **top)
     expected = both(file)
     settings = phongvk.RenderSettings(**render, **top)
     assert file.render_settings == settings
@@ -289,12 +294,23 @@ def test_every_render_setting_renders_as_the_file_says_it(tmp_path, render, top)
     assert np.array_equal(both(scene), expected)
 
 
+def test_a_scene_built_in_code_is_well_exposed_by_default():
+    # The light at the camera, 5.4 m from the grey mesh: with the file's fall-off [1, 0.2, 0.2] the
+    # brightest pixel is 55 of 255; without it, as a model file alone, 196.
+    scene = built_scene()
+    scene.camera = phongvk.Camera(position=[0, -5, 2], look_at=[0, 0, 0], width=96, height=64)
+    assert phongvk.Renderer("cpu").render(scene).max() > 180
+    dim = built_scene(phongvk.Material(attenuation=(1, 0.2, 0.2)))
+    dim.camera = scene.camera
+    assert phongvk.Renderer("cpu").render(dim).max() < 100
+
+
 def test_the_ambient_light_renders_as_the_file_says_it(tmp_path):
     scene = built_scene(phongvk.Material(ka=0.8))
     assert tuple(scene.ambient) == (1, 1, 1)
     scene.ambient = (0.5, 0.25, 0)
     assert tuple(scene.ambient) == (0.5, 0.25, 0)
-    assert np.array_equal(both(scene), both(written_scene(tmp_path, {"ka": 0.8}, ambient=[0.5, 0.25, 0])))
+    assert np.array_equal(both(scene), both(written_scene(tmp_path, dict(NO_FALL_OFF, ka=0.8), ambient=[0.5, 0.25, 0])))
     with pytest.raises(phongvk.SceneError, match=r"^ambient\[1\]: must be >= 0, got -1$"):
         scene.ambient = (1, -1, 0)
 
@@ -302,15 +318,17 @@ def test_the_ambient_light_renders_as_the_file_says_it(tmp_path):
 def test_defaults_are_the_files_defaults(tmp_path):
     material = phongvk.Material()
     assert (material.ka, material.kd, material.ks, material.n) == (0.15, 1.0, 0.8, 10.0)
-    assert tuple(material.attenuation) == (1, 0.2, 0.2) and tuple(material.color) == (0.8, 0.8, 0.8)
+    assert tuple(material.attenuation) == (1, 0, 0) and tuple(material.color) == (0.8, 0.8, 0.8)
     assert written_scene(tmp_path).render_settings == phongvk.RenderSettings()
     settings = phongvk.RenderSettings()
     assert (settings.shading, settings.specular, settings.interpolation, settings.samples) == \
         ("gouraud", "phong", "perspective", 1)
     assert tuple(settings.background) == (0, 0, 0)
-    expected = both(written_scene(tmp_path))
-    assert np.array_equal(both(built_scene()), expected)
+    expected = both(written_scene(tmp_path, NO_FALL_OFF))
     assert np.array_equal(both(built_scene(phongvk.Material())), expected)
+    assert np.array_equal(both(built_scene()), expected)
+    file_default = phongvk.Material(attenuation=(1, 0.2, 0.2))
+    assert np.array_equal(both(built_scene(file_default)), both(written_scene(tmp_path)))
     empty = phongvk.Scene(96, 64)
     assert (empty.width, empty.height, empty.object_count) == (96, 64, 0)
     assert [light.at_camera for light in empty.lights] == [True]
@@ -364,7 +382,7 @@ def test_bad_materials_and_settings_are_clear_errors(call, error, message):
 
 def test_materials_and_settings_say_what_they_are():
     assert repr(phongvk.Material(ks=0.2)) == ("phongvk.Material(ka=0.15, kd=1.0, ks=0.2, n=10.0, "
-                                              "attenuation=(1.0, 0.2, 0.2), color=(0.8, 0.8, 0.8))")
+                                              "attenuation=(1.0, 0.0, 0.0), color=(0.8, 0.8, 0.8))")
     assert repr(phongvk.RenderSettings(shading="phong", samples=4)) == (
         "phongvk.RenderSettings(shading='phong', specular='phong', interpolation='perspective', samples=4, "
         "background=(0.0, 0.0, 0.0))")
