@@ -39,6 +39,9 @@ struct RenderOptions : ViewOptions {
   std::string backend = "gpu";  // gpu (compute) | cpu (reference) | graphics (graphics pipeline; also "raster")
   int repeat = 0;               // > 0: time this many frames after a warm-up
   bool mpi = false;             // --mpi: this process renders its share of the scene (render_mpi.cpp)
+  bool rgba = false;            // --rgba: -o is RGBA, alpha from coverage (render_outputs.h)
+  std::string depth;            // --depth FILE (.png or .npy; "": none)
+  std::string ids;              // --ids FILE: object ids (.png or .npy; "": none)
 };
 
 struct DiffOptions : ViewOptions {

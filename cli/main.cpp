@@ -103,6 +103,15 @@ int main(int argc, char** argv) {
   renderCmd->add_flag("--mpi", render.mpi,
                       "Under mpirun: each process renders a share of the triangles, the keys are composited by "
                       "MPI_Allreduce (MPI_MIN) and rank 0 writes the PNG");
+  renderCmd->add_flag("--rgba", render.rgba,
+                      "Write -o as RGBA: alpha 255 where triangles cover every sample of the pixel, 0 where none");
+  renderCmd->add_option("--depth", render.depth,
+                        "Also write the depth along the camera axis: FILE.png, 16-bit grey in millimetres (rounded, "
+                        "0 where empty, at most 65535: the TUM/NYU RGB-D datasets' convention), or FILE.npy, float32 "
+                        "metres, +inf where empty");
+  renderCmd->add_option("--ids", render.ids,
+                        "Also write each pixel's object: FILE.png, 16-bit grey, object index + 1 (0 where empty; at "
+                        "most 65534 objects), or FILE.npy, int32 index, -1 where empty");
 
   DiffOptions diff;
   CLI::App* diffCmd = app.add_subcommand("diff", "Render with both backends and compare pixel by pixel");

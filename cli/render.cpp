@@ -1,5 +1,6 @@
 // render.cpp — `phongvk render`: one still on the chosen backend, optionally timed (--repeat).
 #include "cli/cli_support.h"
+#include "cli/render_outputs.h"
 #include "tools/statistics.h"
 
 #include <algorithm>
@@ -56,21 +57,24 @@ std::string startupText(const RendererStats& stats, Backend backend) {
 }  // namespace
 
 int runRender(const RenderOptions& options) {
-  if (options.mpi) return runRenderMpi(options);
+  if (options.mpi) return guarded([&] { return outputsAsked(options), runRenderMpi(options); });
   return guarded([&] {
+    const Outputs outputs = outputsAsked(options);
     checkWritable(options.output);
     FILE* out = options.output == "-" ? stderr : stdout;  // standard output carries the PNG then
     const auto start = Clock::now();
     const Scene scene = loadEveryFrameValidated(options);
+    checkOutputFiles(options, scene);
     const double loadMs = msSince(start);
     const auto renderStart = Clock::now();
     Renderer renderer(rendererOptions(options, options.backend));
     if (options.repeat > 0) printRepeatTiming(renderer.timeFrames(scene, options.repeat), renderer.backend(), out);
-    const Image image = renderer.render(scene);
+    const RenderedFrame frame = renderer.renderOutputs(scene, outputs);
+    const Image& image = frame.image;
     const RendererStats stats = renderer.stats();
     // Building the meshes counts as loading the scene, as the summary has always said.
     const double renderMs = msSince(renderStart) - stats.buildMs;
-    writePng(options.output, image, options.pngLevel);
+    writeRenderedFiles(options, frame);
     std::fprintf(out, "rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms%s"
                 " -> %s\n",
                 options.scene.c_str(), image.width, image.height, scene.objectCount(), stats.triangles,

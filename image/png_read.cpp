@@ -1,4 +1,4 @@
-// png_read.cpp — PNG files read back as 8-bit RGB (stb_image), for diffs, tests and tools.
+// png_read.cpp — PNG files read back as 8-bit RGB or RGBA or 16-bit grey (stb_image), for diffs, tests and tools.
 #include "phongvk/image.h"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -14,13 +14,41 @@
 
 namespace phongvk {
 
-Image readPng(const std::string& path) {
-  int w = 0, h = 0, channels = 0;
-  uint8_t* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
+namespace {
+
+// The file's pixels with `channels` samples each (stb_image converts), as T: uint8_t or uint16_t.
+template <typename T>
+std::vector<T> loadPixels(const std::string& path, int channels, int& width, int& height) {
+  int fileChannels = 0;
+  T* data = nullptr;
+  if constexpr (sizeof(T) == 1) {
+    data = stbi_load(path.c_str(), &width, &height, &fileChannels, channels);
+  } else {
+    data = stbi_load_16(path.c_str(), &width, &height, &fileChannels, channels);
+  }
   if (!data) throw Error("cannot read PNG '" + path + "': " + stbi_failure_reason());
-  Image image(w, h);
-  std::memcpy(image.rgb.data(), data, image.rgb.size());
+  std::vector<T> pixels(data, data + size_t(width) * size_t(height) * size_t(channels));
   stbi_image_free(data);
+  return pixels;
+}
+
+}  // namespace
+
+Image readPng(const std::string& path) {
+  Image image;
+  image.rgb = loadPixels<uint8_t>(path, 3, image.width, image.height);
+  return image;
+}
+
+ImageRGBA readPngRGBA(const std::string& path) {
+  ImageRGBA image;
+  image.rgba = loadPixels<uint8_t>(path, 4, image.width, image.height);
+  return image;
+}
+
+ImageGrey16 readPngGrey16(const std::string& path) {
+  ImageGrey16 image;
+  image.grey = loadPixels<uint16_t>(path, 1, image.width, image.height);
   return image;
 }
 

@@ -1,7 +1,7 @@
-// png_write.cpp — PNG encoding (PngEncoder) and atomic PNG files. Every row is filtered "Sub" (each
-// byte minus the same channel of the pixel to its left), which turns a frame's flat background and
-// smooth shading into runs of zeros, then the whole image is deflated in one call: at level 1 by
-// the run-only coder (deflate_runs.h), at the others by libdeflate (docs/DECISIONS.md "PNG levels").
+// png_write.cpp — PNG encoding (PngEncoder: 8-bit RGB and RGBA, 16-bit grey) and atomic PNG files.
+// Every row is filtered "Sub" (each byte minus the same byte of the pixel to its left), which turns
+// a frame's flat background and smooth shading into runs of zeros, then the whole image is deflated
+// in one call: at level 1 by the run-only coder (deflate_runs.h), at the others by libdeflate (docs/DECISIONS.md "PNG levels").
 #include "base/huge_pages.h"
 #include "image/deflate_runs.h"
 #include "image/output_file.h"
@@ -38,43 +38,59 @@ void appendChunk(std::vector<uint8_t>& out, const char (&type)[5], const uint8_t
   appendU32(out, uint32_t(libdeflate_crc32(0, out.data() + typeAt, size + 4)));
 }
 
-// 8-bit RGB, no interlace.
-void appendHeader(std::vector<uint8_t>& out, const Image& image) {
+// What the encoder takes from each kind of image: its size, its pixels in PNG byte order and how
+// the header names them.
+struct PixelLayout {
+  int width = 0;
+  int height = 0;
+  size_t bytesPerPixel = 0;
+  uint8_t bitDepth = 8;
+  uint8_t colourType = 0;
+  const uint8_t* bytes = nullptr;
+};
+
+// No interlace.
+void appendHeader(std::vector<uint8_t>& out, const PixelLayout& pixels) {
   std::vector<uint8_t> header;
-  appendU32(header, uint32_t(image.width));
-  appendU32(header, uint32_t(image.height));
-  header.insert(header.end(), {8, 2, 0, 0, 0});  // bit depth, colour type RGB, deflate, adaptive filters, no interlace
+  appendU32(header, uint32_t(pixels.width));
+  appendU32(header, uint32_t(pixels.height));
+  // bit depth, colour type, deflate, adaptive filters, no interlace
+  header.insert(header.end(), {pixels.bitDepth, pixels.colourType, 0, 0, 0});
   appendChunk(out, "IHDR", header.data(), header.size());
 }
 
-// Each row as the PNG stream stores it: its filter type, then every byte minus the byte 3 before
-// (0 for the row's first pixel).
-void filterRows(const Image& image, std::vector<uint8_t>& filtered) {
-  const size_t rowBytes = size_t(image.width) * 3;
-  const size_t bytes = (rowBytes + 1) * size_t(image.height);
+// Each row as the PNG stream stores it: its filter type, then every byte minus the byte one pixel
+// before (0 for the row's first pixel).
+void filterRows(const PixelLayout& pixels, std::vector<uint8_t>& filtered) {
+  const size_t step = pixels.bytesPerPixel;
+  const size_t rowBytes = size_t(pixels.width) * step;
+  const size_t bytes = (rowBytes + 1) * size_t(pixels.height);
   reserveLarge(filtered, bytes);  // fresh storage on huge pages
   filtered.resize(bytes);
-  for (size_t y = 0; y < size_t(image.height); ++y) {
-    const uint8_t* row = image.rgb.data() + y * rowBytes;
+  for (size_t y = 0; y < size_t(pixels.height); ++y) {
+    const uint8_t* row = pixels.bytes + y * rowBytes;
     uint8_t* out = filtered.data() + y * (rowBytes + 1);
     out[0] = FILTER_SUB;
-    for (size_t i = 0; i < rowBytes && i < 3; ++i) out[1 + i] = row[i];
-    for (size_t i = 3; i < rowBytes; ++i) out[1 + i] = uint8_t(row[i] - row[i - 3]);
+    for (size_t i = 0; i < rowBytes && i < step; ++i) out[1 + i] = row[i];
+    for (size_t i = step; i < rowBytes; ++i) out[1 + i] = uint8_t(row[i] - row[i - step]);
   }
 }
 
-void checkImage(const Image& image) {
-  if (image.width <= 0 || image.height <= 0 || image.rgb.size() != size_t(image.width) * image.height * 3) {
-    throw ArgumentError("cannot encode a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                                " image holding " + std::to_string(image.rgb.size()) + " bytes as PNG");
+void checkSize(int width, int height, size_t samples, size_t samplesPerPixel) {
+  if (width <= 0 || height <= 0 || samples != size_t(width) * size_t(height) * samplesPerPixel) {
+    throw ArgumentError("cannot encode a " + std::to_string(width) + "x" + std::to_string(height) + " image holding " +
+                        std::to_string(samples) + (samplesPerPixel == 1 ? " samples" : " bytes") + " as PNG");
   }
 }
 
 }  // namespace
 
+struct PngEncoder::Pixels : PixelLayout {};  // the layout, named where the header can declare it
+
 struct PngEncoder::State {
   libdeflate_compressor* compressor = nullptr;  // levels other than PNG_LEVEL_RUNS
   RunDeflater runs;
+  std::vector<uint8_t> bigEndian;  // a 16-bit image's samples as PNG stores them
   std::vector<uint8_t> filtered;
   std::vector<uint8_t> deflated;
   std::vector<uint8_t> png;
@@ -105,13 +121,33 @@ PngEncoder& PngEncoder::operator=(PngEncoder&& other) noexcept {
 }
 
 const std::vector<uint8_t>& PngEncoder::encode(const Image& image) {
-  checkImage(image);
+  checkSize(image.width, image.height, image.rgb.size(), 3);
+  return encodePixels(Pixels{{image.width, image.height, 3, 8, 2, image.rgb.data()}});
+}
+
+const std::vector<uint8_t>& PngEncoder::encode(const ImageRGBA& image) {
+  checkSize(image.width, image.height, image.rgba.size(), 4);
+  return encodePixels(Pixels{{image.width, image.height, 4, 8, 6, image.rgba.data()}});
+}
+
+const std::vector<uint8_t>& PngEncoder::encode(const ImageGrey16& image) {
+  checkSize(image.width, image.height, image.grey.size(), 1);
+  std::vector<uint8_t>& bytes = state_->bigEndian;
+  bytes.resize(image.grey.size() * 2);
+  for (size_t i = 0; i < image.grey.size(); ++i) {
+    bytes[2 * i] = uint8_t(image.grey[i] >> 8);
+    bytes[2 * i + 1] = uint8_t(image.grey[i]);
+  }
+  return encodePixels(Pixels{{image.width, image.height, 2, 16, 0, bytes.data()}});
+}
+
+const std::vector<uint8_t>& PngEncoder::encodePixels(const Pixels& pixels) {
   State& s = *state_;
-  filterRows(image, s.filtered);
+  filterRows(pixels, s.filtered);
   size_t deflatedBytes = 0;
   if (s.compressor == nullptr) {
     s.deflated.clear();
-    s.runs.deflate(s.filtered.data(), s.filtered.size(), size_t(image.width) * 3 + 1, s.deflated);
+    s.runs.deflate(s.filtered.data(), s.filtered.size(), size_t(pixels.width) * pixels.bytesPerPixel + 1, s.deflated);
     deflatedBytes = s.deflated.size();
   } else {
     s.deflated.resize(libdeflate_zlib_compress_bound(s.compressor, s.filtered.size()));
@@ -120,7 +156,7 @@ const std::vector<uint8_t>& PngEncoder::encode(const Image& image) {
     if (deflatedBytes == 0) throw Error("PNG encoding failed: deflate output exceeded its bound");
   }
   s.png.assign(std::begin(PNG_SIGNATURE), std::end(PNG_SIGNATURE));
-  appendHeader(s.png, image);
+  appendHeader(s.png, pixels);
   for (size_t at = 0; at < deflatedBytes; at += MAX_CHUNK_BYTES) {
     appendChunk(s.png, "IDAT", s.deflated.data() + at, std::min(MAX_CHUNK_BYTES, deflatedBytes - at));
   }
@@ -128,7 +164,8 @@ const std::vector<uint8_t>& PngEncoder::encode(const Image& image) {
   return s.png;
 }
 
-void PngEncoder::write(const std::string& path, const Image& image) {
+template <typename AnyImage>
+void PngEncoder::writeImage(const std::string& path, const AnyImage& image) {
   const std::vector<uint8_t>* png = nullptr;
   try {
     png = &encode(image);
@@ -138,9 +175,17 @@ void PngEncoder::write(const std::string& path, const Image& image) {
   writeOutputFile(path, *png);
 }
 
+void PngEncoder::write(const std::string& path, const Image& image) { writeImage(path, image); }
+void PngEncoder::write(const std::string& path, const ImageRGBA& image) { writeImage(path, image); }
+void PngEncoder::write(const std::string& path, const ImageGrey16& image) { writeImage(path, image); }
+
 std::vector<uint8_t> encodePng(const Image& image, int level) { return PngEncoder(level).encode(image); }
 
 void writePng(const std::string& path, const Image& image, int level) { PngEncoder(level).write(path, image); }
+std::vector<uint8_t> encodePng(const ImageRGBA& image, int level) { return PngEncoder(level).encode(image); }
+void writePng(const std::string& path, const ImageRGBA& image, int level) { PngEncoder(level).write(path, image); }
+std::vector<uint8_t> encodePng(const ImageGrey16& image, int level) { return PngEncoder(level).encode(image); }
+void writePng(const std::string& path, const ImageGrey16& image, int level) { PngEncoder(level).write(path, image); }
 
 void checkWritable(const std::string& path) { checkOutputPath(path); }
 

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace py = pybind11;
@@ -37,28 +38,43 @@ py::array_t<uint8_t> imageArray(Image&& image) {
   return ownedArray(std::move(image.rgb), {h, w, 3});
 }
 
-// An (H, W, 3) uint8 array as an Image (a copy).
-Image imageFromArray(const py::array& array) {
-  if (array.ndim() != 3 || array.shape(2) != 3 || !py::isinstance<py::array_t<uint8_t>>(array)) {
-    throw py::value_error("image: expected a uint8 array of shape (height, width, 3), got " +
-                          std::string(py::str(array.dtype())) + " of shape " +
-                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
-                              array.shape(), array.shape() + array.ndim()))))));
-  }
-  if (array.shape(0) == 0 || array.shape(1) == 0) {
-    throw py::value_error("image: expected a non-empty uint8 array of shape (height, width, 3), got shape " +
-                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(array.shape(), array.shape() + 3))))));
-  }
-  const auto contiguous = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>::ensure(array);
-  Image image(int(array.shape(1)), int(array.shape(0)));
-  std::memcpy(image.rgb.data(), contiguous.data(), image.rgb.size());
-  return image;
-}
-
 std::string shapeText(const py::array& a) {
   std::string text = "(";
   for (py::ssize_t i = 0; i < a.ndim(); ++i) text += (i ? ", " : "") + std::to_string(a.shape(i));
   return text + (a.ndim() == 1 ? ",)" : ")");
+}
+
+// What the PNG coder takes from Python: an (H, W, 3) or (H, W, 4) uint8 array (RGB, RGBA) or an
+// (H, W) uint16 array (16-bit grey), copied.
+using PngImage = std::variant<Image, ImageRGBA, ImageGrey16>;
+
+constexpr const char* PNG_ARRAYS = "a uint8 array of shape (height, width, 3) or (height, width, 4), or a uint16 array "
+                                   "of shape (height, width)";
+
+template <typename T>
+std::vector<T> samplesOf(const py::array& array) {
+  const auto contiguous = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(array);
+  return std::vector<T>(contiguous.data(), contiguous.data() + contiguous.size());
+}
+
+PngImage pngImageFromArray(const py::array& array) {
+  const std::string shape = shapeText(array);
+  const bool bytes = py::isinstance<py::array_t<uint8_t>>(array), words = py::isinstance<py::array_t<uint16_t>>(array);
+  const py::ssize_t channels = array.ndim() == 3 ? array.shape(2) : 0;
+  const bool colour = bytes && (channels == 3 || channels == 4), grey = words && array.ndim() == 2;
+  if (!colour && !grey) {
+    throw py::value_error(std::string("image: expected ") + PNG_ARRAYS + ", got " + std::string(py::str(array.dtype())) +
+                          " of shape " + shape);
+  }
+  if (array.shape(0) == 0 || array.shape(1) == 0) {
+    throw py::value_error(std::string("image: expected a non-empty array, got shape ") + shape);
+  }
+  const int w = int(array.shape(1)), h = int(array.shape(0));
+  if (grey) return ImageGrey16{w, h, samplesOf<uint16_t>(array)};
+  if (channels == 4) return ImageRGBA{w, h, samplesOf<uint8_t>(array)};
+  Image image(w, h);
+  image.rgb = samplesOf<uint8_t>(array);
+  return image;
 }
 
 // `name` as an (N, 3) array of `kind` ('f': floating point, 'i': integer), flattened row-major.
@@ -679,25 +695,27 @@ by key: the numbers `phongvk diff` prints, as a dict (width, height, pixels, dif
 mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as "report".)");
 
   m.def("write_png", [](const std::string& path, const py::array& image, int level) {
-    const Image pixels = imageFromArray(image);
+    const PngImage pixels = pngImageFromArray(image);
     const py::gil_scoped_release release;
-    writePng(path, pixels, level);
+    std::visit([&](const auto& any) { writePng(path, any, level); }, pixels);
   }, py::arg("path"), py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
-        "Writes a (height, width, 3) uint8 array as a PNG, atomically (no partial file). level: deflate level, "
-        "0 (stored) to 12 (smallest); the same pixels at every level. Raises OutputError, or ValueError for a "
-        "level out of range.");
+        "Writes an image array as a PNG, atomically (no partial file): (height, width, 3) uint8 as RGB, "
+        "(height, width, 4) uint8 as RGBA, (height, width) uint16 as 16-bit grey (a depth in millimetres, ids). "
+        "level: deflate level, 0 (stored) to 12 (smallest); the same pixels at every level. Raises OutputError, "
+        "or ValueError for another array or a level out of range.");
   m.def("read_png", [](const std::string& path) { return imageArray(readPng(path)); }, py::arg("path"),
         "Reads a PNG as a (height, width, 3) uint8 array.");
   m.def("encode_png", [](const py::array& image, int level) {
-    const Image pixels = imageFromArray(image);
+    const PngImage pixels = pngImageFromArray(image);
     std::vector<uint8_t> png;
     {
       const py::gil_scoped_release release;
-      png = encodePng(pixels, level);
+      png = std::visit([&](const auto& any) { return encodePng(any, level); }, pixels);
     }
     return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
   }, py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
-        "A (height, width, 3) uint8 array as PNG bytes, deflated at `level` (0 to 12).");
+        "An image array as PNG bytes, deflated at `level` (0 to 12): (height, width, 3) uint8 as RGB, "
+        "(height, width, 4) uint8 as RGBA, (height, width) uint16 as 16-bit grey.");
   m.attr("PNG_LEVEL_DEFAULT") = PNG_LEVEL_DEFAULT;
   m.def("devices", [] {
     py::list list;

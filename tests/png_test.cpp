@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <random>
 #include <set>
 
@@ -82,34 +83,55 @@ std::vector<Chunk> chunks(const std::vector<uint8_t>& png) {
   return out;
 }
 
-// The image's pixels from its IDAT stream, inflated by libdeflate (which rejects any stream that
-// breaks RFC 1950/1951) and unfiltered ("Sub" on every row).
-Image inflated(const std::vector<uint8_t>& png) {
+// A PNG's header fields after the size (bit depth, colour type, compression, filter, interlace)
+// and its pixel bytes as the file stores them, from its IDAT stream inflated by libdeflate (which
+// rejects any stream that breaks RFC 1950/1951) and unfiltered ("Sub" on every row).
+struct Decoded {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> header;
+  std::vector<uint8_t> bytes;
+};
+
+Decoded inflatedBytes(const std::vector<uint8_t>& png) {
+  Decoded out;
   std::vector<uint8_t> stream;
-  int width = 0, height = 0;
   for (const Chunk& chunk : chunks(png)) {
     if (chunk.type == "IHDR") {
-      width = int(bigEndian(&chunk.data[0]));
-      height = int(bigEndian(&chunk.data[4]));
-      EXPECT_EQ(std::vector<uint8_t>(chunk.data.begin() + 8, chunk.data.end()), (std::vector<uint8_t>{8, 2, 0, 0, 0}));
+      out.width = int(bigEndian(&chunk.data[0]));
+      out.height = int(bigEndian(&chunk.data[4]));
+      out.header.assign(chunk.data.begin() + 8, chunk.data.end());
     }
     if (chunk.type == "IDAT") stream.insert(stream.end(), chunk.data.begin(), chunk.data.end());
   }
-  const size_t rowBytes = size_t(width) * 3;
-  std::vector<uint8_t> filtered((rowBytes + 1) * size_t(height));
+  const std::map<std::vector<uint8_t>, size_t> bytesPerPixel = {{{8, 2, 0, 0, 0}, 3}, {{8, 6, 0, 0, 0}, 4}, {{16, 0, 0, 0, 0}, 2}};
+  EXPECT_EQ(bytesPerPixel.count(out.header), 1u) << "not a header phongvk writes";
+  const size_t step = bytesPerPixel.count(out.header) ? bytesPerPixel.at(out.header) : 3;
+  const size_t rowBytes = size_t(out.width) * step;
+  std::vector<uint8_t> filtered((rowBytes + 1) * size_t(out.height));
   libdeflate_decompressor* inflater = libdeflate_alloc_decompressor();
   size_t got = 0;
   const auto result = libdeflate_zlib_decompress(inflater, stream.data(), stream.size(), filtered.data(), filtered.size(), &got);
   libdeflate_free_decompressor(inflater);
   EXPECT_EQ(result, LIBDEFLATE_SUCCESS);
   EXPECT_EQ(got, filtered.size());
-  Image image(width, height);
-  for (size_t y = 0; y < size_t(height); ++y) {
+  out.bytes.resize(rowBytes * size_t(out.height));
+  for (size_t y = 0; y < size_t(out.height); ++y) {
     const uint8_t* row = &filtered[y * (rowBytes + 1)];
     EXPECT_EQ(row[0], 1) << "row " << y << " is not filtered Sub";
-    uint8_t* out = image.rgb.data() + y * rowBytes;
-    for (size_t i = 0; i < rowBytes; ++i) out[i] = uint8_t(row[1 + i] + (i >= 3 ? out[i - 3] : 0));
+    uint8_t* pixels = out.bytes.data() + y * rowBytes;
+    for (size_t i = 0; i < rowBytes; ++i) pixels[i] = uint8_t(row[1 + i] + (i >= step ? pixels[i - step] : 0));
   }
+  return out;
+}
+
+Image inflated(const std::vector<uint8_t>& png) {
+  Decoded decoded = inflatedBytes(png);
+  EXPECT_EQ(decoded.header, (std::vector<uint8_t>{8, 2, 0, 0, 0}));
+  Image image;
+  image.width = decoded.width;
+  image.height = decoded.height;
+  image.rgb = std::move(decoded.bytes);
   return image;
 }
 
@@ -174,6 +196,76 @@ TEST(Png, BadLevelAndMismatchedImageAreRejected) {
   const std::string dir = makeTempDir();
   EXPECT_EQ(thrownMessage<OutputError>([&] { writePng(dir + "/x.png", broken); }),
             "cannot write '" + dir + "/x.png': cannot encode a 4x4 image holding 47 bytes as PNG");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+}
+
+// An RGBA image: the RGB image's colours, and alpha 0 and 255 in blocks with a ramp between.
+ImageRGBA withAlpha(const Image& rgb) {
+  ImageRGBA image{rgb.width, rgb.height, std::vector<uint8_t>(size_t(rgb.width) * rgb.height * 4)};
+  for (size_t i = 0; i < size_t(rgb.width) * rgb.height; ++i) {
+    std::copy_n(&rgb.rgb[i * 3], 3, &image.rgba[i * 4]);
+    const size_t x = i % size_t(rgb.width);
+    image.rgba[i * 4 + 3] = x < 10 ? 0 : x < 20 ? uint8_t(x * 12) : 255;
+  }
+  return image;
+}
+
+// 16-bit samples whose high and low bytes both change: a depth ramp in millimetres, a flat run of
+// empty pixels (0), the largest value and noise.
+ImageGrey16 grey16(int w, int h, uint32_t seed) {
+  std::mt19937 random(seed);
+  ImageGrey16 image{w, h, std::vector<uint16_t>(size_t(w) * h)};
+  for (size_t i = 0; i < image.grey.size(); ++i) {
+    const size_t x = i % size_t(w);
+    image.grey[i] = x < 5 ? 0 : x == 5 ? 65535 : x < size_t(w) / 2 ? uint16_t(700 + 37 * x) : uint16_t(random());
+  }
+  return image;
+}
+
+std::vector<uint8_t> bigEndianBytes(const ImageGrey16& image) {
+  std::vector<uint8_t> bytes;
+  for (uint16_t v : image.grey) bytes.insert(bytes.end(), {uint8_t(v >> 8), uint8_t(v)});
+  return bytes;
+}
+
+TEST(Png, RgbaAndGrey16DecodeToTheSamePixelsAtEveryLevelByTwoDecoders) {
+  const std::string dir = makeTempDir(), path = dir + "/out.png";
+  for (const ImageRGBA& image : {withAlpha(noise(1, 1, 4)), withAlpha(shaded(331, 257)), withAlpha(noise(97, 61, 5))}) {
+    for (int level = PNG_LEVEL_MIN; level <= PNG_LEVEL_MAX; ++level) {
+      const Decoded decoded = inflatedBytes(encodePng(image, level));
+      EXPECT_EQ(decoded.header, (std::vector<uint8_t>{8, 6, 0, 0, 0}));  // 8 bits, colour type 6
+      EXPECT_EQ(decoded.width, image.width);
+      EXPECT_TRUE(decoded.bytes == image.rgba) << "RGBA at level " << level;
+      writePng(path, image, level);
+      EXPECT_TRUE(readPngRGBA(path).rgba == image.rgba) << "RGBA at level " << level << " (stb_image)";
+    }
+  }
+  for (const ImageGrey16& image : {grey16(1, 1, 6), grey16(300, 7, 7), grey16(11000, 2, 8)}) {
+    for (int level = PNG_LEVEL_MIN; level <= PNG_LEVEL_MAX; ++level) {
+      const Decoded decoded = inflatedBytes(encodePng(image, level));
+      EXPECT_EQ(decoded.header, (std::vector<uint8_t>{16, 0, 0, 0, 0}));  // 16 bits, grey
+      EXPECT_EQ(decoded.height, image.height);
+      EXPECT_TRUE(decoded.bytes == bigEndianBytes(image)) << "grey16 at level " << level;
+      writePng(path, image, level);
+      const ImageGrey16 read = readPngGrey16(path);
+      EXPECT_EQ(read.width, image.width);
+      EXPECT_TRUE(read.grey == image.grey) << "grey16 at level " << level << " (stb_image)";
+    }
+  }
+}
+
+TEST(Png, AnRgbFileReadAsRgbaIsOpaqueAndMismatchedImagesAreRejected) {
+  const std::string dir = makeTempDir();
+  const Image rgb = shaded(40, 30);
+  writePng(dir + "/rgb.png", rgb);
+  const ImageRGBA rgba = readPngRGBA(dir + "/rgb.png");
+  ASSERT_EQ(rgba.rgba.size(), rgb.rgb.size() / 3 * 4);
+  EXPECT_EQ(rgba.rgba[3], 255);
+  EXPECT_EQ(rgba.rgba[4], rgb.rgb[3]);
+  EXPECT_EQ(thrownMessage<ArgumentError>([] { encodePng(ImageRGBA{2, 2, std::vector<uint8_t>(12)}); }),
+            "cannot encode a 2x2 image holding 12 bytes as PNG");
+  EXPECT_EQ(thrownMessage<OutputError>([&] { writePng(dir + "/x.png", ImageGrey16{2, 3, std::vector<uint16_t>(5)}); }),
+            "cannot write '" + dir + "/x.png': cannot encode a 2x3 image holding 5 samples as PNG");
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
 }
 

@@ -95,3 +95,35 @@ def test_bad_outputs_are_clear_errors():
         phongvk.Renderer("graphics").render(scene, 32, 24, outputs=["depth"])
     color = phongvk.Renderer("graphics").render(scene, 32, 24, outputs="color")["color"]
     assert color.shape == (24, 32, 3) and isinstance(color, phongvk.Image)
+
+
+def test_rgba_and_16_bit_depth_pngs_read_back_by_pil(tmp_path):
+    from PIL import Image as PilImage  # zlib's inflate and PIL's PNG reader, decoders of their own
+
+    scene = phongvk.load_scene(scene_path("scenes/basic.json"))
+    frame = phongvk.Renderer("cpu").render(scene, 96, 64, outputs=["rgba", "depth"])
+    depth_mm = np.where(np.isfinite(frame["depth"]), np.round(frame["depth"] * 1000), 0).astype(np.uint16)
+    for level in (0, 1, 6, 12):
+        phongvk.write_png(str(tmp_path / "rgba.png"), frame["rgba"], level)
+        phongvk.write_png(str(tmp_path / "depth.png"), depth_mm, level)
+        with PilImage.open(tmp_path / "rgba.png") as rgba, PilImage.open(tmp_path / "depth.png") as depth:
+            assert rgba.mode == "RGBA" and np.array_equal(np.asarray(rgba), frame["rgba"])
+            assert depth.mode.startswith("I") and np.array_equal(np.asarray(depth), depth_mm)
+        assert phongvk.encode_png(frame["rgba"], level) == (tmp_path / "rgba.png").read_bytes()
+        assert phongvk.encode_png(depth_mm, level) == (tmp_path / "depth.png").read_bytes()
+    assert 0 < (depth_mm == 0).sum() < depth_mm.size and depth_mm.max() > 255  # empty pixels, and a high byte
+    assert np.array_equal(phongvk.read_png(str(tmp_path / "rgba.png")), frame["rgba"][..., :3])
+
+
+@pytest.mark.parametrize("array", [np.zeros((4, 5, 2), np.uint8), np.zeros((4, 5), np.uint8),
+                                   np.zeros((4, 5, 4), np.uint16), np.zeros((4, 5), np.float32)])
+def test_write_png_names_the_arrays_it_takes(tmp_path, array):
+    message = (r"image: expected a uint8 array of shape \(height, width, 3\) or \(height, width, 4\), "
+               r"or a uint16 array of shape \(height, width\), got " + str(array.dtype))
+    with pytest.raises(ValueError, match=message):
+        phongvk.write_png(str(tmp_path / "x.png"), array)
+    with pytest.raises(ValueError, match=message):
+        phongvk.encode_png(array)
+    assert not (tmp_path / "x.png").exists()
+    with pytest.raises(ValueError, match=r"image: expected a non-empty array, got shape \(0, 5\)"):
+        phongvk.encode_png(np.zeros((0, 5), np.uint16))
