@@ -57,7 +57,14 @@ std::string startupText(const RendererStats& stats, Backend backend) {
 }  // namespace
 
 int runRender(const RenderOptions& options) {
-  if (options.mpi) return guarded([&] { return outputsAsked(options), runRenderMpi(options); });
+  if (options.mpi) {
+    // --rgba, --depth and --ids are refused before MPI starts (render_outputs.h outputsAsked).
+    const int refused = guarded([&] {
+      outputsAsked(options);
+      return int(EXIT_OK);
+    });
+    return refused != EXIT_OK ? refused : runRenderMpi(options);
+  }
   return guarded([&] {
     const Outputs outputs = outputsAsked(options);
     checkWritable(options.output);
