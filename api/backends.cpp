@@ -27,7 +27,7 @@ class CpuBackend : public RendererImpl {
   std::string deviceName() const override { return "cpu (reference)"; }
 
  protected:
-  void upload(const SceneData&) override {}
+  void upload(const SceneData&, bool) override {}
   RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys, Image) override {
     ++frames_;
     const auto start = Clock::now();
@@ -86,11 +86,11 @@ class GpuBackend : public VulkanBackend {
   Backend backend() const override { return Backend::Gpu; }
 
  protected:
-  void upload(const SceneData& data) override {
+  void upload(const SceneData& data, bool firstFrameClips) override {
     const ContextLock lock(context_);
     if (renderer_) {  // a new geometry: new scene buffers; the image's buffers and the pipelines stay
       try {
-        renderer_->replaceScene(data);
+        renderer_->replaceScene(data, firstFrameClips);
         return;
       } catch (...) {
         renderer_.reset();
@@ -100,6 +100,7 @@ class GpuBackend : public VulkanBackend {
     GpuRendererOptions options;
     options.exactFloats = exactFloats_;
     options.pipelines = pipelines_;
+    options.clipPolygons = firstFrameClips;
     renderer_.emplace(context_, data, options);
   }
   RenderOutput draw(const SceneData&, const FrameInputs& in, bool withKeys, Image storage) override {
@@ -137,7 +138,7 @@ class GraphicsBackend : public VulkanBackend {
   Backend backend() const override { return Backend::Graphics; }
 
  protected:
-  void upload(const SceneData& data) override {
+  void upload(const SceneData& data, bool) override {
     const ContextLock lock(context_);
     renderer_.reset();
     renderer_.emplace(context_, data);

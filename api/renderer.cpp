@@ -54,7 +54,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   checkBuiltSceneMemory(spec, data_->triangles.size(), samples);
   frame(spec);
   buildMs_ += msSince(start);
-  upload(*data_);
+  upload(*data_, boxMayClip(*data_, sampleView()));
   builtFrom_ = std::make_shared<const SceneSpec>(spec);
   ++sceneBuilds_;
 }
@@ -76,12 +76,15 @@ RenderedFrame Renderer::Impl::renderOutputs(const Scene& scene, const Outputs& o
   return outputsFromKeys(std::move(out), sampleGridSide(data_->samples), *data_, outputs);
 }
 
+View Renderer::Impl::sampleView() const {
+  return supersampled(makeView(camera_), sampleGridSide(data_->samples));
+}
+
 RenderOutput Renderer::Impl::renderHeld(const Scene& scene, bool withKeys, Image storage) {
   prepare(scene);
   const View view = makeView(camera_);
   const int side = sampleGridSide(data_->samples);
-  RenderOutput out = draw(*data_, makeFrame(*data_, supersampled(view, side)), withKeys,
-                          side == 1 ? std::move(storage) : Image());
+  RenderOutput out = draw(*data_, makeFrame(*data_, sampleView()), withKeys, side == 1 ? std::move(storage) : Image());
   if (side > 1) out.image = downscale(out.image, view.width, view.height);
   // A share's keys name its triangles as the whole scene does (Scene::share); ids stay below 2^32.
   // Only then: a whole scene's keys are not walked again.

@@ -32,7 +32,7 @@ class Renderer::Impl {
 
  protected:
   // New meshes (or new material or light counts): replace whatever was uploaded.
-  virtual void upload(const SceneData& data) = 0;
+  virtual void upload(const SceneData& data, bool firstFrameClips) = 0;  // FrameInputs::mayClip
   virtual RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys, Image storage) = 0;
   // Frames whose lighting the backend computed, and frames it rendered again (gpu).
   virtual uint64_t framesShaded() const = 0;
@@ -49,6 +49,8 @@ class Renderer::Impl {
   RenderOutput renderHeld(const Scene& scene, bool withKeys, Image storage);
   // Lights at the camera placed, the camera fitted, where the scene asks for it.
   void frame(const SceneSpec& spec);
+  // The view the frames are rendered in: the camera's, samples times larger on each side.
+  View sampleView() const;
 
   // Held by render and stats: a renderer used from several threads renders one frame at a time
   // (its device buffers and the scene it built are one frame's).

@@ -44,6 +44,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
   }
   colorsInKeys_ = options.output == ColorOutput::InKeySlots ||
                   (options.output == ColorOutput::Auto && hasSharedMemory(context_));
+  frameClips_ = options.clipPolygons;
   try {
     checkSceneFits(data);
     compileSceneModes(data);
@@ -77,9 +78,10 @@ void GpuRenderer::startRetries() {
   listChunk_ = options_.firstListChunk;
 }
 
-void GpuRenderer::replaceScene(const SceneData& data) {
+void GpuRenderer::replaceScene(const SceneData& data, bool clipPolygons) {
   checkSceneFits(data);  // before anything is released
   scene_ = {};  // the old meshes go before the new ones are allocated
+  frameClips_ = clipPolygons_ || clipPolygons;
   compileSceneModes(data);
   uploadScene(data);
   startRetries();

@@ -81,6 +81,9 @@ struct GpuRendererOptions {
   std::optional<bool> exactFloats;
   // Pipelines to compile into and take from (made on the same context); none: the renderer's own.
   std::shared_ptr<GpuPipelineSet> pipelines;
+  // Whether the first frame's clip pass clips (its FrameInputs::mayClip), so that the scene's
+  // pipelines are compiled with the clip pass that frame takes.
+  bool clipPolygons = false;
 };
 
 class GpuRenderer {
@@ -105,7 +108,7 @@ class GpuRenderer {
   // The next frame renders as a fresh renderer's first would: everything sent and shaded, the
   // workgroup cap and list chunks as the options set them. Throws as the constructor; after a
   // throw the renderer must not render again.
-  void replaceScene(const SceneData& data);
+  void replaceScene(const SceneData& data, bool clipPolygons = false);  // clipPolygons: as the options'
 
   // Frames rendered again so far (render), for tests and the benchmark.
   uint64_t framesRepeated() const { return framesRepeated_; }

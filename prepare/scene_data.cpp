@@ -85,17 +85,6 @@ bool nearOrOutsideClipVolume(const View& view, const glm::dvec3& p) {
            band - y > MARGIN * (band + y));
 }
 
-// Whether any corner of the scene's box is near or outside the clip volume (FrameInputs::mayClip).
-bool boxMayClip(const SceneData& data, const View& view) {
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::dvec3 p((corner & 1) ? data.boundsMax.x : data.boundsMin.x,
-                       (corner & 2) ? data.boundsMax.y : data.boundsMin.y,
-                       (corner & 4) ? data.boundsMax.z : data.boundsMin.z);
-    if (nearOrOutsideClipVolume(view, p)) return true;
-  }
-  return false;
-}
-
 glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
   glm::dvec3 sum(0.0);
   for (const glm::dvec3& o : origins) sum += o;
@@ -193,6 +182,16 @@ bool lightingIsViewIndependent(const FrameInputs& in) {
     if (m.ks != 0.0f) return false;
   }
   return true;
+}
+
+bool boxMayClip(const SceneData& data, const View& view) {
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? data.boundsMax.x : data.boundsMin.x,
+                       (corner & 2) ? data.boundsMax.y : data.boundsMin.y,
+                       (corner & 4) ? data.boundsMax.z : data.boundsMin.z);
+    if (nearOrOutsideClipVolume(view, p)) return true;
+  }
+  return false;
 }
 
 FrameInputs makeFrame(const SceneData& data, const View& view) {

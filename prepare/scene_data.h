@@ -69,4 +69,8 @@ bool lightingIsViewIndependent(const FrameInputs& in);
 // The frame for `view`: camera basis, image size, and offsets from the eye computed in double.
 FrameInputs makeFrame(const SceneData& data, const View& view);
 
+// FrameInputs::mayClip of a frame of `data` seen in `view`: whether a corner of the scene's box is
+// behind the near plane or past the guard band, or within a margin of them.
+bool boxMayClip(const SceneData& data, const View& view);
+
 }  // namespace phongvk
