@@ -1,6 +1,7 @@
 // outputs.cpp — see outputs.h.
 #include "api/outputs.h"
 
+#include "api/normals.h"
 #include "shaders/depth.h"
 
 #include <algorithm>
@@ -10,32 +11,40 @@
 namespace phongvk {
 
 bool needsKeys(const Outputs& outputs) {
-  return outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds;
+  return outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds || outputs.normals;
 }
 
-RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& data, const Outputs& outputs) {
+RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& data, const FrameInputs& in,
+                             const Outputs& outputs) {
   const int width = out.image.width, height = out.image.height, samples = side * side, sampleWidth = width * side;
   const size_t pixels = size_t(width) * size_t(height);
-  // Per pixel, the nearest of its samples (the smallest key) and how many of them a triangle covers.
+  // Per pixel, the nearest of its samples (the smallest key), where it lies, and how many of them a
+  // triangle covers.
   std::vector<uint64_t> keys(pixels, gpu::KEY_CLEAR);
+  std::vector<size_t> nearest(outputs.normals ? pixels : 0, NO_SAMPLE);
   std::vector<uint8_t> alpha(outputs.alpha ? pixels : 0);
   for (size_t i = 0; i < pixels; ++i) {
     const size_t x = i % size_t(width), y = i / size_t(width);
     int covered = 0;
     for (int j = 0; j < side; ++j) {
       for (int k = 0; k < side; ++k) {
-        const uint64_t key = out.keys[(y * side + j) * size_t(sampleWidth) + x * side + k];
+        const size_t sample = (y * side + j) * size_t(sampleWidth) + x * side + k;
+        const uint64_t key = out.keys[sample];
         covered += key != gpu::KEY_CLEAR;
-        keys[i] = std::min(keys[i], key);
+        if (key >= keys[i]) continue;  // the first of equal keys: ties go to the earlier sample
+        keys[i] = key;
+        if (outputs.normals) nearest[i] = sample;
       }
     }
     if (outputs.alpha) alpha[i] = uint8_t((255 * covered + samples / 2) / samples);  // rounded as the colours are
   }
+  std::vector<float> normals = outputs.normals ? normalsOfSamples(data, in, out.keys, nearest) : std::vector<float>();
   // The keys read as the visibility buffer reads them (image.h visibilityOf).
   RenderOutput perPixel{std::move(out.image), std::move(keys)};
   Visibility visibility = visibilityOf(perPixel);
   RenderedFrame frame{std::move(perPixel.image), std::move(alpha)};
   if (outputs.depth) frame.depth = std::move(visibility.depth);
+  frame.normals = std::move(normals);
   if (outputs.triangleIds) {
     frame.triangleIds.resize(pixels);  // NO_TRIANGLE reads as -1
     std::memcpy(frame.triangleIds.data(), visibility.triangle.data(), pixels * sizeof(int32_t));

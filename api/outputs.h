@@ -1,5 +1,5 @@
-// outputs.h — a frame's outputs besides its colours (alpha, depth, object and triangle ids), read
-// from its visibility keys: the same keys on both renderers make the same outputs.
+// outputs.h — a frame's outputs besides its colours (alpha, depth, object and triangle ids,
+// normals), read from its visibility keys: the same keys on both renderers make the same outputs.
 #pragma once
 
 #include "phongvk/phongvk.h"
@@ -10,9 +10,12 @@ namespace phongvk {
 // Whether any output asked for is read from the keys (all but the colour).
 bool needsKeys(const Outputs& outputs);
 
-// `out` rendered with keys at `side` x `side` samples per pixel (its image already filtered down),
-// as the outputs asked for: per pixel, the nearest sample (the smallest key) gives the depth and
-// ids, the covered samples the alpha (their share of 255, rounded as the colours are).
-RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& data, const Outputs& outputs);
+// `out` rendered with keys at `side` x `side` samples per pixel (its image already filtered down)
+// from the frame `in` (in the samples' view), as the outputs asked for: per pixel, the nearest
+// sample (the smallest key; of equal keys the first in row order) gives the depth, the ids and the
+// normal (normals.h, at that sample's position), the covered samples the alpha (their share of 255,
+// rounded as the colours are).
+RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& data, const FrameInputs& in,
+                             const Outputs& outputs);
 
 }  // namespace phongvk

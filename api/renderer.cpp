@@ -73,7 +73,7 @@ RenderedFrame Renderer::Impl::renderOutputs(const Scene& scene, const Outputs& o
   const bool keys = needsKeys(outputs);
   RenderOutput out = renderHeld(scene, keys, {});
   if (!keys) return {std::move(out.image)};
-  return outputsFromKeys(std::move(out), sampleGridSide(data_->samples), *data_, outputs);
+  return outputsFromKeys(std::move(out), sampleGridSide(data_->samples), *data_, makeFrame(*data_, sampleView()), outputs);
 }
 
 View Renderer::Impl::sampleView() const {
@@ -129,7 +129,7 @@ RenderOutput Renderer::renderWithKeys(const Scene& scene) {
 
 RenderedFrame Renderer::renderOutputs(const Scene& scene, const Outputs& outputs) {
   if (impl_->backend() == Backend::Graphics && needsKeys(outputs)) {
-    throw ArgumentError("the graphics backend has no visibility keys, so no alpha, depth or ids; use the gpu or cpu backend");
+    throw ArgumentError("the graphics backend has no visibility keys, so no alpha, depth, ids or normals; use the gpu or cpu backend");
   }
   return impl_->renderOutputs(scene, outputs);
 }

@@ -42,6 +42,7 @@ struct RenderOptions : ViewOptions {
   bool rgba = false;            // --rgba: -o is RGBA, alpha from coverage (render_outputs.h)
   std::string depth;            // --depth FILE (.png or .npy; "": none)
   std::string ids;              // --ids FILE: object ids (.png or .npy; "": none)
+  std::string normals;          // --normals FILE: camera-space normals (.png or .npy; "": none)
 };
 
 struct DiffOptions : ViewOptions {

@@ -112,6 +112,10 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--ids", render.ids,
                         "Also write each pixel's object: FILE.png, 16-bit grey, object index + 1 (0 where empty; at "
                         "most 65534 objects), or FILE.npy, int32 index, -1 where empty");
+  renderCmd->add_option("--normals", render.normals,
+                        "Also write each pixel's shading normal in camera space (x right, y up, z forward): "
+                        "FILE.png, 8-bit RGB normal map, (n + 1) / 2 * 255 rounded (0, 0, 0 where empty), or "
+                        "FILE.npy, float32 (height, width, 3), 0, 0, 0 where empty");
 
   DiffOptions diff;
   CLI::App* diffCmd = app.add_subcommand("diff", "Render with both backends and compare pixel by pixel");

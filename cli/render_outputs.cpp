@@ -1,6 +1,7 @@
-// render_outputs.cpp — --rgba, --depth and --ids of `phongvk render`. A 16-bit PNG holds a depth in
-// millimetres (0 where empty), as the TUM and NYU RGB-D datasets store theirs, and an object id as
-// index + 1 (0 where empty); a .npy file holds the renderer's own values.
+// render_outputs.cpp — --rgba, --depth, --ids and --normals of `phongvk render`. A 16-bit PNG holds
+// a depth in millimetres (0 where empty), as the TUM and NYU RGB-D datasets store theirs, and an
+// object id as index + 1 (0 where empty); an 8-bit RGB PNG holds a normal as normal maps do,
+// (n + 1) / 2 * 255 rounded (0, 0, 0 where empty); a .npy file holds the renderer's own values.
 #include "cli/render_outputs.h"
 
 #include "cli/cli_support.h"
@@ -19,15 +20,17 @@ constexpr size_t MAX_PNG_OBJECTS = GREY16_MAX - 1;  // ids 1..65535 are index + 
 
 enum class FileKind { None, Png, Npy };
 
-// The kind of a --depth or --ids file, from its extension.
-FileKind fileKind(const std::string& path, const char* option) {
+// The kind of a --depth, --ids or --normals file, from its extension; `png` says what its PNG holds.
+FileKind fileKind(const std::string& path, const char* option, const char* png = "16-bit grey") {
   if (path.empty()) return FileKind::None;
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
   if (extension == ".png") return FileKind::Png;
   if (extension == ".npy") return FileKind::Npy;
-  throw UsageError(std::string(option) + " " + path + ": the file must end in .png (16-bit grey) or .npy (NumPy)");
+  throw UsageError(std::string(option) + " " + path + ": the file must end in .png (" + png + ") or .npy (NumPy)");
 }
+
+FileKind normalsKind(const RenderOptions& options) { return fileKind(options.normals, "--normals", "8-bit RGB"); }
 
 // Metres to millimetres, rounded to the nearest, 0 where empty (+inf), at most 65535.
 uint16_t depthMillimetres(float metres) {
@@ -38,6 +41,21 @@ uint16_t depthMillimetres(float metres) {
 ImageGrey16 grey16(const RenderedFrame& frame, const auto& values, const auto& sample) {
   ImageGrey16 image{frame.image.width, frame.image.height, std::vector<uint16_t>(values.size())};
   std::transform(values.begin(), values.end(), image.grey.begin(), sample);
+  return image;
+}
+
+// A normal's component in [-1, 1] as a normal map's byte: (n + 1) / 2 * 255, rounded to the nearest.
+uint8_t normalByte(float n) {
+  return uint8_t(std::clamp(std::floor((double(n) * 0.5 + 0.5) * 255.0 + 0.5), 0.0, 255.0));
+}
+
+// The normals as a normal map, 0, 0, 0 where empty (no unit normal encodes as black).
+Image normalMap(const RenderedFrame& frame) {
+  Image image(frame.image.width, frame.image.height);
+  for (size_t i = 0; i < frame.normals.size(); i += 3) {
+    if (frame.normals[i] == 0 && frame.normals[i + 1] == 0 && frame.normals[i + 2] == 0) continue;
+    for (size_t c = i; c < i + 3; ++c) image.rgb[c] = normalByte(frame.normals[c]);
+  }
   return image;
 }
 
@@ -62,6 +80,12 @@ void writeIds(const RenderOptions& options, const RenderedFrame& frame) {
   writePng(options.ids, grey16(frame, frame.objectIds, [](int32_t id) { return uint16_t(id + 1); }), options.pngLevel);
 }
 
+void writeNormals(const RenderOptions& options, const RenderedFrame& frame) {
+  const int w = frame.image.width, h = frame.image.height;
+  if (normalsKind(options) == FileKind::Npy) return writeNpy(options.normals, frame.normals, w, h, 3);
+  writePng(options.normals, normalMap(frame), options.pngLevel);
+}
+
 }  // namespace
 
 Outputs outputsAsked(const RenderOptions& options) {
@@ -69,9 +93,10 @@ Outputs outputsAsked(const RenderOptions& options) {
   outputs.alpha = options.rgba;
   outputs.depth = fileKind(options.depth, "--depth") != FileKind::None;
   outputs.objectIds = fileKind(options.ids, "--ids") != FileKind::None;
-  if (options.mpi && (outputs.alpha || outputs.depth || outputs.objectIds)) {
-    throw UsageError("--rgba, --depth and --ids are not available with --mpi (each process holds a share of the "
-                     "scene's triangles): render without --mpi for them");
+  outputs.normals = normalsKind(options) != FileKind::None;
+  if (options.mpi && (outputs.alpha || outputs.depth || outputs.objectIds || outputs.normals)) {
+    throw UsageError("--rgba, --depth, --ids and --normals are not available with --mpi (each process holds a share "
+                     "of the scene's triangles): render without --mpi for them");
   }
   return outputs;
 }
@@ -81,7 +106,7 @@ void checkOutputFiles(const RenderOptions& options, const Scene& scene) {
     throw UsageError("--ids " + options.ids + ": a 16-bit PNG holds at most " + std::to_string(MAX_PNG_OBJECTS) +
                      " objects' ids, the scene has " + std::to_string(scene.objectCount()) + ": write .npy instead");
   }
-  for (const std::string& path : {options.depth, options.ids}) {
+  for (const std::string& path : {options.depth, options.ids, options.normals}) {
     if (!path.empty()) checkWritable(path);
   }
 }
@@ -94,6 +119,7 @@ void writeRenderedFiles(const RenderOptions& options, const RenderedFrame& frame
   }
   if (!options.depth.empty()) writeDepth(options, frame);
   if (!options.ids.empty()) writeIds(options, frame);
+  if (!options.normals.empty()) writeNormals(options, frame);
 }
 
 }  // namespace phongvk::cli

@@ -14,14 +14,17 @@ constexpr size_t NPY_ALIGNMENT = 64;
 
 // `words` (float or int32 bit patterns) under a header naming `descr`.
 template <typename T>
-std::vector<uint8_t> encodeWords(const std::vector<T>& values, int width, int height, const char* descr) {
+std::vector<uint8_t> encodeWords(const std::vector<T>& values, int width, int height, int channels, const char* descr) {
   static_assert(sizeof(T) == 4);
-  if (width <= 0 || height <= 0 || values.size() != size_t(width) * size_t(height)) {
+  if (width <= 0 || height <= 0 || channels <= 0 ||
+      values.size() != size_t(width) * size_t(height) * size_t(channels)) {
     throw ArgumentError("cannot write a " + std::to_string(width) + "x" + std::to_string(height) +
-                        " array holding " + std::to_string(values.size()) + " values as .npy");
+                        (channels == 1 ? "" : "x" + std::to_string(channels)) + " array holding " +
+                        std::to_string(values.size()) + " values as .npy");
   }
-  std::string dict = std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" +
-                     std::to_string(height) + ", " + std::to_string(width) + "), }";
+  const std::string shape = std::to_string(height) + ", " + std::to_string(width) +
+                            (channels == 1 ? "" : ", " + std::to_string(channels));
+  std::string dict = std::string("{'descr': '") + descr + "', 'fortran_order': False, 'shape': (" + shape + "), }";
   // magic and version, a 16-bit header length, the dict, spaces, and a newline ending the header
   const size_t unpadded = sizeof NPY_MAGIC + 2 + dict.size() + 1;
   dict.append((NPY_ALIGNMENT - unpadded % NPY_ALIGNMENT) % NPY_ALIGNMENT, ' ');
@@ -37,10 +40,10 @@ std::vector<uint8_t> encodeWords(const std::vector<T>& values, int width, int he
 }
 
 template <typename T>
-void writeWords(const std::string& path, const std::vector<T>& values, int width, int height) {
+void writeWords(const std::string& path, const std::vector<T>& values, int width, int height, int channels) {
   std::vector<uint8_t> bytes;
   try {
-    bytes = encodeNpy(values, width, height);
+    bytes = encodeNpy(values, width, height, channels);
   } catch (const std::exception& e) {
     throw OutputError("cannot write '" + path + "': " + e.what());
   }
@@ -49,20 +52,20 @@ void writeWords(const std::string& path, const std::vector<T>& values, int width
 
 }  // namespace
 
-std::vector<uint8_t> encodeNpy(const std::vector<float>& values, int width, int height) {
-  return encodeWords(values, width, height, "<f4");
+std::vector<uint8_t> encodeNpy(const std::vector<float>& values, int width, int height, int channels) {
+  return encodeWords(values, width, height, channels, "<f4");
 }
 
-std::vector<uint8_t> encodeNpy(const std::vector<int32_t>& values, int width, int height) {
-  return encodeWords(values, width, height, "<i4");
+std::vector<uint8_t> encodeNpy(const std::vector<int32_t>& values, int width, int height, int channels) {
+  return encodeWords(values, width, height, channels, "<i4");
 }
 
-void writeNpy(const std::string& path, const std::vector<float>& values, int width, int height) {
-  writeWords(path, values, width, height);
+void writeNpy(const std::string& path, const std::vector<float>& values, int width, int height, int channels) {
+  writeWords(path, values, width, height, channels);
 }
 
-void writeNpy(const std::string& path, const std::vector<int32_t>& values, int width, int height) {
-  writeWords(path, values, width, height);
+void writeNpy(const std::string& path, const std::vector<int32_t>& values, int width, int height, int channels) {
+  writeWords(path, values, width, height, channels);
 }
 
 }  // namespace phongvk

@@ -1,7 +1,8 @@
-// outputs_cli_gpu_test.cpp — `phongvk render --rgba --depth --ids`: the files hold what
-// Renderer::renderOutputs gives for the same scene (16-bit PNGs in millimetres and index + 1,
-// .npy files in metres and indices), the same bytes on both backends, and every refusal (a bad
-// extension, the graphics backend, --mpi, too many objects for a PNG) comes before any file.
+// outputs_cli_gpu_test.cpp — `phongvk render --rgba --depth --ids --normals`: the files hold what
+// Renderer::renderOutputs gives for the same scene (16-bit PNGs in millimetres and index + 1, an
+// 8-bit normal map, .npy files in metres, indices and unit vectors), the same bytes on both
+// backends, and every refusal (a bad extension, the graphics backend, --mpi, too many objects for a
+// PNG) comes before any file.
 #include <phongvk/npy.h>
 #include <phongvk/phongvk.h>
 
@@ -115,6 +116,36 @@ TEST_F(OutputsCli, NpyFilesHoldMetresAndIndicesWithSamplesOnBothBackends) {
   EXPECT_EQ(std::string(encoded.begin(), encoded.end()), readBytes(dir + "/cpu.npy"));
 }
 
+// A normal map's byte: (n + 1) / 2 * 255 rounded, 0 for an empty pixel's 0, 0, 0.
+uint8_t expectedNormalByte(const float* n, int channel) {
+  if (n[0] == 0 && n[1] == 0 && n[2] == 0) return 0;
+  return uint8_t(std::floor((double(n[channel]) + 1) / 2 * 255 + 0.5));
+}
+
+TEST_F(OutputsCli, NormalsAreANormalMapOrFloatsOnBothBackends) {
+  const Scene phong = withRenderOptions(loadScene(scene), R"({"shading": "phong", "samples": 4})");
+  const RenderedFrame frame = Renderer(Backend::Cpu).renderOutputs(phong, Outputs{.normals = true});
+  for (const std::string backend : {"gpu", "cpu"}) {
+    const std::string out = renderOn(backend, "--shading phong --samples 4 -o OUT.png --normals OUT_n.png");
+    renderOn(backend, "--shading phong --samples 4 -o OUT.png --normals OUT_n.NPY");  // the extension in any case
+    const Npy npy = readNpy(out + "_n.NPY");
+    EXPECT_EQ(npy.header.find("{'descr': '<f4', 'fortran_order': False, 'shape': (30, 40, 3), }"), 0u) << npy.header;
+    EXPECT_TRUE(npyValues<float>(npy) == frame.normals) << backend;
+    const Image map = readPng(out + "_n.png");
+    ASSERT_EQ(map.rgb.size(), frame.normals.size());
+    int empty = 0, facing = 0;
+    for (size_t i = 0; i < map.rgb.size(); ++i) {
+      EXPECT_EQ(map.rgb[i], expectedNormalByte(&frame.normals[i - i % 3], int(i % 3))) << backend << " value " << i;
+      empty += i % 3 == 0 && map.rgb[i] == 0 && map.rgb[i + 1] == 0 && map.rgb[i + 2] == 0;
+      facing += i % 3 == 2 && map.rgb[i] < 40;  // z toward -1: the sphere facing the camera
+    }
+    EXPECT_GT(empty, 0) << "the corners are empty";
+    EXPECT_GT(facing, 100);
+  }
+  EXPECT_EQ(readBytes(dir + "/gpu_n.png"), readBytes(dir + "/cpu_n.png"));
+  EXPECT_EQ(readBytes(dir + "/gpu_n.NPY"), readBytes(dir + "/cpu_n.NPY"));
+}
+
 // Each refusal: its exit code, its message, and not one file written.
 void expectRefused(const CommandResult& cli, const std::string& message, const std::string& dir) {
   EXPECT_EQ(cli.exitCode, 2) << cli.output;
@@ -130,12 +161,19 @@ TEST_F(OutputsCli, RefusalsComeBeforeAnyFileIsWritten) {
   expectRefused(render("-o " + out + "/c.png --depth " + out + "/d.png --ids " + out + "/ids"),
                 "--ids " + out + "/ids: the file must end in .png (16-bit grey) or .npy (NumPy)", out);
   expectRefused(render("--backend graphics -o " + out + "/c.png --depth " + out + "/d.npy"),
-                "the graphics backend has no visibility keys, so no alpha, depth or ids; use the gpu or cpu backend",
+                "the graphics backend has no visibility keys, so no alpha, depth, ids or normals; use the gpu or cpu "
+                "backend",
                 out);
+  expectRefused(render("--backend graphics -o " + out + "/c.png --normals " + out + "/n.png"),
+                "the graphics backend has no visibility keys", out);
+  expectRefused(render("-o " + out + "/c.png --normals " + out + "/n.jpg"),
+                "--normals " + out + "/n.jpg: the file must end in .png (8-bit RGB) or .npy (NumPy)", out);
   expectRefused(render("--backend graphics -o " + out + "/c.png --rgba"), "the graphics backend has no visibility keys",
                 out);
   expectRefused(render("--mpi -o " + out + "/c.png --ids " + out + "/i.npy"),
-                "--rgba, --depth and --ids are not available with --mpi", out);
+                "--rgba, --depth, --ids and --normals are not available with --mpi", out);
+  expectRefused(render("--mpi -o " + out + "/c.png --normals " + out + "/n.npy"),
+                "--rgba, --depth, --ids and --normals are not available with --mpi", out);
   std::string many = R"({"camera": {"position": [0, -3, 0], "look_at": [0, 0, 0], "width": 8, "height": 6}, "objects": [)";
   for (int i = 0; i < 65535; ++i) many += std::string(i ? "," : "") + R"({"shape": "cube", "size": 0.001})";
   writeFile(dir + "/many.json", many + "]}");
@@ -159,6 +197,11 @@ TEST(Npy, HeaderIsPaddedAndMismatchedArraysAreRejected) {
   EXPECT_EQ(thrownMessage<OutputError>([&] { writeNpy(dir + "/x.npy", std::vector<float>(5), 2, 3); }),
             "cannot write '" + dir + "/x.npy': cannot write a 2x3 array holding 5 values as .npy");
   EXPECT_TRUE(std::filesystem::is_empty(dir));
+  const std::vector<uint8_t> rgb = encodeNpy(std::vector<float>(6, 0.5f), 1, 2, 3);
+  EXPECT_EQ(std::string(rgb.begin() + 10, rgb.begin() + 10 + 62), "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 1, 3), }");
+  EXPECT_EQ(rgb.size(), 128u + 24u);
+  EXPECT_EQ(thrownMessage<ArgumentError>([] { encodeNpy(std::vector<float>(5), 1, 2, 3); }),
+            "cannot write a 1x2x3 array holding 5 values as .npy");
 }
 
 }  // namespace

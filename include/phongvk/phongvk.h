@@ -204,11 +204,19 @@ struct Outputs {
   bool depth = false;        // metres along the camera's axis to the nearest surface; +inf where empty
   bool objectIds = false;    // the nearest surface's object (index in the scene's objects); -1 where empty
   bool triangleIds = false;  // its triangle (index in the scene: objects in order); -1 where empty
+  // The nearest surface's unit shading normal in camera space, x right, y up, z forward (the axis
+  // depth runs along: a surface facing the camera has z < 0); 0, 0, 0 where empty. The normal the
+  // frame's shading uses there: flat, the triangle's face normal; Gouraud and Phong, the vertex
+  // normals interpolated at the pixel (perspective-correct or not, as render.interpolation says)
+  // and normalized. On a back face (an open object's) it is the stored normal, facing away from
+  // the camera, not flipped.
+  bool normals = false;
 };
 
 // A frame and the outputs asked for, each width x height values, row-major, row 0 at the top
-// (an output not asked for is empty). With samples per pixel (render.samples) the colour and
-// alpha are the samples' box-filtered mean, and the depth and ids are the pixel's nearest sample's.
+// (an output not asked for is empty); the normals three floats a pixel. With samples per pixel
+// (render.samples) the colour and alpha are the samples' box-filtered mean, and the depth, ids and
+// normal are the pixel's nearest sample's (the normal taken at that sample's position).
 // Every output comes from the visibility keys, which both renderers give bit for bit alike, so
 // every output is the same bytes on the gpu and cpu backends.
 struct RenderedFrame {
@@ -217,6 +225,7 @@ struct RenderedFrame {
   std::vector<float> depth;
   std::vector<int32_t> objectIds;
   std::vector<int32_t> triangleIds;
+  std::vector<float> normals;  // x, y, z per pixel
 };
 
 // Renders scenes on one backend. It keeps what it built and uploaded: rendering a scene with the

@@ -1,0 +1,58 @@
+// normals.cpp — see normals.h. The surface comes from the shared headers the renderers shade with
+// (shaders/pixel_shading.h, gouraud.h), in the same float operations as the reference.
+#include "api/normals.h"
+
+#include "shaders/gouraud.h"
+#include "shaders/phong.h"
+#include "shaders/pixel_shading.h"
+
+namespace phongvk {
+
+using namespace gpu;
+
+namespace {
+
+// A vertex's homogeneous pixel-space position in this frame, as the shade pass computes it.
+ShadedVertex projected(const VertexIn& v, const FrameInputs& in) {
+  return {vec4(toHomogeneous(v.position, in.objects[v.object].viewOffset, in.frame), 1.0f), vec4(0.0f)};
+}
+
+// A world-axes direction in the camera's axes: (right, up, forward).
+vec3 toCameraAxes(vec3 n, const FrameData& frame) {
+  return vec3(dot3(vec3(frame.right), n), dot3(vec3(frame.up), n), dot3(vec3(frame.forward), n));
+}
+
+}  // namespace
+
+glm::vec3 cameraNormal(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y) {
+  const glm::uvec4 tri = data.triangles[triangle];
+  const ObjectData& object = in.objects[tri.w];
+  const MaterialData& m = in.materials[object.material];
+  const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
+  SurfacePoint s;
+  if (in.frame.shading == SHADING_FLAT) {
+    s = flatSurface(a, b, c, object.lightOffset, m);
+  } else {
+    const GouraudTriangle g = gouraudTriangle(projected(a, in), projected(b, in), projected(c, in));
+    s = phongSurface(a, b, c, object.lightOffset, m,
+                     barycentrics(g, pixelRay(x, y, in.frame.principal), in.frame.interpolation));
+  }
+  return toCameraAxes(s.N, in.frame);
+}
+
+std::vector<float> normalsOfSamples(const SceneData& data, const FrameInputs& in, const std::vector<uint64_t>& sampleKeys,
+                                    const std::vector<size_t>& nearest) {
+  std::vector<float> normals(nearest.size() * 3, 0.0f);
+  const size_t sampleWidth = in.frame.width;
+  for (size_t i = 0; i < nearest.size(); ++i) {
+    if (nearest[i] == NO_SAMPLE) continue;
+    const uint32_t triangle = uint32_t(sampleKeys[nearest[i]]) - data.triangleBase;
+    const glm::vec3 n = cameraNormal(data, in, triangle, int(nearest[i] % sampleWidth), int(nearest[i] / sampleWidth));
+    normals[3 * i] = n.x;
+    normals[3 * i + 1] = n.y;
+    normals[3 * i + 2] = n.z;
+  }
+  return normals;
+}
+
+}  // namespace phongvk
