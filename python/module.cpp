@@ -260,14 +260,17 @@ Outputs outputsNamed(const std::vector<std::string>& names) {
     else if (name == "depth") outputs.depth = true;
     else if (name == "object_id") outputs.objectIds = true;
     else if (name == "triangle_id") outputs.triangleIds = true;
+    else if (name == "normal") outputs.normals = true;
     else if (name != "color")
-      throw ArgumentError("outputs: unknown output '" + name + "' (color, rgba, alpha, depth, object_id, triangle_id)");
+      throw ArgumentError("outputs: unknown output '" + name +
+                          "' (color, rgba, alpha, depth, object_id, triangle_id, normal)");
   }
   return outputs;
 }
 
 // The frame's outputs by name: color (height, width, 3) and rgba (height, width, 4) uint8, alpha
-// uint8, depth float32, object_id and triangle_id int32, each (height, width).
+// uint8, depth float32, object_id and triangle_id int32, each (height, width), and normal
+// (height, width, 3) float32.
 py::dict outputsDict(RenderedFrame&& frame, const std::vector<std::string>& names) {
   const py::ssize_t h = frame.image.height, w = frame.image.width;
   const size_t pixels = size_t(h) * size_t(w);
@@ -288,6 +291,8 @@ py::dict outputsDict(RenderedFrame&& frame, const std::vector<std::string>& name
       d["object_id"] = ownedArray(std::move(frame.objectIds), {h, w});
     } else if (name == "triangle_id") {
       d["triangle_id"] = ownedArray(std::move(frame.triangleIds), {h, w});
+    } else if (name == "normal") {
+      d["normal"] = ownedArray(std::move(frame.normals), {h, w, 3});
     }
   }
   // The colour last: rgba above copied from the image this moves.

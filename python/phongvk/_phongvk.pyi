@@ -102,6 +102,9 @@ class Scene:
 class Renderer:
     def __init__(self, backend: str = "gpu", device: Optional[int] = None, validate: bool = False) -> None: ...
     def render(self, scene: Scene, width: Optional[int] = None, height: Optional[int] = None) -> npt.NDArray[np.uint8]: ...
+    # outputs: names among color, rgba, alpha, depth, object_id, triangle_id, normal; the dict holds
+    # (h, w, 3) uint8 color, (h, w, 4) uint8 rgba, (h, w) uint8 alpha, float32 depth, int32 ids and
+    # (h, w, 3) float32 normal
     def render_outputs(self, scene: Scene, outputs: Sequence[str], width: Optional[int] = None,
                        height: Optional[int] = None) -> dict[str, np.ndarray]: ...
     def render_visibility(self, scene: Scene, width: Optional[int] = None, height: Optional[int] = None
