@@ -48,8 +48,6 @@ void checkRotation(const Matrix4& m) {
   if (glm::dot(glm::cross(x, y), z) < 0) throw ArgumentError("pose: the upper 3x3 block mirrors (determinant -1)");
 }
 
-bool nearlyEqual(double a, double b, double scale) { return std::abs(a - b) <= 1e-6 * scale; }
-
 }  // namespace
 
 Camera cameraFromPose(const Matrix4& m, PoseConvention convention, double fov, int width, int height) {
@@ -77,18 +75,9 @@ Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int widt
     if (!(std::isfinite(value) && value > 0))
       throw ArgumentError(std::string(name) + ": must be a positive focal length in pixels, got " + formatNumber(value));
   }
-  if (!nearlyEqual(fx, fy, fy))
-    throw ArgumentError("fx: must equal fy (phongvk renders square pixels), got fx " + formatNumber(fx) + " and fy " +
-                        formatNumber(fy));
-  const double centreX = (width - 1) / 2.0, centreY = (height - 1) / 2.0;
-  if (!nearlyEqual(cx, centreX, width))
-    throw ArgumentError("cx: must be the image centre " + formatNumber(centreX) +
-                        " (phongvk renders about the centre), got " + formatNumber(cx));
-  if (!nearlyEqual(cy, centreY, height))
-    throw ArgumentError("cy: must be the image centre " + formatNumber(centreY) +
-                        " (phongvk renders about the centre), got " + formatNumber(cy));
-  const double fov = 2 * std::atan(height / (2 * fy)) * 180 / M_PI;
-  return cameraFromPose(cameraToWorld, convention, fov, width, height);
+  Camera camera = cameraFromPose(cameraToWorld, convention, Camera{}.fov, width, height);
+  camera.intrinsics = Intrinsics{fx, fy, cx, cy};
+  return camera;
 }
 
 namespace {
@@ -98,14 +87,25 @@ Json cameraJson(const Camera& camera, int width, int height) {
   requireFinite(camera.fov, "camera.fov");
   requireFinite(camera.nearPlane, "camera.near");
   requireFinite(camera.farPlane, "camera.far");
-  return {{"position", vec3Json(camera.position, "camera.position")},
-          {"look_at", vec3Json(camera.lookAt, "camera.look_at")},
-          {"up", vec3Json(camera.up, "camera.up")},
-          {"fov", camera.fov},
-          {"width", width},
-          {"height", height},
-          {"near", camera.nearPlane},
-          {"far", camera.farPlane}};
+  Json json = {{"position", vec3Json(camera.position, "camera.position")},
+               {"look_at", vec3Json(camera.lookAt, "camera.look_at")},
+               {"up", vec3Json(camera.up, "camera.up")},
+               {"width", width},
+               {"height", height},
+               {"near", camera.nearPlane},
+               {"far", camera.farPlane}};
+  if (!camera.intrinsics) {
+    json["fov"] = camera.fov;
+    return json;
+  }
+  const Intrinsics& k = *camera.intrinsics;
+  for (const auto& [value, name] : {std::pair{k.fx, "fx"}, {k.fy, "fy"}, {k.cx, "cx"}, {k.cy, "cy"}})
+    requireFinite(value, std::string("camera.") + name);
+  json["fx"] = k.fx;
+  json["fy"] = k.fy;
+  json["cx"] = k.cx;
+  json["cy"] = k.cy;
+  return json;
 }
 
 }  // namespace
@@ -129,6 +129,7 @@ Camera cameraOf(const SceneSpec& scene) {
   camera.height = view.height;
   camera.nearPlane = c.nearPlane;
   camera.farPlane = c.farPlane;
+  if (c.intrinsics) camera.intrinsics = Intrinsics{c.fx, c.fy, c.cx, c.cy};
   return camera;
 }
 

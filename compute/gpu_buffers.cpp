@@ -203,7 +203,8 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
   const FrameData& f = in.frame;
   // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
   const bool positionsStale = !framesSent_ || objectsChanged || f.right != frame_.right || f.up != frame_.up ||
-                              f.forward != frame_.forward || f.focal != frame_.focal;
+                              f.forward != frame_.forward || f.focalX != frame_.focalX ||
+                              f.focalY != frame_.focalY;
   const bool eyeMoved = !framesSent_ || f.eye != frame_.eye;
   const bool ambientChanged = !framesSent_ || f.ambient != frame_.ambient;
   // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.

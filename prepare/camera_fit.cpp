@@ -11,11 +11,26 @@ namespace {
 
 constexpr double kMargin = 1.05;
 
+std::string prefix(const std::string& file) { return file.empty() ? "" : file + ": "; }
+
+// The tangent of the narrowest angle between the view axis and the image's sides.
+double narrowestTangent(const CameraSpec& camera, const std::string& file) {
+  if (!camera.intrinsics) {
+    const double tanVertical = std::tan(glm::radians(camera.fov) / 2);
+    return std::min(tanVertical, tanVertical * camera.aspect);
+  }
+  const double px = camera.cx + 0.5, py = camera.cy + 0.5;
+  const double tangent = std::min(std::min(px, camera.width - px) / camera.fx, std::min(py, camera.height - py) / camera.fy);
+  if (!(tangent > 0))
+    throw SceneError(prefix(file) + "camera.fit: the principal point (cx, cy) = (" + formatNumber(camera.cx) + ", " +
+                     formatNumber(camera.cy) + ") is not inside the image, so no view centred on it frames the scene");
+  return tangent;
+}
+
 void fitCamera(CameraSpec& camera, const SceneData& data, const std::string& file) {
   const glm::dvec3 centre = (data.boundsMin + data.boundsMax) * 0.5;
   const double radius = std::max(glm::length(data.boundsMax - data.boundsMin) * 0.5, 1e-9);
-  const double tanVertical = std::tan(glm::radians(camera.fov) / 2);
-  const double halfField = std::atan(std::min(tanVertical, tanVertical * camera.aspect));
+  const double halfField = std::atan(narrowestTangent(camera, file));
   const double distance = kMargin * radius / std::sin(halfField);
   camera.position = centre - glm::normalize(camera.direction) * distance;
   camera.nearPlane = (distance - radius) / 2;
@@ -23,7 +38,7 @@ void fitCamera(CameraSpec& camera, const SceneData& data, const std::string& fil
   const double reach = std::max({std::abs(camera.position.x), std::abs(camera.position.y), std::abs(camera.position.z),
                                  camera.farPlane});
   if (!(reach <= MAX_COORDINATE) || !(float(camera.nearPlane) >= 1.17549435e-38f))
-    throw SceneError((file.empty() ? "" : file + ": ") + "camera.fit: the scene's bounds (radius " +
+    throw SceneError(prefix(file) + "camera.fit: the scene's bounds (radius " +
                      formatNumber(radius) + " m) put the camera beyond the coordinates a scene may use");
 }
 

@@ -14,7 +14,9 @@ bool needsFraming(const SceneSpec& scene);
 // The fit (docs/DESIGN.md "Camera"): the sphere around the bounding box, of radius r about its
 // centre c, fills the narrower of the two fields of view with a 5% margin: the eye is at
 // c - d·f, d = 1.05·r / sin(half the narrower field), f the unit view direction; near = (d - r) / 2,
-// far = 2·(d + r). Throws SceneError when that puts the eye beyond the coordinates a scene may use.
+// far = 2·(d + r). With intrinsics the half field is the narrowest angle from the view axis (through
+// the principal point) to a side of the image. Throws SceneError when that puts the eye beyond the
+// coordinates a scene may use, or when the principal point is not inside the image.
 SceneSpec framedScene(const SceneSpec& scene, const SceneData& data);
 
 }  // namespace phongvk

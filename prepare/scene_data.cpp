@@ -77,8 +77,8 @@ glm::vec3 inBasis(const View& view, const glm::dvec3& v) {
 bool nearOrOutsideClipVolume(const View& view, const glm::dvec3& p) {
   const glm::dvec3 d = p - view.eye;
   const double z = glm::dot(view.forward, d);
-  const double x = std::abs(view.focal * glm::dot(view.right, d));
-  const double y = std::abs(view.focal * glm::dot(view.up, d));
+  const double x = std::abs(view.focal.x * glm::dot(view.right, d));
+  const double y = std::abs(view.focal.y * glm::dot(view.up, d));
   const double band = double(gpu::GUARD_BAND) * z;
   constexpr double MARGIN = 1e-5;  // relative; float positions are good to a few 1e-7
   return !(z - view.nearPlane > MARGIN * (glm::length(d) + view.nearPlane) && band - x > MARGIN * (band + x) &&
@@ -201,10 +201,11 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   f.up = glm::vec4(glm::vec3(view.up), 0.0f);
   f.forward = glm::vec4(glm::vec3(view.forward), 0.0f);
   f.ambient = data.ambient;
-  f.focal = static_cast<float>(view.focal);
+  f.focalX = static_cast<float>(view.focal.x);
+  f.focalY = static_cast<float>(view.focal.y);
   f.background = data.background;
   f.nearPlane = static_cast<float>(view.nearPlane);
-  f.principal = glm::vec2(view.width * 0.5f, view.height * 0.5f);
+  f.principal = glm::vec2(view.principal);
   f.farPlane = static_cast<float>(view.farPlane);
   f.width = static_cast<uint32_t>(view.width);
   f.height = static_cast<uint32_t>(view.height);

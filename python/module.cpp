@@ -162,6 +162,13 @@ std::string floatText(double x) { return py::str(py::float_(x)); }
 
 std::string vec3Text(const Vec3& v) { return "(" + floatText(v[0]) + ", " + floatText(v[1]) + ", " + floatText(v[2]) + ")"; }
 
+// ", fov=60.0", or ", intrinsics=(fx, fy, cx, cy)" for a camera that has them.
+std::string fieldOfViewText(const Camera& c) {
+  if (!c.intrinsics) return ", fov=" + floatText(c.fov);
+  const Intrinsics& k = *c.intrinsics;
+  return ", intrinsics=(" + floatText(k.fx) + ", " + floatText(k.fy) + ", " + floatText(k.cx) + ", " + floatText(k.cy) + ")";
+}
+
 // ---- materials and render settings ----
 
 // `fields` (a dict or kwargs: attribute names to values) set on `value`, a phongvk.Material or
@@ -373,14 +380,19 @@ PYBIND11_MODULE(_phongvk, m) {
   m.attr("__revision__") = revision();
 
   py::class_<Camera>(m, "Camera", R"(A pinhole camera: position, look_at, up (world coordinates, z up by
-default), fov (vertical, degrees), width x height (0 x 0: the scene's own size), near and far.
+default), fov (vertical, degrees) or intrinsics (fx, fy, cx, cy in pixels), width x height (0 x 0:
+the scene's own size), near and far.
 Camera.from_pose and Camera.from_intrinsics make one from a camera-to-world matrix. Assigned to
 Scene.camera, it is checked like a scene file's "camera".)")
       .def(py::init([](Vec3 position, Vec3 lookAt, Vec3 up, double fov, int width, int height, double nearPlane,
-                       double farPlane) { return Camera{position, lookAt, up, fov, width, height, nearPlane, farPlane}; }),
+                       double farPlane, std::optional<std::array<double, 4>> k) {
+             Camera camera{position, lookAt, up, fov, width, height, nearPlane, farPlane};
+             if (k) camera.intrinsics = Intrinsics{(*k)[0], (*k)[1], (*k)[2], (*k)[3]};
+             return camera;
+           }),
            py::kw_only(), py::arg("position") = Camera{}.position, py::arg("look_at") = Camera{}.lookAt,
            py::arg("up") = Camera{}.up, py::arg("fov") = Camera{}.fov, py::arg("width") = 0, py::arg("height") = 0,
-           py::arg("near") = Camera{}.nearPlane, py::arg("far") = Camera{}.farPlane)
+           py::arg("near") = Camera{}.nearPlane, py::arg("far") = Camera{}.farPlane, py::arg("intrinsics") = py::none())
       .def_readwrite("position", &Camera::position)
       .def_readwrite("look_at", &Camera::lookAt)
       .def_readwrite("up", &Camera::up)
@@ -389,6 +401,19 @@ Scene.camera, it is checked like a scene file's "camera".)")
       .def_readwrite("height", &Camera::height)
       .def_readwrite("near", &Camera::nearPlane)
       .def_readwrite("far", &Camera::farPlane)
+      .def_property(
+          "intrinsics",
+          [](const Camera& c) -> py::object {
+            if (!c.intrinsics) return py::none();
+            return py::make_tuple(c.intrinsics->fx, c.intrinsics->fy, c.intrinsics->cx, c.intrinsics->cy);
+          },
+          [](Camera& c, const py::object& value) {
+            if (value.is_none()) return c.intrinsics.reset();
+            const auto k = value.cast<std::array<double, 4>>();
+            c.intrinsics = Intrinsics{k[0], k[1], k[2], k[3]};
+          },
+          R"((fx, fy, cx, cy) in pixels, OpenCV's convention (pixel centres at integer coordinates), or
+None: the field of view is fov. With intrinsics the camera needs a width and height.)")
       .def_static(
           "from_pose",
           [](const py::object& pose, const std::string& conventionName, double fov, int width, int height) {
@@ -408,13 +433,13 @@ datasets). A pose whose rotation block is not a rotation raises ValueError.)")
           py::arg("fx"), py::arg("fy"), py::arg("cx"), py::arg("cy"), py::arg("width"), py::arg("height"),
           py::arg("pose") = py::none(), py::arg("convention") = "opencv",
           R"(The camera of pinhole intrinsics (pixels, OpenCV's convention: pixel centres at integer
-coordinates) and a (4, 4) camera-to-world pose (identity when None). phongvk renders square pixels
-about the image centre: fx must equal fy and (cx, cy) be ((width - 1) / 2, (height - 1) / 2),
-each within 1e-6 relative, else ValueError.)")
+coordinates, so the centre is ((width - 1) / 2, (height - 1) / 2)) and a (4, 4) camera-to-world pose
+(identity when None). fx and fy may differ; the principal point (cx, cy) may lie off centre, or
+outside the image within 16384 pixels of it. A focal length that is not positive raises ValueError.)")
       .def("__repr__", [](const Camera& c) {
         return "phongvk.Camera(position=" + vec3Text(c.position) + ", look_at=" + vec3Text(c.lookAt) + ", up=" +
-               vec3Text(c.up) + ", fov=" + std::string(py::str(py::float_(c.fov))) + ", width=" +
-               std::to_string(c.width) + ", height=" + std::to_string(c.height) + ")";
+               vec3Text(c.up) + fieldOfViewText(c) + ", width=" + std::to_string(c.width) +
+               ", height=" + std::to_string(c.height) + ")";
       });
 
   py::class_<Light>(m, "Light", R"(A light: a point light at position (or at_camera=True: at the eye,

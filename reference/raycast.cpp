@@ -22,10 +22,10 @@ const Object& theSphere(const SceneSpec& scene) {
 
 // The ray through the centre of pixel (x, y), scaled so its forward component is 1: the ray
 // parameter is then the view-space depth the renderers clip with. Pixel centres sit at
-// (x + 0.5, y + 0.5), the principal point at the image centre, y grows downwards.
+// (x + 0.5, y + 0.5) about the view's principal point, y grows downwards.
 glm::dvec3 pixelRay(const View& view, int x, int y) {
-  const double a = (x + 0.5 - view.width * 0.5) / view.focal;
-  const double b = (view.height * 0.5 - (y + 0.5)) / view.focal;
+  const double a = (x + 0.5 - view.principal.x) / view.focal.x;
+  const double b = (view.principal.y - (y + 0.5)) / view.focal.y;
   return view.forward + a * view.right + b * view.up;
 }
 

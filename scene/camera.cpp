@@ -22,14 +22,20 @@ View makeView(const CameraSpec& camera) {
   if (camera.width > 0 && camera.height > 0) {
     view.width = camera.width;
     view.height = camera.height;
-    view.focal = camera.height / (2 * halfHeight);
+    const double focal = camera.height / (2 * halfHeight);
+    view.focal = {focal, focal};
   } else {
     const double h = 2 * camera.resolution * halfHeight;
     const double w = h * camera.aspect;
     if (!(h < MAX_IMAGE_SIDE + 1.0) || !(w < MAX_IMAGE_SIDE + 1.0)) checkSide(MAX_IMAGE_SIDE + 1, "size");
     view.height = static_cast<int>(std::floor(h));
     view.width = static_cast<int>(std::floor(w));
-    view.focal = camera.resolution;
+    view.focal = {camera.resolution, camera.resolution};
+  }
+  view.principal = {view.width * 0.5, view.height * 0.5};
+  if (camera.intrinsics) {
+    view.focal = {camera.fx, camera.fy};
+    view.principal = {camera.cx + 0.5, camera.cy + 0.5};
   }
   checkSide(view.width, "width");
   checkSide(view.height, "height");
@@ -52,11 +58,19 @@ int sampleGridSide(int samples) { return int(std::lround(std::sqrt(double(sample
 View supersampled(View view, int side) {
   view.width *= side;
   view.height *= side;
-  view.focal *= side;
+  view.focal *= double(side);
+  view.principal *= double(side);
   return view;
 }
 
 CameraSpec withImageSize(CameraSpec camera, int width, int height) {
+  if (camera.intrinsics && camera.width > 0 && camera.height > 0) {
+    const double sx = double(width) / camera.width, sy = double(height) / camera.height;
+    camera.fx *= sy;
+    camera.fy *= sy;
+    camera.cx = (camera.cx + 0.5) * sx - 0.5;
+    camera.cy = (camera.cy + 0.5) * sy - 0.5;
+  }
   camera.width = width;
   camera.height = height;
   camera.aspect = static_cast<double>(width) / height;

@@ -59,6 +59,11 @@ struct CameraSpec {
   int height = 0;
   double nearPlane = 0.05;
   double farPlane = 1000;
+  // Pinhole intrinsics ("fx", "fy", "cx", "cy", with width and height; then fov, aspect and
+  // resolution are not used): focal lengths and principal point in pixels, OpenCV's convention
+  // (pixel centres at integer coordinates).
+  bool intrinsics = false;
+  double fx = 0, fy = 0, cx = 0, cy = 0;
   // "fit": position, near and far come from the objects' bounds when the meshes are built
   // (camera_fit.h); `direction` is the view direction.
   bool fit = false;

@@ -11,8 +11,8 @@
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kCameraKeys = {"position",   "direction", "look_at", "up",   "fov", "aspect",
-                          "resolution", "width",     "height",  "near", "far", "fit"};
+const Keys kCameraKeys = {"position", "direction", "look_at", "up",   "fov", "aspect", "resolution", "width",
+                          "height",   "near",      "far",     "fit",  "fx",  "fy",     "cx",         "cy"};
 
 // The view direction of a fitted camera given none: from the front (-y), to the left and above.
 const glm::dvec3 kFitDirection = {0.5, 1.0, -0.5};
@@ -89,6 +89,36 @@ void readImageSize(const Node& camera, CameraSpec& spec) {
   spec.aspect = double(spec.width) / spec.height;
 }
 
+// The focal lengths a camera's intrinsics may have: the longest a field of view >= kMinFov gives
+// a 16384-pixel image is 9.4e11 pixels per metre.
+constexpr double kMaxFocalPixels = 1e11;
+
+// Pinhole intrinsics in pixels (OpenCV's convention): "fx" (required with any of them), "fy"
+// (default fx), "cx" and "cy" (default the image centre), with "width" and "height" and instead
+// of "fov". The principal point may lie outside the image (an off-axis view, a crop of a larger
+// one) but within one largest image side of it, which keeps the guard band's subpixel bounds.
+void readIntrinsics(const Node& camera, CameraSpec& spec) {
+  if (!camera.find("fx") && !camera.find("fy") && !camera.find("cx") && !camera.find("cy")) return;
+  if (!camera.find("fx")) camera.fail("missing required field 'fx' (given 'fy', 'cx' or 'cy')");
+  for (std::string_view key : {"fov", "resolution", "aspect"}) {
+    if (camera.find(key)) camera.failAt(key, "cannot be given with 'fx': the intrinsics set the field of view");
+  }
+  if (!camera.find("width") || !camera.find("height"))
+    camera.fail("'fx' needs 'width' and 'height' (the image the intrinsics describe)");
+  spec.intrinsics = true;
+  spec.fx = inRange(camera.require("fx"), 0, kMaxFocalPixels);
+  spec.fy = spec.fx;
+  if (auto node = camera.find("fy")) spec.fy = inRange(*node, 0, kMaxFocalPixels);
+  for (auto [key, focal] : {std::pair{"fx", spec.fx}, std::pair{"fy", spec.fy}}) {
+    if (!(focal > 0)) camera.failAt(key, "must be > 0 (a focal length in pixels), got 0");
+  }
+  spec.cx = (spec.width - 1) / 2.0;
+  spec.cy = (spec.height - 1) / 2.0;
+  const double lo = -MAX_IMAGE_SIDE, hi = 2.0 * MAX_IMAGE_SIDE;
+  if (auto node = camera.find("cx")) spec.cx = inRange(*node, lo, hi);
+  if (auto node = camera.find("cy")) spec.cy = inRange(*node, lo, hi);
+}
+
 void readDepthRange(const Node& camera, CameraSpec& spec) {
   if (auto node = camera.find("near")) spec.nearPlane = positive(*node);
   // The renderers clip at near as a float: one that rounds to 0 would let them divide by w = 0.
@@ -123,6 +153,7 @@ CameraSpec readCamera(const Node& camera) {
                              " degrees (a narrower view overflows 32-bit floats), got " + formatNumber(spec.fov));
   }
   readImageSize(camera, spec);
+  readIntrinsics(camera, spec);
   if (!spec.fit) readDepthRange(camera, spec);
   return spec;
 }

@@ -63,9 +63,11 @@ FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, OUT_ARRAY(vec3, 
 }
 
 // True when the whole triangle is outside one of the view frustum's planes (off screen, behind
-// the near plane or beyond the far plane): it cannot cover a pixel. Valid for any sign of W.
+// the near plane or beyond the far plane): it cannot cover a pixel. Valid for any sign of W. The
+// image spans -lo .. hi about the principal point (lo = hi for a centred one: exact in float).
 FN bool outsideFrustum(vec3 h0, vec3 h1, vec3 h2, FrameData frame) {
-  vec3 lim = vec3(frame.principal.x, frame.principal.y, 0.0f);
+  vec2 lo = frame.principal;
+  PRECISE vec2 hi = vec2(float(frame.width), float(frame.height)) - frame.principal;
   for (int plane = 0; plane < 6; ++plane) {
     bool allOut = true;
     for (int i = 0; i < 3; ++i) {
@@ -73,10 +75,10 @@ FN bool outsideFrustum(vec3 h0, vec3 h1, vec3 h2, FrameData frame) {
       PRECISE float d;
       if (plane == 0) d = h.z - frame.nearPlane;
       else if (plane == 1) d = frame.farPlane - h.z;
-      else if (plane == 2) d = h.x + lim.x * h.z;
-      else if (plane == 3) d = lim.x * h.z - h.x;
-      else if (plane == 4) d = h.y + lim.y * h.z;
-      else d = lim.y * h.z - h.y;
+      else if (plane == 2) d = h.x + lo.x * h.z;
+      else if (plane == 3) d = hi.x * h.z - h.x;
+      else if (plane == 4) d = h.y + lo.y * h.z;
+      else d = hi.y * h.z - h.y;
       allOut = allOut && d < 0.0f;
     }
     if (allOut) return true;

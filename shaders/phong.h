@@ -10,13 +10,13 @@
 
 SHARED_BEGIN
 
-// Homogeneous pixel-space position of a vertex: (focal * x_view, -focal * y_view, z_view).
+// Homogeneous pixel-space position of a vertex: (focalX * x_view, -focalY * y_view, z_view).
 // The view position is rotate(local) + viewOffset, where viewOffset = rotate(origin - eye) was
 // computed in double on the host: far-away objects keep their float precision.
 FN vec3 toHomogeneous(vec3 local, vec3 viewOffset, FrameData frame) {
   PRECISE vec3 view = vec3(dot3(vec3(frame.right), local), dot3(vec3(frame.up), local),
                            dot3(vec3(frame.forward), local)) + viewOffset;
-  PRECISE vec3 h = vec3(frame.focal * view.x, -frame.focal * view.y, view.z);
+  PRECISE vec3 h = vec3(frame.focalX * view.x, -frame.focalY * view.y, view.z);
   return h;
 }
 

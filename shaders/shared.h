@@ -121,7 +121,7 @@ struct VertexIn {
 PHONGVK_CONST uint VERTEX_WHITE = 0xFFFFFFFFu;  // the colour of a vertex that has none
 
 // Output of the per-vertex pass: homogeneous pixel-space position and unclamped Phong colour.
-// hpos = (focal * x_view, -focal * y_view, z_view, unused): the screen position is
+// hpos = (focalX * x_view, -focalY * y_view, z_view, unused): the screen position is
 // principal point + hpos.xy / hpos.z, with y pointing down.
 struct ShadedVertex {
   vec4 hpos;
@@ -163,10 +163,10 @@ struct FrameData {
   vec4 up;
   vec4 forward;
   vec3 ambient;
-  float focal;       // pixels per metre at 1 m
+  float focalX;      // pixels per metre at 1 m, across (fx)
   vec3 background;
   float nearPlane;
-  vec2 principal;    // (width / 2, height / 2) in pixels
+  vec2 principal;    // where the view axis meets the image, in pixels from its top-left corner
   float farPlane;
   uint width;
   vec3 eye;          // eye - lighting origin, for the view vector
@@ -174,7 +174,7 @@ struct FrameData {
   uint interpolation;
   uint shading;      // SHADING_*
   uint specular;     // SPECULAR_*
-  uint pad0;
+  float focalY;      // pixels per metre at 1 m, down (fy)
 };
 
 #ifdef __cplusplus
@@ -183,12 +183,13 @@ static_assert(sizeof(ShadedVertex) == 32);
 static_assert(sizeof(ObjectData) == 32 && offsetof(ObjectData, lightOffset) == 16);
 static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && offsetof(MaterialData, ks) == 32);
 static_assert(sizeof(LightData) == 32 && offsetof(LightData, color) == 16);
-static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focal) == 60);
+static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focalX) == 60);
 static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearPlane) == 76);
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);
 static_assert(offsetof(FrameData, width) == 92 && offsetof(FrameData, eye) == 96);
 static_assert(offsetof(FrameData, height) == 108 && offsetof(FrameData, interpolation) == 112);
 static_assert(offsetof(FrameData, shading) == 116 && offsetof(FrameData, specular) == 120);
+static_assert(offsetof(FrameData, focalY) == 124);
 static_assert(sizeof(FrameData) == 128);
 
 // Every binding number and specialization-constant id appears once in its table.

@@ -214,11 +214,37 @@ TEST(Api, TypedCameraLightsAndPosesRenderAsTheSameSceneWritten) {
   EXPECT_EQ(built.camera().fov, 45);
   EXPECT_EQ(built.lights().size(), 2u);
   EXPECT_THROW(built.setCamera(Camera{{0, 0, 3}, {0, 0, 0}, {0, 0, 1}, 45, 96, 64}), SceneError);  // up along the view
-  EXPECT_THROW(cameraFromIntrinsics(100, 120, 47.5, 31.5, 96, 64, IDENTITY_POSE), ArgumentError);
-  const Camera fromIntrinsics = cameraFromIntrinsics(100, 100, 47.5, 31.5, 96, 64, IDENTITY_POSE);
-  EXPECT_NEAR(fromIntrinsics.fov, 2 * std::atan(32.0 / 100) * 180 / M_PI, 1e-12);
+  EXPECT_THROW(cameraFromIntrinsics(0, 120, 47.5, 31.5, 96, 64, IDENTITY_POSE), ArgumentError);
+  const Camera fromIntrinsics = cameraFromIntrinsics(100, 120, 40.25, 35, 96, 64, IDENTITY_POSE);
+  EXPECT_EQ(fromIntrinsics.intrinsics, (Intrinsics{100, 120, 40.25, 35}));
   EXPECT_EQ(fromIntrinsics.lookAt, (Vec3{0, 0, 1}));  // OpenCV: the camera looks down its +z
   EXPECT_EQ(fromIntrinsics.up, (Vec3{0, -1, 0}));     // and its y points down
+  built.setCamera(fromIntrinsics);
+  EXPECT_EQ(built.camera().intrinsics, fromIntrinsics.intrinsics);
+  Camera outside = fromIntrinsics;
+  outside.intrinsics->cx = -20000;
+  EXPECT_THROW(built.setCamera(outside), SceneError);  // beyond one largest image side
+}
+
+// Non-square pixels and a principal point off centre, then outside the image (the frustum's side
+// planes, the guard band and the near plane's clipping about it), with 16 samples a pixel: the
+// same bytes on both backends.
+TEST(Api, IntrinsicsRenderTheSameOnBothBackends) {
+  Scene scene = loadScene(source("scenes/intrinsics.json")).withImageSize(96, 72).withRender({.samples = 16});
+  Renderer gpu(validatedGpu()), cpu(Backend::Cpu);
+  const Outputs keys{.depth = true, .triangleIds = true};
+  for (const double cx : {60.0, -30.5, 140.0}) {
+    Camera camera = scene.camera();
+    ASSERT_TRUE(camera.intrinsics);
+    camera.intrinsics->cx = cx;
+    camera.intrinsics->cy = 20 - cx / 4;
+    scene.setCamera(camera);
+    const RenderedFrame a = gpu.renderOutputs(scene, keys), b = cpu.renderOutputs(scene, keys);
+    EXPECT_TRUE(a.image.rgb == b.image.rgb) << "cx " << cx;
+    EXPECT_TRUE(a.triangleIds == b.triangleIds) << "cx " << cx;
+    EXPECT_EQ(std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)), 0) << "cx " << cx;
+    EXPECT_GT(std::count_if(a.triangleIds.begin(), a.triangleIds.end(), [](int32_t t) { return t >= 0; }), 100);
+  }
 }
 
 // Alpha, depth and ids come from the keys: the same bytes on both backends, with samples too.

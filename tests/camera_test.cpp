@@ -1,4 +1,5 @@
 // Camera (docs/DESIGN.md "Camera"): image size from resolution, the basis, and where points land.
+#include "prepare/camera_fit.h"
 #include "prepare/scene_data.h"
 #include "scene/camera.h"
 #include "shaders/phong.h"
@@ -30,7 +31,7 @@ TEST(Camera, DefaultImageIs1385x923) {
   const View view = makeView(lookingAlongY());
   EXPECT_EQ(view.width, 1385);
   EXPECT_EQ(view.height, 923);
-  EXPECT_DOUBLE_EQ(view.focal, 800.0);
+  EXPECT_DOUBLE_EQ(view.focal.x, 800.0);
 }
 
 TEST(Camera, WidthAndHeightSetTheSizeAndKeepTheVerticalFov) {
@@ -38,7 +39,7 @@ TEST(Camera, WidthAndHeightSetTheSizeAndKeepTheVerticalFov) {
   const View view = makeView(c);
   EXPECT_EQ(view.width, 640);
   EXPECT_EQ(view.height, 480);
-  EXPECT_NEAR(view.focal, 240.0 / std::tan(glm::radians(30.0)), 1e-9);
+  EXPECT_NEAR(view.focal.y, 240.0 / std::tan(glm::radians(30.0)), 1e-9);
 }
 
 TEST(Camera, PointOnTheViewAxisLandsAtTheImageCentre) {
@@ -97,6 +98,61 @@ TEST(Camera, FarObjectKeepsPrecisionThroughDoubleOffsets) {
   const double focal = 50.0 / std::tan(glm::radians(0.0005));
   EXPECT_FLOAT_EQ(centre.x, 50.0f);
   EXPECT_NEAR(shifted.x - centre.x, focal * 0.001 / 1e6, 1e-3);
+}
+
+// A camera with intrinsics: fx 300, fy 200, principal point (40.25, 70) in OpenCV's pixel
+// coordinates (centres at integers), on a 160 x 100 image.
+CameraSpec withIntrinsics() {
+  CameraSpec c = withImageSize(lookingAlongY(), 160, 100);
+  c.intrinsics = true;
+  c.fx = 300;
+  c.fy = 200;
+  c.cx = 40.25;
+  c.cy = 70;
+  return c;
+}
+
+TEST(Camera, IntrinsicsProjectAsOpenCVDoes) {
+  // u = fx X / Z + cx, v = fy Y / Z + cy (Y down) in OpenCV's coordinates, + 0.5 in phongvk's,
+  // whose pixel centres sit at x + 0.5.
+  const CameraSpec c = withIntrinsics();
+  const glm::vec2 p = project(c, {1 + 0.5, 2 + 5, 3 - 0.25});  // X 0.5, Y 0.25, Z 5
+  EXPECT_FLOAT_EQ(p.x, float(300 * 0.5 / 5 + 40.25 + 0.5));
+  EXPECT_FLOAT_EQ(p.y, float(200 * 0.25 / 5 + 70 + 0.5));
+}
+
+TEST(Camera, SupersamplingScalesTheIntrinsics) {
+  const View view = supersampled(makeView(withIntrinsics()), 3);
+  EXPECT_EQ(view.focal, glm::dvec2(900, 600));
+  EXPECT_EQ(view.principal, glm::dvec2(3 * 40.75, 3 * 70.5));
+}
+
+TEST(Camera, ResizingKeepsTheVerticalFieldAndThePrincipalPointsPlace) {
+  const View view = makeView(withImageSize(withIntrinsics(), 320, 50));
+  EXPECT_EQ(view.focal, glm::dvec2(150, 100));            // scaled with the height: fx / fy kept
+  EXPECT_EQ(view.principal, glm::dvec2(81.5, 35.25));     // at the same share of each side
+}
+
+TEST(Camera, AFittedCameraNeedsThePrincipalPointInsideTheImage) {
+  SceneSpec scene;
+  scene.camera = withIntrinsics();
+  scene.camera.fit = true;
+  SceneData data;
+  data.boundsMin = {-1, -1, -1};
+  data.boundsMax = {1, 1, 1};
+  // The narrowest angle is to the left side, 40.75 px from the axis at fx 300 (the bottom is 29.5 px
+  // away at fy 200): the bounding sphere fills it with the 5% margin.
+  const SceneSpec framed = framedScene(scene, data);
+  const double distance = 1.05 * std::sqrt(3.0) / std::sin(std::atan(40.75 / 300));
+  EXPECT_NEAR(glm::length(framed.camera.position), distance, 1e-9);
+  scene.camera.cx = -3;
+  try {
+    framedScene(scene, data);
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "camera.fit: the principal point (cx, cy) = (-3, 70) is not inside the image, so no "
+                           "view centred on it frames the scene");
+  }
 }
 
 }  // namespace

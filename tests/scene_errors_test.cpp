@@ -100,7 +100,7 @@ TEST(SceneErrors, UnknownKeyAtTopLevel) {
 TEST(SceneErrors, UnknownKeyNested) {
   EXPECT_EQ(errorFor([](ordered_json& s) { s["camera"]["zoom"] = 2; }),
             "a.json: camera.zoom: unknown key (allowed: position, direction, look_at, up, fov, "
-            "aspect, resolution, width, height, near, far, fit)");
+            "aspect, resolution, width, height, near, far, fit, fx, fy, cx, cy)");
   EXPECT_EQ(
       materialError(R"({"shininess": 3})"),
       "a.json: materials.m.shininess: unknown key (allowed: ka, kd, ks, n, attenuation, color)");
@@ -247,6 +247,22 @@ TEST(SceneErrors, FovIsExclusive) {
             "a.json: camera.fov: must be > 0 and < 180, got 0");
   EXPECT_EQ(errorFor([](ordered_json& s) { s["camera"]["fov"] = 180; }),
             "a.json: camera.fov: must be > 0 and < 180, got 180");
+}
+
+TEST(SceneErrors, Intrinsics) {
+  const std::string eye = R"("position": [0, -5, 0], "look_at": [0, 0, 0], )";
+  const auto error = [&](const std::string& rest) { return cameraError(("{" + eye + rest + "}").c_str()); };
+  EXPECT_EQ(error(R"("fy": 100, "width": 64, "height": 48)"),
+            "a.json: camera: missing required field 'fx' (given 'fy', 'cx' or 'cy')");
+  EXPECT_EQ(error(R"("fx": 100, "fov": 40, "width": 64, "height": 48)"),
+            "a.json: camera.fov: cannot be given with 'fx': the intrinsics set the field of view");
+  EXPECT_EQ(error(R"("fx": 100)"), "a.json: camera: 'fx' needs 'width' and 'height' (the image the intrinsics describe)");
+  EXPECT_EQ(error(R"("fx": 0, "width": 64, "height": 48)"), "a.json: camera.fx: must be > 0 (a focal length in pixels), got 0");
+  EXPECT_EQ(error(R"("fx": 100, "fy": -1, "width": 64, "height": 48)"),
+            "a.json: camera.fy: must be between 0 and 1e+11, got -1");
+  EXPECT_EQ(error(R"("fx": 100, "cx": 40000, "width": 64, "height": 48)"),
+            "a.json: camera.cx: must be between -16384 and 32768, got 40000");
+  EXPECT_EQ(error(R"("fx": 100, "cx": 31.5, "cy": 23.5, "fy": 90, "width": 64, "height": 48)"), "(no error)");
 }
 
 TEST(SceneErrors, FarMustExceedNear) {

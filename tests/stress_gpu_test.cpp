@@ -159,7 +159,7 @@ TEST_F(StressTest, SharedEdgesOfAJitteredGrid) { renderScene("shared_edges.json"
 // `grid` as the only object of `base`: 1.4x the view wide, 3 m in front of the eye, tilted in
 // depth (0.5 x + 0.3 y) so edges are shared in perspective, moved by `shift` pixels.
 SceneData gridSceneData(SceneData base, const View& view, const test::TiledSquare& grid, glm::dvec2 shift) {
-  const double pixel = 3.0 / view.focal;  // metres per pixel at the grid's centre
+  const double pixel = 3.0 / view.focal.x;  // metres per pixel at the grid's centre
   base.vertices.clear();
   base.triangles.clear();
   for (glm::vec2 p : grid.positions) {

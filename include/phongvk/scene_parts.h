@@ -7,6 +7,7 @@
 #include "phongvk/export.h"
 
 #include <array>
+#include <optional>
 #include <string>
 
 namespace phongvk {
@@ -19,8 +20,23 @@ using Vec3 = std::array<double, 3>;
 using Matrix4 = std::array<double, 16>;
 inline constexpr Matrix4 IDENTITY_POSE = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
+// Pinhole intrinsics as datasets give them, in pixels and OpenCV's convention (pixel centres at
+// integer coordinates, so the centre of a W x H image is ((W - 1) / 2, (H - 1) / 2)): focal lengths
+// fx (across) and fy (down), principal point (cx, cy). fx and fy may differ (non-square pixels)
+// and the principal point may lie off centre, or outside the image within one largest image side
+// (16384 pixels) of it. A scene file's camera says them as "fx", "fy", "cx", "cy".
+struct Intrinsics {
+  double fx = 0;
+  double fy = 0;
+  double cx = 0;
+  double cy = 0;
+  bool operator==(const Intrinsics&) const = default;
+};
+
 // A pinhole camera: where it is, what it looks at, which way is up (world coordinates, z up by
 // default), the vertical field of view in degrees, and the image size (0 x 0: the scene's own).
+// With intrinsics (and then a width and height) the intrinsics set the field of view and fov is
+// not used.
 struct Camera {
   Vec3 position = {0, -5, 2};
   Vec3 lookAt = {0, 0, 0};
@@ -30,6 +46,7 @@ struct Camera {
   int height = 0;
   double nearPlane = 0.05;
   double farPlane = 1000;
+  std::optional<Intrinsics> intrinsics;
 };
 
 // The axes of a camera pose, as the tools that make poses use them:
@@ -43,11 +60,10 @@ enum class PoseConvention { OpenGL, OpenCV };
 PHONGVK_API Camera cameraFromPose(const Matrix4& cameraToWorld, PoseConvention convention, double fov, int width,
                                   int height);
 
-// The camera of pinhole intrinsics as datasets give them: focal lengths fx, fy and principal point
-// cx, cy in pixels (OpenCV's convention: pixel centres at integer coordinates), the image size,
-// and a camera-to-world pose. phongvk renders square pixels about the image centre, so fx must
-// equal fy and (cx, cy) be the centre ((width - 1) / 2, (height - 1) / 2), each within 1e-6
-// relative; anything else is an ArgumentError naming the value.
+// The camera of pinhole intrinsics as datasets give them (Intrinsics: fx, fy, cx, cy in pixels),
+// the image size, and a camera-to-world pose. Throws ArgumentError naming the value for a focal
+// length that is not positive and finite or an image smaller than 1 x 1; the rest is checked when
+// the camera is assigned to a scene (SceneError "camera.cx: ...", as a scene file's camera).
 PHONGVK_API Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int width, int height,
                                         const Matrix4& cameraToWorld,
                                         PoseConvention convention = PoseConvention::OpenCV);

@@ -31,8 +31,10 @@ class Camera:
     height: int
     near: float
     far: float
+    intrinsics: Optional[Tuple[float, float, float, float]]
     def __init__(self, *, position: Sequence[float] = ..., look_at: Sequence[float] = ..., up: Sequence[float] = ...,
-                 fov: float = ..., width: int = ..., height: int = ..., near: float = ..., far: float = ...) -> None: ...
+                 fov: float = ..., width: int = ..., height: int = ..., near: float = ..., far: float = ...,
+                 intrinsics: Optional[Sequence[float]] = None) -> None: ...
     @staticmethod
     def from_pose(pose: ArrayLike, *, convention: str = "opengl", fov: float = 60.0, width: int = 0,
                   height: int = 0) -> Camera: ...
