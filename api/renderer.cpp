@@ -5,6 +5,7 @@
 #include "api/timing.h"
 #include "api/scene_access.h"
 #include "prepare/camera_fit.h"
+#include "prepare/facing.h"
 #include "prepare/memory_estimate.h"
 #include "scene/camera.h"
 
@@ -26,6 +27,16 @@ void Renderer::Impl::frame(const SceneSpec& spec) {
 }
 
 namespace {
+
+// RendererStats::notice for a scene just built and framed.
+std::string noticeFor(const SceneSpec& spec, const SceneData& data, const CameraSpec& camera) {
+  if (!camera.fit || !seenOnlyFromBehind(data, camera.position)) return "";
+  const std::string name = spec.modelAlone && !spec.objects.empty() ? spec.objects[0].file
+                           : spec.path.empty()                      ? std::string("the scene")
+                                                                    : spec.path;
+  return name + ": the fitted camera sees only the back of every triangle (their normals face away from it), so "
+                "the model is drawn dark, lit from behind; give the camera another direction or turn the faces";
+}
 
 // The samples a frame of `spec` renders: its pixels times the samples per pixel (memory_estimate.h).
 uint64_t pixelSamples(const SceneSpec& spec) {
@@ -53,6 +64,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   data_ = buildSceneData(spec);
   checkBuiltSceneMemory(spec, data_->triangles.size(), samples);
   frame(spec);
+  notice_ = noticeFor(spec, *data_, camera_);
   buildMs_ += msSince(start);
   upload(*data_, boxMayClip(*data_, sampleView()));
   builtFrom_ = std::make_shared<const SceneSpec>(spec);
@@ -105,6 +117,7 @@ RendererStats Renderer::Impl::stats() const {
   s.triangles = data_ ? data_->triangles.size() : 0;
   s.buildMs = buildMs_;
   s.firstFrameMs = firstFrameMs_;
+  s.notice = notice_;
   s.validationMessages = validationMessages();
   addStartup(s);
   return s;

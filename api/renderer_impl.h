@@ -62,6 +62,7 @@ class Renderer::Impl {
   uint64_t framesRendered_ = 0;
   double buildMs_ = 0;
   double firstFrameMs_ = 0;  // RendererStats::firstFrameMs
+  std::string notice_;       // RendererStats::notice, set when a scene is built
 };
 
 struct RendererAccess {

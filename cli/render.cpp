@@ -87,6 +87,7 @@ int runRender(const RenderOptions& options) {
                 options.scene.c_str(), image.width, image.height, scene.objectCount(), stats.triangles,
                 scene.lightCount(), describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,
                 startupText(stats, renderer.backend()).c_str(), options.output.c_str());
+    if (!stats.notice.empty()) std::fprintf(stderr, "phongvk: notice: %s\n", stats.notice.c_str());
     return int(EXIT_OK);
   });
 }

@@ -320,6 +320,7 @@ py::dict statsDict(const RendererStats& s) {
   d["startup_probe_ms"] = s.probeMs;
   d["startup_pipelines_ms"] = s.pipelinesMs;
   d["first_frame_ms"] = s.firstFrameMs;
+  d["notice"] = s.notice;
   return d;
 }
 
@@ -707,7 +708,11 @@ same buffers; the graphics backend has none (ValueError).)")
                              "start-up went (Vulkan backends; 0 for the reference): startup_vulkan_ms "
                              "(instance and device), startup_probe_ms (the float probe; 0 when cached), "
                              "startup_pipelines_ms, first_frame_ms (the first frame on the device: on "
-                             "lavapipe with an empty Mesa shader cache, mostly code generation).");
+                             "lavapipe with an empty Mesa shader cache, mostly code generation); notice "
+                             "(a sentence on what a user may not expect of the last scene's picture, such as "
+                             "a fitted camera that sees only the back of every triangle; empty when none).")
+      .def_property_readonly("notice", [](const Renderer& r) { return r.stats().notice; },
+                             "stats['notice'] alone: Renderer.render warns with it (phongvk.NoticeWarning).");
 
   m.def(
       "diff",

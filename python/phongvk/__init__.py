@@ -13,6 +13,7 @@ this package only shapes it for Python.
 """
 
 import sys as _sys
+import warnings as _warnings
 
 try:
     import numpy as _np
@@ -54,7 +55,8 @@ for _name in ("ArgumentError", "Camera", "DeviceError", "Error", "Light", "Mater
     getattr(_phongvk, _name).__module__ = __name__
 
 __all__ = [
-    "ArgumentError", "Camera", "DeviceError", "Error", "Image", "Light", "Material", "NO_TRIANGLE", "PNG_LEVEL_DEFAULT",
+    "ArgumentError", "Camera", "DeviceError", "Error", "Image", "Light", "Material", "NO_TRIANGLE", "NoticeWarning",
+    "PNG_LEVEL_DEFAULT",
     "NoDeviceError", "OutputError", "RangeError", "RenderSettings", "Renderer", "Scene", "SceneError",
     "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
 ]
@@ -66,6 +68,11 @@ class Image(_np.ndarray):
 
     def _repr_png_(self):
         return encode_png(_np.asarray(self))
+
+
+class NoticeWarning(UserWarning):
+    """What a user may not expect of a picture (Renderer.stats["notice"]): a fitted camera that
+    sees only the back of every triangle, so the model is drawn dark."""
 
 
 class Renderer(_phongvk.Renderer):
@@ -87,12 +94,14 @@ class Renderer(_phongvk.Renderer):
         With samples per pixel, depth, ids and normal are the pixel's nearest sample's. Every output
         is the same bytes on the gpu and cpu backends; the graphics backend gives color only."""
         if outputs is None:
-            return super().render(scene, width, height).view(Image)
-        if isinstance(outputs, str):
-            outputs = [outputs]
-        result = self.render_outputs(scene, list(outputs), width, height)
-        if "color" in result:
-            result["color"] = result["color"].view(Image)
+            result = super().render(scene, width, height).view(Image)
+        else:
+            result = self.render_outputs(scene, [outputs] if isinstance(outputs, str) else list(outputs), width, height)
+            if "color" in result:
+                result["color"] = result["color"].view(Image)
+        notice = self.notice
+        if notice:
+            _warnings.warn(notice, NoticeWarning, stacklevel=2)
         return result
 
     def render_visibility(self, scene, width=None, height=None):

@@ -1,0 +1,20 @@
+// facing.cpp — see facing.h.
+#include "prepare/facing.h"
+
+namespace phongvk {
+
+bool seenOnlyFromBehind(const SceneData& data, const glm::dvec3& eye) {
+  size_t back = 0;
+  for (const glm::uvec4& t : data.triangles) {
+    const glm::dvec3 origin = data.objectOrigins[t.w];
+    const glm::dvec3 p0 = origin + glm::dvec3(data.vertices[t.x].position);
+    const glm::dvec3 p1 = origin + glm::dvec3(data.vertices[t.y].position);
+    const glm::dvec3 p2 = origin + glm::dvec3(data.vertices[t.z].position);
+    const double side = glm::dot(glm::cross(p1 - p0, p2 - p0), eye - p0);
+    if (side > 0) return false;  // a front face is in sight
+    back += side < 0;
+  }
+  return back > 0;
+}
+
+}  // namespace phongvk
