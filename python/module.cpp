@@ -38,6 +38,20 @@ py::array_t<uint8_t> imageArray(Image&& image) {
   return ownedArray(std::move(image.rgb), {h, w, 3});
 }
 
+// read_png: the file's pixels in the form `mode` names.
+py::array pngArray(const std::string& path, const std::string& mode) {
+  if (mode == "rgb") return imageArray(readPng(path));
+  if (mode == "rgba") {
+    ImageRGBA image = readPngRGBA(path);
+    return ownedArray(std::move(image.rgba), {image.height, image.width, 4});
+  }
+  if (mode == "grey16") {
+    ImageGrey16 image = readPngGrey16(path);
+    return ownedArray(std::move(image.grey), {image.height, image.width});
+  }
+  throw ArgumentError("mode: expected 'rgb', 'rgba' or 'grey16', got '" + mode + "'");
+}
+
 std::string shapeText(const py::array& a) {
   std::string text = "(";
   for (py::ssize_t i = 0; i < a.ndim(); ++i) text += (i ? ", " : "") + std::to_string(a.shape(i));
@@ -738,8 +752,10 @@ mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as 
         "(height, width, 4) uint8 as RGBA, (height, width) uint16 as 16-bit grey (a depth in millimetres, ids). "
         "level: deflate level, 0 (stored) to 12 (smallest); the same pixels at every level. Raises OutputError, "
         "or ValueError for another array or a level out of range.");
-  m.def("read_png", [](const std::string& path) { return imageArray(readPng(path)); }, py::arg("path"),
-        "Reads a PNG as a (height, width, 3) uint8 array.");
+  m.def("read_png", &pngArray, py::arg("path"), py::arg("mode") = "rgb",
+        "Reads a PNG as mode says: \"rgb\" a (height, width, 3) uint8 array, \"rgba\" (height, width, 4) "
+        "uint8 (alpha 255 where the file has none), \"grey16\" (height, width) uint16 (a depth PNG's "
+        "millimetres, an ids PNG's index + 1; 8-bit samples scaled by 257).");
   m.def("encode_png", [](const py::array& image, int level) {
     const PngImage pixels = pngImageFromArray(image);
     std::vector<uint8_t> png;

@@ -111,6 +111,10 @@ class Renderer(_phongvk.Renderer):
     render_visibility.__doc__ = _phongvk.Renderer.render_visibility.__doc__
 
 
-def read_png(path):
-    """Reads a PNG as an Image (a uint8 array of shape (height, width, 3))."""
-    return _phongvk.read_png(path).view(Image)
+def read_png(path, mode="rgb"):
+    """Reads a PNG as an Image (a uint8 array of shape (height, width, 3)); with mode="rgba" as a
+    (height, width, 4) uint8 array (alpha 255 where the file has none), with mode="grey16" as a
+    (height, width) uint16 array (what render --depth and --ids write: millimetres, index + 1;
+    8-bit samples scaled by 257)."""
+    pixels = _phongvk.read_png(path, mode)
+    return pixels.view(Image) if mode == "rgb" else pixels

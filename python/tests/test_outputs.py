@@ -116,6 +116,14 @@ def test_rgba_and_16_bit_depth_pngs_read_back_by_pil(tmp_path):
         assert phongvk.encode_png(depth_mm, level) == (tmp_path / "depth.png").read_bytes()
     assert 0 < (depth_mm == 0).sum() < depth_mm.size and depth_mm.max() > 255  # empty pixels, and a high byte
     assert np.array_equal(phongvk.read_png(str(tmp_path / "rgba.png")), frame["rgba"][..., :3])
+    rgba, depth = phongvk.read_png(str(tmp_path / "rgba.png"), "rgba"), phongvk.read_png(str(tmp_path / "depth.png"), "grey16")
+    assert rgba.dtype == np.uint8 and np.array_equal(rgba, frame["rgba"])
+    assert depth.dtype == np.uint16 and np.array_equal(depth, depth_mm)
+    phongvk.write_png(str(tmp_path / "rgb.png"), frame["rgba"][..., :3].copy())
+    opaque = phongvk.read_png(str(tmp_path / "rgb.png"), "rgba")  # a file without alpha reads as opaque
+    assert np.array_equal(opaque[..., :3], frame["rgba"][..., :3]) and (opaque[..., 3] == 255).all()
+    with pytest.raises(ValueError, match=r"mode: expected 'rgb', 'rgba' or 'grey16', got 'rgb16'"):
+        phongvk.read_png(str(tmp_path / "rgba.png"), "rgb16")
 
 
 @pytest.mark.parametrize("array", [np.zeros((4, 5, 2), np.uint8), np.zeros((4, 5), np.uint8),
