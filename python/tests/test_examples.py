@@ -1,11 +1,12 @@
-"""examples/python: the ka sweep script and notebook run from a clean process and produce their
-figure (the notebook's cells executed by nbconvert; the rendered image shows as a PNG there)."""
+"""examples/python: the ka sweep and dataset scripts and notebooks run from a clean process and
+produce their files and figures (a notebook's cells executed by nbconvert; images show as PNGs there)."""
 
 import json
 import subprocess
 import sys
 
 import PIL.Image
+import pytest
 
 from conftest import SOURCE_DIR, child_environment
 
@@ -20,15 +21,20 @@ def test_ka_sweep_script_writes_its_grid(tmp_path):
     assert PIL.Image.open(out).size == (960, 540)
 
 
-def test_notebook_runs_and_shows_images(tmp_path):
-    out = tmp_path / "ka_sweep.ipynb"
+@pytest.mark.parametrize("notebook", ["ka_sweep.ipynb", "dataset.ipynb"])
+def test_notebook_runs_and_shows_images(tmp_path, notebook):
+    """ka_sweep: the Image itself and the grid; dataset: the views' grid and the lifted points,
+    every view's points inside the model's box."""
+    out = tmp_path / notebook
     subprocess.run([sys.executable, "-m", "nbconvert", "--to", "notebook", "--execute",
-                    str(EXAMPLES / "ka_sweep.ipynb"), "--output", str(out)],
+                    str(EXAMPLES / notebook), "--output", str(out)],
                    capture_output=True, text=True, env=child_environment(), cwd=EXAMPLES, check=True)
     cells = [c for c in json.loads(out.read_text())["cells"] if c["cell_type"] == "code"]
     outputs = [o for c in cells for o in c["outputs"]]
     assert not [o for o in outputs if o["output_type"] == "error"]
-    assert sum("image/png" in o.get("data", {}) for o in outputs) >= 2  # the Image itself and the grid
+    assert sum("image/png" in o.get("data", {}) for o in outputs) >= 2
+    if notebook == "dataset.ipynb":
+        assert "100.0% inside the model's box" in "".join(outputs[-2]["data"]["text/plain"])
 
 
 def test_dataset_script_writes_views_whose_cameras_and_depths_agree(tmp_path):
