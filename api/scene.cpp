@@ -10,6 +10,7 @@
 #include "scene/camera.h"
 #include "scene/mesh_arrays.h"
 #include "scene/scene.h"
+#include "scene/scene_write.h"
 
 #include <optional>
 #include <stdexcept>
@@ -182,6 +183,8 @@ Vec3 Scene::ambient() const { return ambientOf(*state_->spec); }
 void Scene::setAmbient(const Vec3& ambient) {
   *this = state_->with(std::make_shared<const SceneSpec>(withAmbient(*state_->spec, ambient)));
 }
+
+std::string Scene::toJson() const { return sceneJson(*state_->spec).dump(2); }
 
 int Scene::frameCount() const { return state_->sequence ? state_->sequence->frameCount() : 1; }
 

@@ -617,6 +617,17 @@ trimesh.Trimesh works), or vertices with faces; material and closed as in add_me
       .def_property("ambient", &Scene::ambient, &Scene::setAmbient,
                     "The ambient light, RGB (default white); assigning one checks it like a scene file's "
                     "\"ambient\".")
+      .def("to_json", &Scene::toJson,
+           R"(The scene as scene file JSON text (str): scene_from_dict(json.loads(text)) or load_scene
+of the text saved gives a scene that renders the same bytes, and whose to_json() is this text again.
+Every value is written: the camera, lights, materials (named ones by name, every other inline),
+each object's parameters, scale and rotation (as {"matrix": rows}), mesh files by absolute path,
+meshes added with add() or add_mesh() inline as "vertices", "faces" and "normals" at their poses,
+and the render settings. An animated scene writes this frame, without its "animate" block.)")
+      .def(
+          "to_dict", [](const Scene& s) { return py::module_::import("json").attr("loads")(s.toJson()); },
+          R"(The scene as a dict with the scene file's schema (to_json() read by json.loads):
+phongvk.scene_from_dict(scene.to_dict()) renders the same bytes.)")
       .def("__repr__", [](const Scene& s) {
         return "<phongvk.Scene " + (s.path().empty() ? std::string("(no file)") : s.path()) + ": " +
                std::to_string(s.objectCount()) + " objects, " + std::to_string(s.lightCount()) + " lights, " +

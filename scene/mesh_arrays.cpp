@@ -4,7 +4,9 @@
 #include "scene/scene_json.h"
 #include "scene/scene_sections.h"
 
+#include <cfloat>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace phongvk {
@@ -56,6 +58,14 @@ void checkIndices(const std::vector<int64_t>& t, size_t vertices) {
 
 glm::dvec3 rowOf(const std::vector<float>& xyz, size_t row) { return {xyz[3 * row], xyz[3 * row + 1], xyz[3 * row + 2]}; }
 
+// A normal of unit length as far as a float can say (as built meshes hold them, and as a scene
+// written back gives them inline) is kept as given, so that such rows read back unchanged;
+// any other is normalised.
+glm::vec3 unitNormal(const glm::dvec3& n) {
+  if (std::abs(glm::dot(n, n) - 1.0) <= 4.0 * double(FLT_EPSILON)) return glm::vec3(n);
+  return glm::vec3(glm::normalize(n));
+}
+
 }  // namespace
 
 Mesh meshFromArrays(const MeshArrays& a) {
@@ -70,7 +80,7 @@ Mesh meshFromArrays(const MeshArrays& a) {
     if (!std::isfinite(glm::length(n)) || glm::length(n) == 0.0) {
       failRow("normals", v, "has no direction: " + rowText(a.normals, v));
     }
-    mesh.normals.push_back(glm::vec3(glm::normalize(n)));
+    mesh.normals.push_back(unitNormal(n));
   }
   for (size_t k = 0; k < a.triangles.size(); k += 3) {
     const glm::uvec3 t(uint32_t(a.triangles[k]), uint32_t(a.triangles[k + 1]), uint32_t(a.triangles[k + 2]));
@@ -98,4 +108,74 @@ void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const sce
   scene = std::move(changed);
 }
 
+namespace scenejson {
+namespace {
+
+// Rows of 3 numbers (each a 32-bit float) as one flat array, as MeshArrays holds them.
+std::vector<float> floatRows(const Node& node) {
+  requireArray(node);
+  std::vector<float> values;
+  values.reserve(3 * node.json().size());
+  for (size_t i = 0; i < node.json().size(); ++i) {
+    const glm::dvec3 row = vec3(node.element(i), floatComponent);
+    values.insert(values.end(), {float(row.x), float(row.y), float(row.z)});
+  }
+  return values;
+}
+
+double index(const Node& node) {
+  return integer(node, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+}
+
+std::vector<int64_t> indexRows(const Node& node) {
+  requireArray(node);
+  std::vector<int64_t> values;
+  values.reserve(3 * node.json().size());
+  for (size_t i = 0; i < node.json().size(); ++i) {
+    const glm::dvec3 row = vec3(node.element(i), index);
+    values.insert(values.end(), {int64_t(row.x), int64_t(row.y), int64_t(row.z)});
+  }
+  return values;
+}
+
+// One [r, g, b, a] row of integers 0..255 per vertex, as RGBA8 (red in the low byte).
+std::vector<uint32_t> colorRows(const Node& node, size_t vertices) {
+  requireArray(node);
+  if (node.json().size() != vertices) {
+    node.fail("expected one row per vertex (" + std::to_string(vertices) + "), got " + std::to_string(node.json().size()));
+  }
+  std::vector<uint32_t> colors;
+  for (size_t i = 0; i < vertices; ++i) {
+    const Node row = node.element(i);
+    requireArray(row);
+    if (row.json().size() != 4) row.fail("must be [r, g, b, a], 4 integers 0..255, got " + std::to_string(row.json().size()) + " elements");
+    uint32_t rgba = 0;
+    for (size_t c = 0; c < 4; ++c) rgba |= uint32_t(integer(row.element(c), 0, 255)) << (8 * c);
+    colors.push_back(rgba);
+  }
+  return colors;
+}
+
+}  // namespace
+
+std::shared_ptr<const Mesh> readMeshArrays(const Node& object) {
+  MeshArrays arrays;
+  arrays.positions = floatRows(object.require("vertices"));
+  arrays.triangles = indexRows(object.require("faces"));
+  if (auto normals = object.find("normals")) arrays.normals = floatRows(*normals);
+  Mesh mesh;
+  try {
+    mesh = meshFromArrays(arrays);
+  } catch (const ArgumentError& error) {
+    // "faces: row 2 has index 9, ..." becomes "objects[0].faces: row 2 has index 9, ...".
+    const std::string message = error.what();
+    const size_t colon = message.find(": ");
+    if (colon == std::string::npos) object.fail(message);
+    object.failAt(message.substr(0, colon), message.substr(colon + 2));
+  }
+  if (auto colors = object.find("colors")) mesh.colors = colorRows(*colors, mesh.positions.size());
+  return std::make_shared<const Mesh>(std::move(mesh));
+}
+
+}  // namespace scenejson
 }  // namespace phongvk

@@ -6,6 +6,7 @@
 #include "meshio/mesh_file.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 namespace phongvk::scenejson {
@@ -26,7 +27,7 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
-    {Shape::Mesh, "mesh", {"file", "translate", "up"}},
+    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "translate", "up"}},
 };
 
 
@@ -86,6 +87,20 @@ void resolveMeshFile(const Node& node, const std::string& baseDir, Object& objec
   object.fileTriangles = meshFileTriangles(object.file, *format.format, object.fileVersion.bytes);
 }
 
+// A mesh's "file", or its arrays inline ("vertices", "faces", and "normals", "colors" if any).
+void readMeshSource(const Node& node, const std::string& baseDir, Object& object) {
+  const std::optional<Node> file = node.find("file");
+  if (!node.find("vertices")) {
+    for (std::string_view key : {"faces", "normals", "colors"}) {
+      if (node.find(key)) node.failAt(key, "needs 'vertices' (a mesh given inline)");
+    }
+    resolveMeshFile(node.require("file"), baseDir, object);
+    return;
+  }
+  if (file) file->fail("cannot be given with 'vertices': a mesh is a file or arrays");
+  object.arrays = readMeshArrays(node);
+}
+
 // Each geometry key means the same for every shape that takes it, and checkObjectKeys has
 // already rejected the keys this shape does not take, so one reader serves all shapes.
 void readGeometry(const Node& node, Object& object, const std::string& baseDir) {
@@ -97,9 +112,7 @@ void readGeometry(const Node& node, Object& object, const std::string& baseDir) 
   if (auto rings = node.find("rings")) object.rings = integer(*rings, 1, 4096);
   if (auto translate = node.find("translate")) object.translate = point(*translate);
   if (object.shape == Shape::Polyhedron) object.points = readPoints(node.require("points"));
-  if (object.shape == Shape::Mesh) {
-    resolveMeshFile(node.require("file"), baseDir, object);
-  }
+  if (object.shape == Shape::Mesh) readMeshSource(node, baseDir, object);
 }
 
 // A scale factor: non-zero (a negative one mirrors), within the coordinates a scene may use.
@@ -116,10 +129,32 @@ glm::dvec3 readScale(const Node& node) {
 
 double angle(const Node& node) { return inRange(node, -1e6, 1e6); }
 
-// [x, y, z] degrees (about x first, then y, then z), or {"axis": [x, y, z], "angle": degrees}.
+// {"matrix": [[a, b, c], [d, e, f], [g, h, i]]}: any invertible linear map, row-major, as a
+// pose's upper 3x3 block (api/scene_parts.cpp placeObject) takes it.
+glm::dmat3 readMatrix(const Node& node) {
+  requireArray(node);
+  if (node.json().size() != 3) node.fail("must be an array of 3 rows, got " + std::to_string(node.json().size()));
+  glm::dmat3 m;
+  for (int r = 0; r < 3; ++r) {
+    const glm::dvec3 row = vec3(node.element(size_t(r)));
+    for (int c = 0; c < 3; ++c) m[c][r] = row[c];  // glm: m[column][row]
+  }
+  const double det = glm::determinant(m);
+  if (!(std::abs(det) > 0)) node.fail("must be invertible, got determinant " + formatNumber(det));
+  return m;
+}
+
+// [x, y, z] degrees (about x first, then y, then z), {"axis": [x, y, z], "angle": degrees}, or
+// {"matrix": rows}.
 glm::dmat3 readRotation(const Node& node) {
   if (!node.json().is_object()) return rotationXYZ(vec3(node, angle));
-  checkKeys(node, {"axis", "angle"});
+  checkKeys(node, {"axis", "angle", "matrix"});
+  if (const std::optional<Node> matrix = node.find("matrix")) {
+    for (std::string_view key : {"axis", "angle"}) {
+      if (node.find(key)) node.failAt(key, "cannot be given with 'matrix'");
+    }
+    return readMatrix(*matrix);
+  }
   const Node axis = node.require("axis");
   return rotationAxisAngle(usableDirection(axis, vec3(axis)), angle(node.require("angle")));
 }
@@ -139,7 +174,7 @@ void readTransform(const Node& node, Object& object) {
 // A glTF file's base colours are its objects' colours unless the scene sets one: a named material,
 // or an inline one with a "color". The object's material is then white, for them to multiply.
 bool takesBaseColors(const Node& node, const Object& object) {
-  if (object.shape != Shape::Mesh) return false;
+  if (object.shape != Shape::Mesh || object.arrays) return false;
   const MeshFormat format = meshFormat(object.file, object.jsonPath + ".file");
   if (format != MeshFormat::Gltf && format != MeshFormat::Glb) return false;
   const std::optional<Node> material = node.find("material");

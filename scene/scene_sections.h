@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "scene/scene_json.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction);
 CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
 std::vector<LightSpec> readLights(const Node& node);  // scene_lighting.cpp
 MaterialSpec readMaterial(const Node& node);          // scene_lighting.cpp
+// A mesh object's arrays given inline ("vertices", "faces", "normals", "colors"), built as
+// Scene::addMesh builds arrays (mesh_arrays.cpp), with its messages under the object's path.
+std::shared_ptr<const Mesh> readMeshArrays(const Node& object);
 
 // A scene's materials as objects take them (SceneSpec::materials, materialNames, defaultMaterial):
 // the named materials first, in file order, then one entry per inline material, and one shared

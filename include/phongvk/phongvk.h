@@ -107,6 +107,19 @@ class PHONGVK_API Scene {
   Vec3 ambient() const;
   void setAmbient(const Vec3& ambient);
 
+  // The scene as scene file JSON text (docs/DESIGN.md "Scene file"): parseScene (or loadScene of
+  // the text saved) reads it back into a scene that renders the same bytes, and whose toJson is
+  // this text again. Every value is written explicitly: the camera (its image as width and height,
+  // or as the resolution and aspect that set it), lights, named materials by name and every other
+  // material inline (the default one with its values), each object with its shape's parameters,
+  // scale, rotation as {"matrix": rows}, mesh files by absolute path and meshes added as arrays
+  // inline ("vertices", "faces", "normals"; at their poses), and the "render" section. An animated
+  // scene writes this frame (no "animate" block); a model file loaded alone writes as the scene
+  // made around it. Objects added in code become the text's own objects: the scene read back has
+  // no handles for setPose or remove, and a mesh added to it later without a material gets the
+  // scene file's default material.
+  std::string toJson() const;
+
   // The frames of the file's "animate" block (1 without one; this scene is frame 0), each
   // validated like a scene file, with the meshes added with addMesh or add (built once, at their
   // poses); the camera and lights are the file's frame's. frame throws
