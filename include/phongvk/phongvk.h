@@ -209,6 +209,10 @@ struct RendererStats {
   // machine code when the pass first runs, so on a new machine (no Mesa shader cache yet) this is
   // most of a first render; later processes take the code from the cache.
   double firstFrameMs = 0;
+  // What a user may not expect of the last scene's picture, in a sentence naming the file; empty
+  // when nothing. A fitted camera that sees only the back of every triangle (a one-sided polygon
+  // or an open mesh whose normals face away) says so: the model is drawn dark, lit from behind.
+  std::string notice;
 };
 
 // What a frame can give besides its colours (Renderer::renderOutputs).
@@ -222,10 +226,6 @@ struct Outputs {
   // frame's shading uses there: flat, the triangle's face normal; Gouraud and Phong, the vertex
   // normals interpolated at the pixel (perspective-correct or not, as render.interpolation says)
   // and normalized. On a back face (an open object's) it is the stored normal, facing away from
-  // What a user may not expect of the last scene's picture, in a sentence naming the file; empty
-  // when nothing. A fitted camera that sees only the back of every triangle (a one-sided polygon
-  // or an open mesh whose normals face away) says so: the model is drawn dark, lit from behind.
-  std::string notice;
   // the camera, not flipped.
   bool normals = false;
 };
