@@ -3,6 +3,7 @@
 #include "phongvk/phongvk.h"
 
 #include "api/scene_access.h"
+#include "api/triangle_mesh_access.h"
 #include "api/scene_parts.h"
 #include "prepare/scene_data.h"
 
@@ -58,9 +59,10 @@ struct Scene::State {
   size_t objectIndex(size_t i) const { return spec->objects.size() - added.size() + i; }
 
   // Adds `mesh` to `scene` (whose state this is) with `material` as a scene file's "material".
-  ObjectId add(Scene& scene, const MeshArrays& mesh, const Matrix4& pose, scenejson::Json material, bool closed) const {
+  ObjectId add(Scene& scene, std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::Json material,
+               bool closed) const {
     const ObjectId id{nextId};
-    const AddedMesh added{id, std::make_shared<const Mesh>(meshFromArrays(mesh)), std::move(material), closed, pose};
+    const AddedMesh added{id, std::move(mesh), std::move(material), closed, pose};
     scene = changed([&](SceneSpec& spec, State& state) {
       appendAdded(spec, added);
       state.added.push_back(added);
@@ -136,11 +138,21 @@ void Scene::addMesh(const MeshArrays& mesh, const std::string& materialName, boo
 
 ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::optional<Material>& material,
                     bool closed) {
-  return state_->add(*this, mesh, pose, material ? materialJson(*material) : scenejson::Json(), closed);
+  return add(TriangleMesh(mesh), pose, material, closed);
 }
 
 ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::string& materialName, bool closed) {
-  return state_->add(*this, mesh, pose, scenejson::Json(materialName), closed);
+  return add(TriangleMesh(mesh), pose, materialName, closed);
+}
+
+ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::optional<Material>& material,
+                    bool closed) {
+  return state_->add(*this, TriangleMeshAccess::mesh(mesh), pose, material ? materialJson(*material) : scenejson::Json(),
+                     closed);
+}
+
+ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::string& materialName, bool closed) {
+  return state_->add(*this, TriangleMeshAccess::mesh(mesh), pose, scenejson::Json(materialName), closed);
 }
 
 void Scene::setPose(ObjectId object, const Matrix4& pose) {

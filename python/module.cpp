@@ -132,8 +132,8 @@ py::array asArray(const py::handle& value, const char* name, bool floats) {
 MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const py::object& normals) {
   if (faces.is_none()) {
     if (!py::hasattr(vertices, "vertices") || !py::hasattr(vertices, "faces")) {
-      throw py::type_error("add_mesh: expected vertices and faces, or one object with .vertices and .faces "
-                           "arrays (a trimesh.Trimesh, for one), got " +
+      throw py::type_error("add_mesh: expected vertices and faces, a phongvk.Mesh, or one object with .vertices "
+                           "and .faces arrays (a trimesh.Trimesh, for one), got " +
                            std::string(py::str(py::type::of(vertices).attr("__name__"))));
     }
     return meshArrays(vertices.attr("vertices"), vertices.attr("faces"), normals);
@@ -217,19 +217,35 @@ std::optional<Material> materialOf(const py::object& material) {
   return value.cast<Material>();
 }
 
+// What add and add_mesh place: a phongvk.Mesh as it is (shared, built once), or arrays built now.
+TriangleMesh meshOf(const py::object& vertices, const py::object& faces, const py::object& normals) {
+  if (!py::isinstance<TriangleMesh>(vertices)) return TriangleMesh(meshArrays(vertices, faces, normals));
+  if (!faces.is_none() || !normals.is_none())
+    throw py::type_error("faces and normals: not given with a phongvk.Mesh, which has its own");
+  return vertices.cast<TriangleMesh>();
+}
+
+unsigned long long addPlaced(Scene& scene, const TriangleMesh& mesh, const Matrix4& pose, const py::object& material,
+                             bool closed) {
+  if (py::isinstance<py::str>(material)) return scene.add(mesh, pose, material.cast<std::string>(), closed).value;
+  return scene.add(mesh, pose, materialOf(material), closed).value;
+}
+
 void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, const py::object& normals,
              const py::object& material, bool closed) {
-  const MeshArrays mesh = meshArrays(vertices, faces, normals);
-  if (py::isinstance<py::str>(material)) return scene.addMesh(mesh, material.cast<std::string>(), closed);
-  scene.addMesh(mesh, materialOf(material), closed);
+  addPlaced(scene, meshOf(vertices, faces, normals), IDENTITY_POSE, material, closed);
 }
 
 unsigned long long addObject(Scene& scene, const py::object& object, const py::object& faces, const py::object& pose,
                              const py::object& material, bool closed) {
-  const MeshArrays mesh = meshArrays(object, faces, py::none());
-  const Matrix4 placed = matrix4(pose, "pose");
-  if (py::isinstance<py::str>(material)) return scene.add(mesh, placed, material.cast<std::string>(), closed).value;
-  return scene.add(mesh, placed, materialOf(material), closed).value;
+  const TriangleMesh mesh = meshOf(object, faces, py::none());
+  return addPlaced(scene, mesh, matrix4(pose, "pose"), material, closed);
+}
+
+TriangleMesh meshFromFile(const std::string& path, const std::optional<std::string>& up) {
+  const ModelUp axis = up ? parseModelUp(*up) : ModelUp::Usual;
+  py::gil_scoped_release release;
+  return TriangleMesh::fromFile(path, axis);
 }
 
 // `scene` with_render(settings, **options): `settings` (a phongvk.RenderSettings, a dict of its
@@ -553,6 +569,26 @@ scene takes the settings (Scene.render_settings, with_render), like a scene file
                "', samples=" + std::to_string(s.samples) + ", background=" + vec3Text(s.background) + ")";
       });
 
+  py::class_<TriangleMesh>(m, "Mesh", R"(A triangle mesh built once, which Scene.add and add_mesh place as many
+times as asked without building or holding it again: Mesh(vertices, faces, normals=None) from
+arrays (or one object with .vertices and .faces, a trimesh.Trimesh), checked as add_mesh checks
+them, or Mesh.from_file(path, up=None) from an OBJ, PLY, STL, glTF or GLB file.)")
+      .def(py::init([](const py::object& vertices, const py::object& faces, const py::object& normals) {
+             return TriangleMesh(meshArrays(vertices, faces, normals));
+           }),
+           py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none())
+      .def_static("from_file", &meshFromFile, py::arg("path"), py::arg("up") = py::none(),
+                  R"(A mesh file read as a model rendered alone reads it: stood up by up ("y" or "z"; None: the
+format's usual axis, y for glTF and OBJ, z for PLY and STL), a glTF's base colours as vertex colours,
+in the file's coordinates (the pose it is added with places it). SceneError naming the file and its
+line for a bad file.)")
+      .def_property_readonly("vertex_count", &TriangleMesh::vertexCount)
+      .def_property_readonly("triangle_count", &TriangleMesh::triangleCount)
+      .def("__repr__", [](const TriangleMesh& mesh) {
+        return "<phongvk.Mesh: " + std::to_string(mesh.vertexCount()) + " vertices, " +
+               std::to_string(mesh.triangleCount()) + " triangles>";
+      });
+
   py::class_<Scene>(m, "Scene", R"(A validated scene: camera, lights, materials, objects.
 
 Made by Scene(width, height) (an empty scene to build in code: the default Camera at that size,
@@ -583,8 +619,9 @@ RenderSettings' (shading, specular, interpolation, samples, background). Checked
            R"(Adds a triangle mesh object; it follows the scene into its other frames (frame(i)).
 
 vertices: (N, 3) floating-point array of world positions (or rows of 3 numbers), or, with
-    faces left out, one mesh object with .vertices and .faces arrays (a trimesh.Trimesh works
-    without phongvk importing trimesh).
+    faces left out, a phongvk.Mesh (built once, shared by every object that adds it) or one mesh
+    object with .vertices and .faces arrays (a trimesh.Trimesh works without phongvk importing
+    trimesh).
 faces: (M, 3) integer array of vertex indices (or rows of 3 integers), counter-clockwise seen
     from outside.
 normals: optional (N, 3) floating-point array of vertex normals; computed from the faces
@@ -599,8 +636,9 @@ argument and the first bad row; a bad material raises SceneError.)")
       .def("add", &addObject, py::arg("mesh"), py::arg("faces") = py::none(), py::kw_only(),
            py::arg("pose") = py::none(), py::arg("material") = py::none(), py::arg("closed") = false,
            R"(Adds a mesh placed by a (4, 4) local-to-world pose (identity when None) and returns its
-handle, for set_pose and remove. mesh: one object with .vertices and .faces arrays (a
-trimesh.Trimesh works), or vertices with faces; material and closed as in add_mesh.)")
+handle, for set_pose and remove. mesh: a phongvk.Mesh (built once: placing it many times builds
+and holds it once), one object with .vertices and .faces arrays (a trimesh.Trimesh works), or
+vertices with faces; material and closed as in add_mesh.)")
       .def(
           "set_pose", [](Scene& s, unsigned long long id, const py::object& pose) { s.setPose(ObjectId{id}, matrix4(pose, "pose")); },
           py::arg("object"), py::arg("pose"), "Moves an object added with add() (IndexError for an unknown handle).")

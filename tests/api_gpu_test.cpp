@@ -226,6 +226,48 @@ TEST(Api, TypedCameraLightsAndPosesRenderAsTheSameSceneWritten) {
   EXPECT_THROW(built.setCamera(outside), SceneError);  // beyond one largest image side
 }
 
+// A mesh built once and placed twice renders as the same arrays added twice; one from a file as
+// the scene file's mesh object of that file; and bad input is the usual errors.
+TEST(Api, TriangleMeshesAreSharedAndRenderAsTheirSources) {
+  MeshArrays tri;
+  tri.positions = {0, 0, 0, 1, 0, 0, 0, 0, 1};
+  tri.triangles = {0, 1, 2};
+  const TriangleMesh shared(tri);
+  EXPECT_EQ(shared.vertexCount(), 3u);
+  EXPECT_EQ(shared.triangleCount(), 1u);
+  Scene once(96, 64), twice(96, 64);
+  Matrix4 pose = IDENTITY_POSE;
+  for (const double x : {-0.75, 0.25}) {
+    pose[3] = x;
+    once.add(shared, pose);
+    twice.add(tri, pose);
+  }
+  Renderer cpu(Backend::Cpu), gpu(validatedGpu());
+  EXPECT_TRUE(cpu.render(once).rgb == cpu.render(twice).rgb);
+  EXPECT_TRUE(gpu.render(once).rgb == cpu.render(twice).rgb);
+
+  const std::string torus = source("scenes/meshes/torus.obj");
+  const TriangleMesh fromFile = TriangleMesh::fromFile(torus, ModelUp::Z);
+  Scene built(96, 64), written = parseScene(R"({"camera": {"position": [0, -4, 2], "look_at": [0, 0, 0],
+      "width": 96, "height": 64}, "lights": [{"position": "camera"}],
+      "objects": [{"shape": "mesh", "file": ")" + torus + R"(", "up": "z", "material": {"attenuation": [1, 0, 0]}}]})",
+                                                     "", ".");
+  built.setCamera(written.camera());
+  built.add(fromFile);
+  EXPECT_GT(fromFile.triangleCount(), 100u);
+  EXPECT_TRUE(cpu.render(built).rgb == cpu.render(written).rgb);
+  EXPECT_THROW(TriangleMesh::fromFile(source("scenes/basic.json")), ArgumentError);
+  const std::filesystem::path bad = std::filesystem::temp_directory_path() / "phongvk_bad_mesh.obj";
+  std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nf 1 2 7\n";
+  try {
+    TriangleMesh::fromFile(bad.string());
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find(bad.string() + ": "), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(bad);
+}
+
 // Non-square pixels and a principal point off centre, then outside the image (the frustum's side
 // planes, the guard band and the near plane's clipping about it), with 16 samples a pixel: the
 // same bytes on both backends.

@@ -1,7 +1,13 @@
-// mesh.h — a triangle mesh given as arrays (Scene::addMesh), the way numpy users hold one.
+// mesh.h — a triangle mesh given as arrays (Scene::addMesh), the way numpy users hold one, and a
+// mesh built once (from arrays or a file) that many objects share (TriangleMesh, Scene::add).
 #pragma once
 
+#include "phongvk/export.h"
+
+#include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace phongvk {
@@ -15,6 +21,36 @@ struct MeshArrays {
   std::vector<float> positions;
   std::vector<int64_t> triangles;
   std::vector<float> normals;
+};
+
+// How a model file loaded alone (no scene file: loadScene("model.ply"), TriangleMesh::fromFile) is
+// stood up: with the up axis its format usually has (y for glTF and OBJ, z for PLY and STL), or the
+// one given, for a model whose exporter used the other convention.
+enum class ModelUp { Usual, Y, Z };
+
+struct Mesh;  // the built mesh (positions, unit normals, triangles, colours)
+
+// A mesh built once and shared: every object that adds it (Scene::add) renders the same built
+// vertices, held once in memory however many objects place it, and a renderer's meshes are built
+// from it without reading or checking anything again. Cheap to copy (copies share the mesh).
+class PHONGVK_API TriangleMesh {
+ public:
+  // Built from arrays as Scene::addMesh builds them; ArgumentError naming the array ("vertices",
+  // "faces", "normals") and its first bad row.
+  explicit TriangleMesh(const MeshArrays& arrays);
+  // A mesh file (OBJ, PLY, STL, glTF 2.0, GLB) read as a model rendered alone reads it: stood up
+  // by `up`, a glTF's base colours as vertex colours, in the file's own coordinates (the pose of
+  // each object that adds it places it). SceneError naming the file and its line for a bad file,
+  // ArgumentError for a path that does not name a mesh file.
+  static TriangleMesh fromFile(const std::string& path, ModelUp up = ModelUp::Usual);
+
+  size_t vertexCount() const;
+  size_t triangleCount() const;
+
+ private:
+  explicit TriangleMesh(std::shared_ptr<const Mesh> mesh);
+  std::shared_ptr<const Mesh> mesh_;
+  friend struct TriangleMeshAccess;
 };
 
 }  // namespace phongvk

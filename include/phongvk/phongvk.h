@@ -86,6 +86,11 @@ class PHONGVK_API Scene {
   ObjectId add(const MeshArrays& mesh, const Matrix4& pose = IDENTITY_POSE,
                const std::optional<Material>& material = std::nullopt, bool closed = false);
   ObjectId add(const MeshArrays& mesh, const Matrix4& pose, const std::string& materialName, bool closed = false);
+  // The same with a mesh built once (TriangleMesh, mesh.h): the object shares it, so placing one
+  // mesh many times builds and holds it once.
+  ObjectId add(const TriangleMesh& mesh, const Matrix4& pose = IDENTITY_POSE,
+               const std::optional<Material>& material = std::nullopt, bool closed = false);
+  ObjectId add(const TriangleMesh& mesh, const Matrix4& pose, const std::string& materialName, bool closed = false);
   // Moves an object added with add; RangeError for a handle this scene does not hold.
   void setPose(ObjectId object, const Matrix4& pose);
   void remove(ObjectId object);
@@ -134,11 +139,6 @@ class PHONGVK_API Scene {
   std::shared_ptr<const State> state_;
   friend struct SceneAccess;  // the library's own way in (api/scene_access.h)
 };
-
-// How a model file loaded alone (no scene file: loadScene("model.ply")) is stood up: with the up
-// axis its format usually has (y for glTF and OBJ, z for PLY and STL), or the one given, for a
-// model whose exporter used the other convention.
-enum class ModelUp { Usual, Y, Z };
 
 // "y" or "z", as the CLI's --up and Python's up= take it; ArgumentError "up: expected 'y' or 'z',
 // got '...'" for anything else.

@@ -399,3 +399,34 @@ def test_materials_and_settings_say_what_they_are():
     assert "shininess" in phongvk.Material.__doc__ and "samples" in phongvk.RenderSettings.__doc__
     assert "width x height" in phongvk.Scene.__init__.__doc__
     assert phongvk.Material(ks=0.2) != phongvk.Material()
+
+
+def test_a_mesh_built_once_is_placed_many_times():
+    """phongvk.Mesh: from arrays or a file, placed by add and add_mesh as often as asked; the
+    picture is that of the same arrays added each time, or of the scene file's mesh object."""
+    vertices, faces = square(0.3)
+    mesh = phongvk.Mesh(vertices, faces)
+    assert (mesh.vertex_count, mesh.triangle_count) == (4, 2) and repr(mesh) == "<phongvk.Mesh: 4 vertices, 2 triangles>"
+    shared, copied = phongvk.Scene(80, 60), phongvk.Scene(80, 60)
+    for x in (-0.4, 0.0, 0.4):
+        shared.add(mesh, pose=translation(x, 0, 0.1 * x))
+        copied.add(vertices, faces, pose=translation(x, 0, 0.1 * x))
+    shared.add_mesh(mesh, material=phongvk.Material(color=(1, 0, 0)))
+    copied.add_mesh(vertices, faces, material=phongvk.Material(color=(1, 0, 0)))
+    gpu, cpu = phongvk.Renderer("gpu"), phongvk.Renderer("cpu")
+    assert np.array_equal(gpu.render(shared), cpu.render(copied))
+    torus = scene_path("scenes/meshes/torus.obj")
+    written = phongvk.scene_from_dict({"camera": {"position": [0, -4, 2], "look_at": [0, 0, 0], "width": 80, "height": 60},
+                                       "lights": [{"position": "camera"}],
+                                       "objects": [{"shape": "mesh", "file": torus, "up": "z",
+                                                    "material": {"attenuation": [1, 0, 0]}}]})
+    built = phongvk.Scene(80, 60)
+    built.camera = written.camera
+    built.add(phongvk.Mesh.from_file(torus, up="z"))
+    assert np.array_equal(cpu.render(built), cpu.render(written))
+    with pytest.raises(TypeError, match=r"faces and normals: not given with a phongvk.Mesh"):
+        built.add(mesh, faces)
+    with pytest.raises(phongvk.ArgumentError, match=r"path: expected a mesh file"):
+        phongvk.Mesh.from_file(scene_path("scenes/basic.json"))
+    with pytest.raises(phongvk.ArgumentError, match=r"up: expected 'y' or 'z', got 'x'"):
+        phongvk.Mesh.from_file(torus, up="x")
