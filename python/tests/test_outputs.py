@@ -155,7 +155,8 @@ def test_normals_are_the_sphere_normals_in_camera_axes():
     ray = np.stack([(xs + 0.5 - width / 2) / focal, -(ys + 0.5 - height / 2) / focal, np.ones(xs.shape)], axis=-1)
     a = (ray ** 2).sum(axis=-1)
     inner = distance ** 2 * (1 - 1 / a) < 0.95 ** 2  # the ray's distance from the centre, squared
-    t = (2 * distance - np.sqrt(4 * distance ** 2 - 4 * a * (distance ** 2 - 1))) / (2 * a)
+    discriminant = np.maximum(4 * distance ** 2 - 4 * a * (distance ** 2 - 1), 0)  # < 0: rays that miss
+    t = (2 * distance - np.sqrt(discriminant)) / (2 * a)
     expected = t[..., None] * ray - np.array([0, 0, distance])
     cosine = (expected[inner] * normal[inner]).sum(axis=-1)
     assert inner.sum() > 3000
