@@ -1,10 +1,9 @@
-// normals.cpp — see normals.h. The surface comes from the shared headers the renderers shade with
-// (shaders/pixel_shading.h, gouraud.h), in the same float operations as the reference.
+// normals.cpp — see normals.h. The surface is the one the reference shades a pixel with
+// (render_reference.h pixelSurface, over the shared headers), in the same float operations.
 #include "api/normals.h"
 
-#include "shaders/gouraud.h"
+#include "reference/render_reference.h"
 #include "shaders/phong.h"
-#include "shaders/pixel_shading.h"
 
 namespace phongvk {
 
@@ -26,17 +25,8 @@ vec3 toCameraAxes(vec3 n, const FrameData& frame) {
 
 glm::vec3 cameraNormal(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y) {
   const glm::uvec4 tri = data.triangles[triangle];
-  const ObjectData& object = in.objects[tri.w];
-  const MaterialData& m = in.materials[object.material];
   const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
-  SurfacePoint s;
-  if (in.frame.shading == SHADING_FLAT) {
-    s = flatSurface(a, b, c, object.lightOffset, m);
-  } else {
-    const GouraudTriangle g = gouraudTriangle(projected(a, in), projected(b, in), projected(c, in));
-    s = phongSurface(a, b, c, object.lightOffset, m,
-                     barycentrics(g, pixelRay(x, y, in.frame.principal), in.frame.interpolation));
-  }
+  const SurfacePoint s = pixelSurface(data, in, tri, projected(a, in), projected(b, in), projected(c, in), x, y);
   return toCameraAxes(s.N, in.frame);
 }
 

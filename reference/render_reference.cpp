@@ -54,22 +54,23 @@ std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedV
   return keys;
 }
 
+SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, const ShadedVertex& s0,
+                          const ShadedVertex& s1, const ShadedVertex& s2, int x, int y) {
+  const ObjectData& object = in.objects[tri.w];
+  const MaterialData& m = in.materials[object.material];
+  const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
+  if (in.frame.shading == SHADING_FLAT) return flatSurface(a, b, c, object.lightOffset, m);
+  const GouraudTriangle g = gouraudTriangle(s0, s1, s2);
+  return phongSurface(a, b, c, object.lightOffset, m,
+                      barycentrics(g, pixelRay(x, y, in.frame.principal), in.frame.interpolation));
+}
+
 namespace {
 
 // Flat or Phong shading: triangle `tri`'s surface at pixel (x, y), lit with the frame's lights.
 uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
                   glm::uvec4 tri, int x, int y) {
-  const ObjectData& object = in.objects[tri.w];
-  const MaterialData& m = in.materials[object.material];
-  const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
-  SurfacePoint s;
-  if (in.frame.shading == SHADING_FLAT) {
-    s = flatSurface(a, b, c, object.lightOffset, m);
-  } else {
-    const GouraudTriangle g = gouraudTriangle(shaded[tri.x], shaded[tri.y], shaded[tri.z]);
-    s = phongSurface(a, b, c, object.lightOffset, m,
-                     barycentrics(g, pixelRay(x, y, in.frame.principal), in.frame.interpolation));
-  }
+  const SurfacePoint s = pixelSurface(data, in, tri, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y);
   const vec3 V = toEye(s.P, in.frame.eye);
   vec3 color = phongAmbient(s.m, in.frame.ambient);
   for (const LightData& light : in.lights) color += phongLightModel(s.P, s.N, V, s.m, light, in.frame.specular == SPECULAR_BLINN);

@@ -5,6 +5,7 @@
 
 #include "phongvk/image.h"
 #include "prepare/scene_data.h"
+#include "shaders/pixel_shading.h"
 
 #include <cstdint>
 #include <vector>
@@ -17,6 +18,12 @@ std::vector<gpu::ShadedVertex> shadeVertices(const SceneData& data, const FrameI
 // Rasterizes every triangle into the per-pixel minimum keys (the raster passes).
 std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<gpu::ShadedVertex>& shaded,
                                 const gpu::FrameData& frame);
+
+// Flat or Phong shading's surface of triangle `tri` at pixel (x, y) (shaders/pixel_shading.h): with
+// flat shading the face's, else the vertices' interpolated with the pixel's barycentrics among the
+// triangle's shaded vertices s0, s1, s2 (their homogeneous positions).
+gpu::SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, const gpu::ShadedVertex& s0,
+                               const gpu::ShadedVertex& s1, const gpu::ShadedVertex& s2, int x, int y);
 
 // Keys -> colours -> image (the resolve passes): the winner's Gouraud colour, or with flat and
 // Phong shading its surface lit at the pixel (shaders/pixel_shading.h).
