@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000));
   renderCmd->add_flag("--mpi", render.mpi,
                       "Under mpirun: each process renders a share of the triangles, the keys are composited by "
-                      "MPI_Allreduce (MPI_MIN) and rank 0 writes the PNG");
+                      "MPI_Allreduce (MPI_MIN) and rank 0 writes the PNG (and --rgba, --depth, --ids, --normals)");
   renderCmd->add_flag("--rgba", render.rgba,
                       "Write -o as RGBA: alpha 255 where triangles cover every sample of the pixel, 0 where none");
   renderCmd->add_option("--depth", render.depth,

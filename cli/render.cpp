@@ -58,7 +58,7 @@ std::string startupText(const RendererStats& stats, Backend backend) {
 
 int runRender(const RenderOptions& options) {
   if (options.mpi) {
-    // --rgba, --depth, --ids and --normals are refused before MPI starts (render_outputs.h outputsAsked).
+    // A --depth, --ids or --normals file of another kind is refused before MPI starts (outputsAsked).
     const int refused = guarded([&] {
       outputsAsked(options);
       return int(EXIT_OK);

@@ -94,10 +94,6 @@ Outputs outputsAsked(const RenderOptions& options) {
   outputs.depth = fileKind(options.depth, "--depth") != FileKind::None;
   outputs.objectIds = fileKind(options.ids, "--ids") != FileKind::None;
   outputs.normals = normalsKind(options) != FileKind::None;
-  if (options.mpi && (outputs.alpha || outputs.depth || outputs.objectIds || outputs.normals)) {
-    throw UsageError("--rgba, --depth, --ids and --normals are not available with --mpi (each process holds a share "
-                     "of the scene's triangles): render without --mpi for them");
-  }
   return outputs;
 }
 
