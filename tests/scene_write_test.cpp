@@ -18,6 +18,7 @@ namespace {
 
 using test::sourcePath;
 using test::thrownMessage;
+using test::base64;
 
 Renderer& reference() {
   static Renderer renderer(Backend::Cpu);
@@ -156,21 +157,6 @@ TEST(SceneWrite, NamedMaterialsStayNamedAndTheFileDefaultResolvesToItsValues) {
   EXPECT_EQ(json["objects"][0]["material"], "red");
   EXPECT_TRUE(json["materials"].contains("unused"));
   EXPECT_EQ(json["objects"][1]["material"]["attenuation"][1].get<double>(), double(0.2f));
-}
-
-std::string base64(const std::string& bytes) {
-  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    uint32_t v = uint32_t(uint8_t(bytes[i])) << 16;
-    if (i + 1 < bytes.size()) v |= uint32_t(uint8_t(bytes[i + 1])) << 8;
-    if (i + 2 < bytes.size()) v |= uint8_t(bytes[i + 2]);
-    out += table[v >> 18];
-    out += table[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? table[v & 63] : '=';
-  }
-  return out;
 }
 
 // One triangle of base colour green.
