@@ -1,5 +1,5 @@
 # The installed package, as another project meets it (CTest `install_consumer`): `cmake --install`
-# into a fresh prefix; examples/render_scene built against it with find_package(phongvk CONFIG) and
+# into a fresh prefix; examples/render_scene (render_scene and dataset) built against it with find_package(phongvk CONFIG) and
 # the same program built with pkg-config; both render scenes/basic.json on the reference backend
 # to the same bytes as the tree's own `phongvk render --backend cpu`; the installed `phongvk`
 # runs from its prefix and reports its version.
@@ -37,6 +37,20 @@ run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/render_scene -B ${OUT_DIR}/exampl
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX})
 run(${CMAKE_COMMAND} --build ${OUT_DIR}/example)
 run(${OUT_DIR}/example/render_scene ${SOURCE_DIR}/scenes/basic.json ${OUT_DIR}/find_package.png cpu)
+# The dataset example: a model's views built in code, each view's files and cameras.json.
+file(MAKE_DIRECTORY ${OUT_DIR}/views)
+run(${OUT_DIR}/example/dataset ${SOURCE_DIR}/scenes/meshes/torus.obj ${OUT_DIR}/views 3 cpu)
+file(READ ${OUT_DIR}/views/cameras.json cameras)
+string(JSON views LENGTH "${cameras}" views)
+string(JSON fx GET "${cameras}" intrinsics fx)
+if(NOT views EQUAL 3 OR NOT fx EQUAL 500)
+  message(FATAL_ERROR "dataset: cameras.json has ${views} views and fx ${fx}: ${cameras}")
+endif()
+foreach(file 000_rgb.png 001_depth.npy 002_mask.png)
+  if(NOT EXISTS ${OUT_DIR}/views/${file})
+    message(FATAL_ERROR "dataset: no ${file}")
+  endif()
+endforeach()
 
 # pkg-config: the same program, compiled by hand.
 get_filename_component(pc_dir ${pc} DIRECTORY)
