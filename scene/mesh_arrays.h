@@ -14,7 +14,7 @@ namespace phongvk {
 
 // The mesh the arrays describe, as an OBJ file with the same vertices and faces would give it:
 // zero-area triangles dropped, given normals normalised, missing ones area-weighted. Throws
-// std::invalid_argument naming the array and its first bad row: a non-finite or out-of-range
+// ArgumentError naming the array and its first bad row: a non-finite or out-of-range
 // position, an index outside the vertices, a normal without direction, a wrong count.
 Mesh meshFromArrays(const MeshArrays& arrays);
 
