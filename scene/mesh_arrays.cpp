@@ -111,32 +111,28 @@ void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const sce
 namespace scenejson {
 namespace {
 
-// Rows of 3 numbers (each a 32-bit float) as one flat array, as MeshArrays holds them.
-std::vector<float> floatRows(const Node& node) {
+// Rows of 3 numbers, each read by `element`, as one flat array of T, as MeshArrays holds them.
+template <typename T>
+std::vector<T> rowsOf3(const Node& node, ElementReader element) {
   requireArray(node);
-  std::vector<float> values;
+  std::vector<T> values;
   values.reserve(3 * node.json().size());
   for (size_t i = 0; i < node.json().size(); ++i) {
-    const glm::dvec3 row = vec3(node.element(i), floatComponent);
-    values.insert(values.end(), {float(row.x), float(row.y), float(row.z)});
+    const glm::dvec3 row = vec3(node.element(i), element);
+    values.insert(values.end(), {T(row.x), T(row.y), T(row.z)});
   }
   return values;
 }
+
+// Positions and normals: 32-bit floats.
+std::vector<float> floatRows(const Node& node) { return rowsOf3<float>(node, floatComponent); }
 
 double index(const Node& node) {
   return integer(node, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
 }
 
-std::vector<int64_t> indexRows(const Node& node) {
-  requireArray(node);
-  std::vector<int64_t> values;
-  values.reserve(3 * node.json().size());
-  for (size_t i = 0; i < node.json().size(); ++i) {
-    const glm::dvec3 row = vec3(node.element(i), index);
-    values.insert(values.end(), {int64_t(row.x), int64_t(row.y), int64_t(row.z)});
-  }
-  return values;
-}
+// Faces: vertex indices (meshFromArrays checks their range).
+std::vector<int64_t> indexRows(const Node& node) { return rowsOf3<int64_t>(node, index); }
 
 // One [r, g, b, a] row of integers 0..255 per vertex, as RGBA8 (red in the low byte).
 std::vector<uint32_t> colorRows(const Node& node, size_t vertices) {
