@@ -14,6 +14,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace phongvk {
@@ -85,6 +86,8 @@ struct FileVersion {
 };
 
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
+// The scene file's name of a shape ("sphere", ..., "mesh"; scene_objects.cpp's table of shapes).
+std::string_view shapeName(Shape shape);
 // The scene file's names of the render choices, in the order of their enums (scene_parts.h).
 inline constexpr std::array<const char*, 2> INTERPOLATION_NAMES = {"perspective", "screen"};
 inline constexpr std::array<const char*, 3> SHADING_NAMES = {"gouraud", "flat", "phong"};

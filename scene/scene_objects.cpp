@@ -220,3 +220,14 @@ std::vector<Object> readObjects(const Node& node, const std::string& baseDir, Ma
 }
 
 }  // namespace phongvk::scenejson
+
+namespace phongvk {
+
+std::string_view shapeName(Shape shape) {
+  for (const scenejson::ShapeInfo& info : scenejson::kShapes) {
+    if (info.shape == shape) return info.name;
+  }
+  throw std::logic_error("shapeName: a shape without a name");
+}
+
+}  // namespace phongvk

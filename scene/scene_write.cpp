@@ -114,11 +114,6 @@ void writeArrays(const Mesh& mesh, Json& json) {
   if (!mesh.colors.empty()) json["colors"] = std::move(colors);
 }
 
-const char* shapeName(Shape shape) {
-  static constexpr const char* names[] = {"sphere", "cube", "cylinder", "cone", "icosphere", "polyhedron", "mesh"};
-  return names[size_t(shape)];
-}
-
 // The keys of the object's shape (scene_objects.cpp kShapes), each with its value.
 void writeGeometry(const Object& object, Json& json) {
   const Shape s = object.shape;
@@ -140,7 +135,7 @@ void writeGeometry(const Object& object, Json& json) {
 }
 
 Json objectJson(const SceneSpec& scene, const Object& object) {
-  Json json = {{"shape", shapeName(object.shape)}};
+  Json json = {{"shape", std::string(shapeName(object.shape))}};
   writeGeometry(object, json);
   json["scale"] = vec3Json(object.scale);
   json["rotate"] = rotationJson(object.rotation);
