@@ -22,6 +22,22 @@ gpu::MaterialData toGpu(const MaterialSpec& m) {
   return g;
 }
 
+}  // namespace
+
+ObjectMesh buildSceneObject(const SceneSpec& scene, const Object& object) {
+  try {
+    return buildObjectMesh(object);
+  } catch (const SceneError& error) {  // the object's JSON path and any inner file: the scene file first
+    if (scene.path.empty()) throw;
+    std::string why = error.what();
+    const std::string inner = object.jsonPath + ".file: " + object.file + ": ";
+    if (scene.modelAlone && why.rfind(inner, 0) == 0) why.erase(0, inner.size());
+    throw SceneError(scene.path + ": " + why);
+  }
+}
+
+namespace {
+
 // Every object's mesh, and the scene's vertex and triangle counts, so that the flat arrays are
 // allocated once at their final size: grown object by object, they were allocated about twice
 // over (fresh memory the kernel zero-fills page by page) and copied at each growth
@@ -31,15 +47,7 @@ std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, si
   meshes.reserve(scene.objects.size());
   vertices = triangles = 0;
   for (const Object& object : scene.objects) {
-    try {
-      meshes.push_back(buildObjectMesh(object));
-    } catch (const SceneError& error) {  // the object's JSON path and any inner file: the scene file first
-      if (scene.path.empty()) throw;
-      std::string why = error.what();
-      const std::string inner = object.jsonPath + ".file: " + object.file + ": ";
-      if (scene.modelAlone && why.rfind(inner, 0) == 0) why.erase(0, inner.size());
-      throw SceneError(scene.path + ": " + why);
-    }
+    meshes.push_back(buildSceneObject(scene, object));
     vertices += meshes.back().mesh.positions.size();
     triangles += meshes.back().mesh.triangles.size();
     if (vertices > std::numeric_limits<uint32_t>::max()) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "scene/camera.h"
+#include "scene/object_mesh.h"
 #include "scene/scene.h"
 #include "shaders/shared.h"
 
@@ -48,6 +49,10 @@ struct FrameInputs {
   // polygon clipper. False means none can (the box holds every vertex, the clip volume is convex).
   bool mayClip = true;
 };
+
+// One object's mesh (object_mesh.h buildObjectMesh), its SceneError led by the scene's file; a
+// model file alone's names that file and its line only ("m.ply: line 7: ...").
+ObjectMesh buildSceneObject(const SceneSpec& scene, const Object& object);
 
 // Builds every object's mesh and flattens the scene. Throws SceneError, also for a scene without
 // objects.
