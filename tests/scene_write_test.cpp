@@ -102,26 +102,10 @@ TEST(SceneWrite, ASceneBuiltInCodeRoundTripsEveryTypedValue) {
   EXPECT_GT(drawnPixels(reference().render(scene)), 1000u);
   expectRoundTrip(scene);
   const Scene back = parseScene(scene.toJson(), "written.json");
-  const Camera a = scene.camera(), b = back.camera();
-  EXPECT_EQ(b.position, a.position);
-  EXPECT_EQ(b.lookAt, a.lookAt);
-  EXPECT_EQ(b.up, a.up);
-  EXPECT_EQ(b.width, a.width);
-  EXPECT_EQ(b.height, a.height);
-  EXPECT_EQ(b.nearPlane, a.nearPlane);
-  EXPECT_EQ(b.farPlane, a.farPlane);
-  ASSERT_TRUE(b.intrinsics.has_value());
-  EXPECT_EQ(*b.intrinsics, *a.intrinsics);
+  ASSERT_TRUE(back.camera().intrinsics.has_value());
+  EXPECT_TRUE(back.camera() == scene.camera());  // every field, the intrinsics too
   ASSERT_EQ(back.lights().size(), 3u);
-  for (size_t i = 0; i < 3; ++i) {
-    const Light x = scene.lights()[i], y = back.lights()[i];
-    EXPECT_EQ(y.position, x.position);
-    EXPECT_EQ(y.intensity, x.intensity);
-    EXPECT_EQ(y.color, x.color);
-    EXPECT_EQ(y.atCamera, x.atCamera);
-    EXPECT_EQ(y.directional, x.directional);
-    EXPECT_EQ(y.direction, x.direction);
-  }
+  EXPECT_TRUE(back.lights() == scene.lights());
   EXPECT_EQ(back.ambient(), scene.ambient());
   EXPECT_EQ(back.renderSettings(), scene.renderSettings());
   EXPECT_EQ(back.objectCount(), 3u);

@@ -47,6 +47,7 @@ struct Camera {
   double nearPlane = 0.05;
   double farPlane = 1000;
   std::optional<Intrinsics> intrinsics;
+  bool operator==(const Camera&) const = default;
 };
 
 // The axes of a camera pose, as the tools that make poses use them:
@@ -78,6 +79,7 @@ struct Light {
   bool atCamera = false;
   bool directional = false;
   Vec3 direction = {0, 0, -1};
+  bool operator==(const Light&) const = default;
 };
 
 // A material (docs/DESIGN.md "Phong, per vertex"), as a scene file's material object: the ambient,
