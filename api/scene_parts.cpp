@@ -94,6 +94,13 @@ Json cameraJson(const Camera& camera, int width, int height) {
                {"height", height},
                {"near", camera.nearPlane},
                {"far", camera.farPlane}};
+  if (camera.orthoHeight) {
+    if (camera.intrinsics) throw ArgumentError("camera: intrinsics describe a pinhole camera, not an orthographic one");
+    requireFinite(*camera.orthoHeight, "camera.ortho_height");
+    json["projection"] = "orthographic";
+    json["ortho_height"] = *camera.orthoHeight;
+    return json;
+  }
   if (!camera.intrinsics) {
     json["fov"] = camera.fov;
     return json;
@@ -130,6 +137,7 @@ Camera cameraOf(const SceneSpec& scene) {
   camera.nearPlane = c.nearPlane;
   camera.farPlane = c.farPlane;
   if (c.intrinsics) camera.intrinsics = Intrinsics{c.fx, c.fy, c.cx, c.cy};
+  if (c.orthographic) camera.orthoHeight = c.orthoHeight;
   return camera;
 }
 

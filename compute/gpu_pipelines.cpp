@@ -152,6 +152,9 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
   if (binPass_) requests.push_back({BIN_LARGE, {}});
   if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background
   if (packsColors(withKeys)) requests.push_back({PACK, {}});
+  if (frame.projection != PROJECTION_PERSPECTIVE) {  // as the others, only where not the default
+    for (PipelineRequest& r : requests) r.specs.push_back({SPEC_PROJECTION, frame.projection});
+  }
   return requests;
 }
 

@@ -144,14 +144,15 @@ struct GraphicsRenderer::State {
   void ensureTargets(uint32_t width, uint32_t height);
   void releaseTargets();
   void uploadFrame(const FrameInputs& in);
-  VkPipeline pipelineFor(uint32_t interpolation, bool cullBack);
+  VkPipeline pipelineFor(uint32_t interpolation, uint32_t projection, bool cullBack);
   void recordFrame(VkCommandBuffer cmd, const FrameData& frame);
   void readTime();
 
   const VulkanContext& context;
   GraphicsLayout layout;
   VkRenderPass renderPass = VK_NULL_HANDLE;
-  VkPipeline pipelines[2][2] = {};  // [interpolation][cullBack], made when a frame first needs one
+  // [projection][interpolation][cullBack], made when a frame first needs one
+  VkPipeline pipelines[2][2][2] = {};
   DescriptorArena arena;
   VkDescriptorSet set = VK_NULL_HANDLE;
   TimestampPool timestamps;
@@ -174,9 +175,10 @@ void GraphicsRenderer::State::release() {
   for (TexelBuffer* t : {&vertices, &objects, &materials, &lights}) destroyTexelBuffer(*t, context);
   destroyTimestampPool(timestamps, context);
   destroyDescriptorArena(arena, context);
-  for (auto& byCull : pipelines)
-    for (VkPipeline& p : byCull)
-      if (p) vkDestroyPipeline(context.device, std::exchange(p, VK_NULL_HANDLE), nullptr);
+  for (auto& byInterpolation : pipelines)
+    for (auto& byCull : byInterpolation)
+      for (VkPipeline& p : byCull)
+        if (p) vkDestroyPipeline(context.device, std::exchange(p, VK_NULL_HANDLE), nullptr);
   if (renderPass) vkDestroyRenderPass(context.device, std::exchange(renderPass, VK_NULL_HANDLE), nullptr);
   destroyGraphicsLayout(layout, context);
 }
@@ -254,15 +256,19 @@ void GraphicsRenderer::State::uploadFrame(const FrameInputs& in) {
   uploadToBuffer(context, frame, &in.frame, sizeof(FrameData));
 }
 
-VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, bool cullBack) {
+VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, uint32_t projection, bool cullBack) {
   if (interpolation != INTERP_PERSPECTIVE && interpolation != INTERP_SCREEN)
     throw ArgumentError("unknown interpolation mode " + std::to_string(interpolation));
-  VkPipeline& pipeline = pipelines[interpolation][cullBack];
+  if (projection != PROJECTION_PERSPECTIVE && projection != PROJECTION_ORTHOGRAPHIC)
+    throw ArgumentError("unknown projection " + std::to_string(projection));
+  VkPipeline& pipeline = pipelines[projection][interpolation][cullBack];
   if (pipeline) return pipeline;
   GraphicsPipelineInfo info;
   info.vertexSpirv = spirv_graphics_baseline_vert;
   info.fragmentSpirv = spirv_graphics_baseline_frag;
   info.specs = {{SPEC_INTERPOLATION, interpolation}, {SPEC_LIGHT_COUNT, uint32_t(lightCount)}};
+  // Only where it differs from the default: perspective pipelines keep their cache entries.
+  if (projection != PROJECTION_PERSPECTIVE) info.specs.push_back({SPEC_PROJECTION, projection});
   info.layout = layout.layout;
   info.renderPass = renderPass;
   info.cullMode = cullBack ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
@@ -296,7 +302,7 @@ void GraphicsRenderer::State::recordFrame(VkCommandBuffer cmd, const FrameData& 
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.layout, 0, 1, &set, 0, nullptr);
   vkCmdBindIndexBuffer(cmd, indices.buffer, 0, VK_INDEX_TYPE_UINT32);
   for (const DrawRun& run : runs) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineFor(f.interpolation, run.cullBack));
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelineFor(f.interpolation, f.projection, run.cullBack));
     vkCmdDrawIndexed(cmd, run.triangleCount * 3, 1, run.firstTriangle * 3, 0, 0);
   }
   vkCmdEndRenderPass(cmd);
@@ -318,8 +324,9 @@ GraphicsRenderer::GraphicsRenderer(const VulkanContext& context, const SceneData
   // On a throw, ~State releases whatever was made.
   state_->createFixedObjects();
   state_->uploadScene(data);
-  // Compile the pipelines the scene draws with now, not inside the first (timed) frame.
-  for (const DrawRun& run : drawRuns(data)) state_->pipelineFor(data.interpolation, run.cullBack);
+  // Compile the pipelines the scene draws with now, not inside the first (timed) frame (with a
+  // perspective camera; an orthographic frame compiles its own when it first comes).
+  for (const DrawRun& run : drawRuns(data)) state_->pipelineFor(data.interpolation, PROJECTION_PERSPECTIVE, run.cullBack);
 }
 
 GraphicsRenderer::~GraphicsRenderer() = default;

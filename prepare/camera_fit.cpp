@@ -35,6 +35,7 @@ void fitCamera(CameraSpec& camera, const SceneData& data, const std::string& fil
   camera.position = centre - glm::normalize(camera.direction) * distance;
   camera.nearPlane = (distance - radius) / 2;
   camera.farPlane = 2 * (distance + radius);
+  if (camera.orthographic) camera.orthoHeight = 2 * kMargin * radius / std::min(1.0, camera.aspect);
   const double reach = std::max({std::abs(camera.position.x), std::abs(camera.position.y), std::abs(camera.position.z),
                                  camera.farPlane});
   if (!(reach <= MAX_COORDINATE) || !(float(camera.nearPlane) >= 1.17549435e-38f))

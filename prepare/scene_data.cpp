@@ -87,7 +87,7 @@ bool nearOrOutsideClipVolume(const View& view, const glm::dvec3& p) {
   const double z = glm::dot(view.forward, d);
   const double x = std::abs(view.focal.x * glm::dot(view.right, d));
   const double y = std::abs(view.focal.y * glm::dot(view.up, d));
-  const double band = double(gpu::GUARD_BAND) * z;
+  const double band = double(gpu::GUARD_BAND) * (view.orthographic ? 1.0 : z);
   constexpr double MARGIN = 1e-5;  // relative; float positions are good to a few 1e-7
   return !(z - view.nearPlane > MARGIN * (glm::length(d) + view.nearPlane) && band - x > MARGIN * (band + x) &&
            band - y > MARGIN * (band + y));
@@ -221,6 +221,7 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   f.shading = data.shading;
   f.specular = data.specular;
   f.eye = glm::vec3(view.eye - data.lightingOrigin);
+  f.projection = view.orthographic ? gpu::PROJECTION_ORTHOGRAPHIC : gpu::PROJECTION_PERSPECTIVE;
 
   in.objects = data.objects;
   for (size_t i = 0; i < in.objects.size(); ++i) {

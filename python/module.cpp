@@ -176,8 +176,10 @@ std::string floatText(double x) { return py::str(py::float_(x)); }
 
 std::string vec3Text(const Vec3& v) { return "(" + floatText(v[0]) + ", " + floatText(v[1]) + ", " + floatText(v[2]) + ")"; }
 
-// ", fov=60.0", or ", intrinsics=(fx, fy, cx, cy)" for a camera that has them.
+// ", fov=60.0", ", ortho_height=2.0" for an orthographic camera, or ", intrinsics=(fx, fy, cx, cy)"
+// for a camera that has them.
 std::string fieldOfViewText(const Camera& c) {
+  if (c.orthoHeight) return ", ortho_height=" + floatText(*c.orthoHeight);
   if (!c.intrinsics) return ", fov=" + floatText(c.fov);
   const Intrinsics& k = *c.intrinsics;
   return ", intrinsics=(" + floatText(k.fx) + ", " + floatText(k.fy) + ", " + floatText(k.cx) + ", " + floatText(k.cy) + ")";
@@ -410,20 +412,23 @@ PYBIND11_MODULE(_phongvk, m) {
   m.attr("__version__") = version();
   m.attr("__revision__") = revision();
 
-  py::class_<Camera>(m, "Camera", R"(A pinhole camera: position, look_at, up (world coordinates, z up by
-default), fov (vertical, degrees) or intrinsics (fx, fy, cx, cy in pixels), width x height (0 x 0:
-the scene's own size), near and far.
+  py::class_<Camera>(m, "Camera", R"(A camera: position, look_at, up (world coordinates, z up by
+default), and its view: fov (vertical, degrees), or intrinsics (fx, fy, cx, cy in pixels) of a
+pinhole camera, or ortho_height (metres from the image's top to its bottom) of an orthographic
+one; width x height (0 x 0: the scene's own size), near and far.
 Camera.from_pose and Camera.from_intrinsics make one from a camera-to-world matrix. Assigned to
 Scene.camera, it is checked like a scene file's "camera".)")
       .def(py::init([](Vec3 position, Vec3 lookAt, Vec3 up, double fov, int width, int height, double nearPlane,
-                       double farPlane, std::optional<std::array<double, 4>> k) {
+                       double farPlane, std::optional<std::array<double, 4>> k, std::optional<double> orthoHeight) {
              Camera camera{position, lookAt, up, fov, width, height, nearPlane, farPlane};
              if (k) camera.intrinsics = Intrinsics{(*k)[0], (*k)[1], (*k)[2], (*k)[3]};
+             camera.orthoHeight = orthoHeight;
              return camera;
            }),
            py::kw_only(), py::arg("position") = Camera{}.position, py::arg("look_at") = Camera{}.lookAt,
            py::arg("up") = Camera{}.up, py::arg("fov") = Camera{}.fov, py::arg("width") = 0, py::arg("height") = 0,
-           py::arg("near") = Camera{}.nearPlane, py::arg("far") = Camera{}.farPlane, py::arg("intrinsics") = py::none())
+           py::arg("near") = Camera{}.nearPlane, py::arg("far") = Camera{}.farPlane, py::arg("intrinsics") = py::none(),
+           py::arg("ortho_height") = py::none())
       .def_readwrite("position", &Camera::position)
       .def_readwrite("look_at", &Camera::lookAt)
       .def_readwrite("up", &Camera::up)
@@ -445,6 +450,10 @@ Scene.camera, it is checked like a scene file's "camera".)")
           },
           R"((fx, fy, cx, cy) in pixels, OpenCV's convention (pixel centres at integer coordinates), or
 None: the field of view is fov. With intrinsics the camera needs a width and height.)")
+      .def_readwrite("ortho_height", &Camera::orthoHeight,
+                     R"(Metres the image spans from top to bottom (and ortho_height * width / height
+across) for an orthographic camera, whose pixels all look along the view direction; None for a
+perspective one. An orthographic camera needs a width and height, and no intrinsics.)")
       .def_static(
           "from_pose",
           [](const py::object& pose, const std::string& conventionName, double fov, int width, int height) {
@@ -467,6 +476,7 @@ datasets). A pose whose rotation block is not a rotation raises ValueError.)")
 coordinates, so the centre is ((width - 1) / 2, (height - 1) / 2)) and a (4, 4) camera-to-world pose
 (identity when None). fx and fy may differ; the principal point (cx, cy) may lie off centre, or
 outside the image within 16384 pixels of it. A focal length that is not positive raises ValueError.)")
+      .def("__eq__", [](const Camera& a, const Camera& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const Camera& c) {
         return "phongvk.Camera(position=" + vec3Text(c.position) + ", look_at=" + vec3Text(c.lookAt) + ", up=" +
                vec3Text(c.up) + fieldOfViewText(c) + ", width=" + std::to_string(c.width) +

@@ -20,13 +20,21 @@ const Object& theSphere(const SceneSpec& scene) {
   return scene.objects[0];
 }
 
-// The ray through the centre of pixel (x, y), scaled so its forward component is 1: the ray
-// parameter is then the view-space depth the renderers clip with. Pixel centres sit at
-// (x + 0.5, y + 0.5) about the view's principal point, y grows downwards.
-glm::dvec3 pixelRay(const View& view, int x, int y) {
+// The ray through the centre of pixel (x, y), its direction scaled so its forward component is 1:
+// the ray parameter is then the view-space depth the renderers clip with. Pixel centres sit at
+// (x + 0.5, y + 0.5) about the view's principal point, y grows downwards. A perspective camera's
+// rays leave the eye; an orthographic camera's leave the plane through the eye, all forward.
+struct Ray {
+  glm::dvec3 origin;
+  glm::dvec3 direction;
+};
+
+Ray pixelRay(const View& view, int x, int y) {
   const double a = (x + 0.5 - view.principal.x) / view.focal.x;
   const double b = (view.principal.y - (y + 0.5)) / view.focal.y;
-  return view.forward + a * view.right + b * view.up;
+  const glm::dvec3 offset = a * view.right + b * view.up;
+  if (view.orthographic) return {view.eye + offset, view.forward};
+  return {view.eye, view.forward + offset};
 }
 
 // Depth of the nearer intersection of eye + t d with the sphere, or -1 when the ray misses.
@@ -46,11 +54,11 @@ double nearerHit(const glm::dvec3& eye, const glm::dvec3& d, const glm::dvec3& c
 
 // docs/DESIGN.md "Phong": ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), the
 // specular term only where N.l > 0, a light exactly at P adding nothing.
-glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& eye, const SceneSpec& scene,
+// V is the unit vector toward the viewer.
+glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& V, const SceneSpec& scene,
                  const MaterialSpec& m) {
   const glm::dvec3 C(m.color);
   glm::dvec3 color = double(m.ka) * C * glm::dvec3(scene.ambient);
-  const glm::dvec3 V = glm::normalize(eye - P);
   for (const LightSpec& light : scene.lights) {
     const glm::dvec3 toLight = light.directional ? -glm::normalize(light.direction) : light.position - P;
     const double d = light.directional ? 1 : glm::length(toLight);
@@ -80,16 +88,17 @@ Image raycastSphere(const SceneSpec& scene, const View& view) {
   Image image(view.width, view.height);
   for (int y = 0; y < view.height; ++y) {
     for (int x = 0; x < view.width; ++x) {
-      const glm::dvec3 d = pixelRay(view, x, y);
-      const double t = nearerHit(view.eye, d, sphere.center, sphere.radius);
+      const Ray ray = pixelRay(view, x, y);
+      const double t = nearerHit(ray.origin, ray.direction, sphere.center, sphere.radius);
       // The renderers clip the nearer surface at the near plane and cull the far (back-facing)
       // one, so a nearer hit outside [near, far] shows the background, not the far side.
       if (t < view.nearPlane || t > view.farPlane) {
         writeColor(image.pixel(x, y), glm::dvec3(scene.background));
         continue;
       }
-      const glm::dvec3 P = view.eye + t * d;
-      writeColor(image.pixel(x, y), phong(P, (P - sphere.center) / sphere.radius, view.eye, scene, material));
+      const glm::dvec3 P = ray.origin + t * ray.direction;
+      const glm::dvec3 V = view.orthographic ? -view.forward : glm::normalize(view.eye - P);
+      writeColor(image.pixel(x, y), phong(P, (P - sphere.center) / sphere.radius, V, scene, material));
     }
   }
   return image;

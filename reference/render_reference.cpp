@@ -19,7 +19,7 @@ std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs
     const ObjectData& object = in.objects[v.object];
     const MaterialData m = vertexMaterial(in.materials[object.material], v.color);
     const vec3 P = lightingPosition(v.position, object.lightOffset);
-    const vec3 V = toEye(P, in.frame.eye);
+    const vec3 V = viewVector(P, in.frame);
     const bool blinn = in.frame.specular == SPECULAR_BLINN;
     vec3 color = phongAmbient(m, in.frame.ambient);
     for (const LightData& light : in.lights) color += phongLightModel(P, v.normal, V, m, light, blinn);
@@ -60,7 +60,7 @@ SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, glm::uve
   const MaterialData& m = in.materials[object.material];
   const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
   if (in.frame.shading == SHADING_FLAT) return flatSurface(a, b, c, object.lightOffset, m);
-  const GouraudTriangle g = gouraudTriangle(s0, s1, s2);
+  const GouraudTriangle g = gouraudTriangle(s0, s1, s2, in.frame.projection);
   return phongSurface(a, b, c, object.lightOffset, m,
                       barycentrics(g, pixelRay(x, y, in.frame.principal), in.frame.interpolation));
 }
@@ -71,7 +71,7 @@ namespace {
 uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
                   glm::uvec4 tri, int x, int y) {
   const SurfacePoint s = pixelSurface(data, in, tri, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y);
-  const vec3 V = toEye(s.P, in.frame.eye);
+  const vec3 V = viewVector(s.P, in.frame);
   vec3 color = phongAmbient(s.m, in.frame.ambient);
   for (const LightData& light : in.lights) color += phongLightModel(s.P, s.N, V, s.m, light, in.frame.specular == SPECULAR_BLINN);
   return packColor(color);

@@ -37,6 +37,8 @@ View makeView(const CameraSpec& camera) {
     view.focal = {camera.fx, camera.fy};
     view.principal = {camera.cx + 0.5, camera.cy + 0.5};
   }
+  view.orthographic = camera.orthographic;
+  if (camera.orthographic) view.focal = glm::dvec2(view.height / camera.orthoHeight);
   checkSide(view.width, "width");
   checkSide(view.height, "height");
 

@@ -65,6 +65,11 @@ struct CameraSpec {
   // (pixel centres at integer coordinates).
   bool intrinsics = false;
   double fx = 0, fy = 0, cx = 0, cy = 0;
+  // "projection": "orthographic" (with width and height; then fov, aspect and resolution are not
+  // used): every pixel looks along the view direction, and the image spans "ortho_height" metres
+  // from top to bottom (and ortho_height * width / height across).
+  bool orthographic = false;
+  double orthoHeight = 1;
   // "fit": position, near and far come from the objects' bounds when the meshes are built
   // (camera_fit.h); `direction` is the view direction.
   bool fit = false;

@@ -11,8 +11,9 @@
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kCameraKeys = {"position", "direction", "look_at", "up",   "fov", "aspect", "resolution", "width",
-                          "height",   "near",      "far",     "fit",  "fx",  "fy",     "cx",         "cy"};
+const Keys kCameraKeys = {"position", "direction", "look_at", "up", "fov", "aspect", "resolution", "width", "height",
+                          "near",     "far",       "fit",     "fx", "fy",  "cx",     "cy",         "projection",
+                          "ortho_height"};
 
 // The view direction of a fitted camera given none: from the front (-y), to the left and above.
 const glm::dvec3 kFitDirection = {0.5, 1.0, -0.5};
@@ -119,6 +120,37 @@ void readIntrinsics(const Node& camera, CameraSpec& spec) {
   if (auto node = camera.find("cy")) spec.cy = inRange(*node, lo, hi);
 }
 
+// The narrowest view an orthographic camera may have: 16384 pixels over it are 1.6e10 pixels per
+// metre, far below where pixel positions in float overflow for coordinates within MAX_COORDINATE.
+constexpr double kMinOrthoHeight = 1e-6;
+
+// "projection": "perspective" (the default) or "orthographic". An orthographic camera gives
+// "ortho_height" (the metres its image spans from top to bottom; a fitted camera's comes from the
+// scene's bounds) and its image's "width" and "height", and none of what sets a perspective
+// camera's field of view.
+void readProjection(const Node& camera, CameraSpec& spec) {
+  auto projection = camera.find("projection");
+  const std::string name = projection ? string(*projection) : "perspective";
+  if (name != "perspective" && name != "orthographic")
+    projection->fail("must be one of perspective, orthographic, got '" + name + "'");
+  spec.orthographic = name == "orthographic";
+  auto height = camera.find("ortho_height");
+  if (!spec.orthographic) {
+    if (height) height->fail("is only used with 'projection': 'orthographic'");
+    return;
+  }
+  for (std::string_view key : {"fov", "resolution", "aspect", "fx", "fy", "cx", "cy"}) {
+    if (camera.find(key)) camera.failAt(key, "cannot be given with 'projection': 'orthographic' (ortho_height sets the view)");
+  }
+  if (!camera.find("width")) camera.fail("an orthographic camera needs 'width' and 'height' (its image in pixels)");
+  if (spec.fit) {
+    if (height) height->fail("cannot be given with 'fit': the scene's bounds set it");
+    return;
+  }
+  if (!height) camera.fail("missing required field 'ortho_height' (the metres the image spans from top to bottom)");
+  spec.orthoHeight = inRange(*height, kMinOrthoHeight, MAX_COORDINATE);
+}
+
 void readDepthRange(const Node& camera, CameraSpec& spec) {
   if (auto node = camera.find("near")) spec.nearPlane = positive(*node);
   // The renderers clip at near as a float: one that rounds to 0 would let them divide by w = 0.
@@ -154,6 +186,7 @@ CameraSpec readCamera(const Node& camera) {
   }
   readImageSize(camera, spec);
   readIntrinsics(camera, spec);
+  readProjection(camera, spec);
   if (!spec.fit) readDepthRange(camera, spec);
   return spec;
 }

@@ -32,7 +32,10 @@ Json cameraJson(const CameraSpec& c) {
     json["aspect"] = c.aspect;
     json["resolution"] = c.resolution;
   }
-  if (c.intrinsics) {
+  if (c.orthographic) {
+    json["projection"] = "orthographic";
+    if (!c.fit) json["ortho_height"] = c.orthoHeight;
+  } else if (c.intrinsics) {
     json["fx"] = c.fx;
     json["fy"] = c.fy;
     json["cx"] = c.cx;

@@ -17,9 +17,16 @@ layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frameBlock; };
 // loaded the members it used lane by lane, a gather with a bounds check each, in every pixel loop
 // (resolve_large on fig1_cube: 33 such gathers, a fifth of its instructions); the copy is loaded once.
 FrameData frame;
+// The camera's projection (shared.h PROJECTION_*), which loadUniforms writes over the copy's
+// field: a constant, so a perspective pass compiles to the code it had before orthographic
+// cameras existed (the shared maths asks frame.projection in every pixel's depth).
+layout(constant_id = SPEC_PROJECTION) const uint PROJECTION = PROJECTION_PERSPECTIVE;
 
 #ifdef PHONGVK_GRAPHICS_STAGE
-void loadUniforms() { frame = frameBlock; }
+void loadUniforms() {
+  frame = frameBlock;
+  frame.projection = PROJECTION;
+}
 #else
 layout(std140, binding = BINDING_CONTROL) uniform Control { PassControl controlBlock; };
 PassControl control;
@@ -36,6 +43,7 @@ uint runtimeOne() { return gl_NumWorkGroups.y; }
 // inliner cannot look into.
 void loadUniforms() {
   frame = frameBlock;
+  frame.projection = PROJECTION;
   control = controlBlock;
   uint one = runtimeOne();
   control.vertexCount *= one;
@@ -162,5 +170,5 @@ void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullB
 GouraudTriangle loadGouraud(uint id) {
   ShadedVertex a, b, c;
   loadTriangle(id, a, b, c);
-  return gouraudTriangle(a, b, c);
+  return gouraudTriangle(a, b, c, frame.projection);
 }

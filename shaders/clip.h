@@ -1,19 +1,21 @@
 // clip.h — clipping against the near plane and the guard band, and the frustum test that culls a
 // triangle off screen (docs/DESIGN.md "Rasterization"). Shared by the GPU passes and the reference; see
-// glsl_cpp.h for the dialect rules. Positions are homogeneous pixel-space h = (X, Y, W) (phong.h).
+// glsl_cpp.h for the dialect rules. Positions are pixel-space h = (X, Y, z_view) (phong.h),
+// homogeneous with W = homogeneousW(h) (edges.h).
 #ifndef PHONGVK_CLIP_H
 #define PHONGVK_CLIP_H
 
 #include "glsl_cpp.h"
 #include "exact_float.h"
 #include "shared.h"
+#include "edges.h"
 
 SHARED_BEGIN
 
 // Signed distances of h to the five clip planes (inside >= 0): near, and the guard band's
 // left, right, top and bottom.
-FN float clipDistance(vec3 h, int plane, float nearPlane) {
-  PRECISE float g = GUARD_BAND * h.z;
+FN float clipDistance(vec3 h, int plane, float nearPlane, uint projection) {
+  PRECISE float g = GUARD_BAND * homogeneousW(h, projection);
   if (plane == 0) return h.z - nearPlane;
   if (plane == 1) return h.x + g;
   if (plane == 2) return g - h.x;
@@ -23,6 +25,8 @@ FN float clipDistance(vec3 h, int plane, float nearPlane) {
 
 // The point where segment inside -> outside crosses a plane. Always computed from the inside
 // end, so two triangles sharing an edge produce bit-identical points (no crack, no overlap).
+// Linear in h, which is right for both projections: with a perspective one the planes pass
+// through the eye, with an orthographic one h is an affine map of the view position.
 FN vec3 clipIntersect(vec3 inside, vec3 outside, float dIn, float dOut) {
   PRECISE float t = divide(dIn, dIn - dOut);
   PRECISE vec3 p = inside + t * (outside - inside);
@@ -30,14 +34,14 @@ FN vec3 clipIntersect(vec3 inside, vec3 outside, float dIn, float dOut) {
 }
 
 // Sutherland-Hodgman against one plane: poly (count n) -> result; returns the new count.
-FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int plane, float nearPlane) {
+FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int plane, float nearPlane, uint projection) {
   vec3 result[MAX_CLIP_VERTICES];
   int m = 0;
   for (int i = 0; i < n; ++i) {
     vec3 a = poly[i];
     vec3 b = poly[(i + 1) % n];
-    float da = clipDistance(a, plane, nearPlane);
-    float db = clipDistance(b, plane, nearPlane);
+    float da = clipDistance(a, plane, nearPlane, projection);
+    float db = clipDistance(b, plane, nearPlane, projection);
     if (da >= 0.0f) result[m++] = a;
     if ((da >= 0.0f) != (db >= 0.0f)) {
       result[m++] = da >= 0.0f ? clipIntersect(a, b, da, db) : clipIntersect(b, a, db, da);
@@ -49,15 +53,15 @@ FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int p
 
 // Clips triangle h0 h1 h2 to the near plane and guard band. Returns the vertex count of the
 // convex polygon left in poly (0 when nothing is in front of the near plane).
-FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, OUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES)) {
+FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection, OUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES)) {
   poly[0] = h0;
   poly[1] = h1;
   poly[2] = h2;
   int n = 3;
   for (int plane = 0; plane < 5 && n > 0; ++plane) {
     bool allInside = true;
-    for (int i = 0; i < n; ++i) allInside = allInside && clipDistance(poly[i], plane, nearPlane) >= 0.0f;
-    if (!allInside) n = clipAgainstPlane(poly, n, plane, nearPlane);
+    for (int i = 0; i < n; ++i) allInside = allInside && clipDistance(poly[i], plane, nearPlane, projection) >= 0.0f;
+    if (!allInside) n = clipAgainstPlane(poly, n, plane, nearPlane, projection);
   }
   return n < 3 ? 0 : n;
 }
@@ -72,13 +76,14 @@ FN bool outsideFrustum(vec3 h0, vec3 h1, vec3 h2, FrameData frame) {
     bool allOut = true;
     for (int i = 0; i < 3; ++i) {
       vec3 h = i == 0 ? h0 : (i == 1 ? h1 : h2);
+      float w = homogeneousW(h, frame.projection);
       PRECISE float d;
       if (plane == 0) d = h.z - frame.nearPlane;
       else if (plane == 1) d = frame.farPlane - h.z;
-      else if (plane == 2) d = h.x + lo.x * h.z;
-      else if (plane == 3) d = hi.x * h.z - h.x;
-      else if (plane == 4) d = h.y + lo.y * h.z;
-      else d = hi.y * h.z - h.y;
+      else if (plane == 2) d = h.x + lo.x * w;
+      else if (plane == 3) d = hi.x * w - h.x;
+      else if (plane == 4) d = h.y + lo.y * w;
+      else d = hi.y * w - h.y;
       allOut = allOut && d < 0.0f;
     }
     if (allOut) return true;
@@ -87,10 +92,10 @@ FN bool outsideFrustum(vec3 h0, vec3 h1, vec3 h2, FrameData frame) {
 }
 
 // True when vertex h is outside none of the five planes (no clipDistance below 0).
-FN bool insidePlanes(vec3 h, float nearPlane) {
-  return !(clipDistance(h, 0, nearPlane) < 0.0f || clipDistance(h, 1, nearPlane) < 0.0f ||
-           clipDistance(h, 2, nearPlane) < 0.0f || clipDistance(h, 3, nearPlane) < 0.0f ||
-           clipDistance(h, 4, nearPlane) < 0.0f);
+FN bool insidePlanes(vec3 h, float nearPlane, uint projection) {
+  return !(clipDistance(h, 0, nearPlane, projection) < 0.0f || clipDistance(h, 1, nearPlane, projection) < 0.0f ||
+           clipDistance(h, 2, nearPlane, projection) < 0.0f || clipDistance(h, 3, nearPlane, projection) < 0.0f ||
+           clipDistance(h, 4, nearPlane, projection) < 0.0f);
 }
 
 // True when no vertex is outside the near plane or the guard band: the polygon is the triangle.
@@ -98,8 +103,9 @@ FN bool insidePlanes(vec3 h, float nearPlane) {
 // pass asks it of every triangle, and lavapipe ran that loop for real, 5 masked trips per SIMD
 // batch with its state spilled: a measurable share of a frame of small triangles
 // (docs/PERFORMANCE.md, "Raster").
-FN bool insideClipVolume(vec3 h0, vec3 h1, vec3 h2, float nearPlane) {
-  return insidePlanes(h0, nearPlane) && insidePlanes(h1, nearPlane) && insidePlanes(h2, nearPlane);
+FN bool insideClipVolume(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection) {
+  return insidePlanes(h0, nearPlane, projection) && insidePlanes(h1, nearPlane, projection) &&
+         insidePlanes(h2, nearPlane, projection);
 }
 
 SHARED_END

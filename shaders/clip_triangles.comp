@@ -32,7 +32,7 @@ void main() {
     // Inside the clip volume (most here: not small): set up as itself, as the reference does. The
     // clipper runs in a 0/1-trip loop (on lavapipe no cheaper than an if: a loop body runs once,
     // masked, even when no lane enters it).
-    bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane);
+    bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection);
     if (!inside && !CLIP_POLYGONS) {
       atomicOr(status.flags, STATUS_NEEDS_CLIPPING);
       continue;

@@ -2,8 +2,10 @@
 // the view depth where its centre's ray meets the triangle's plane (not the clipped polygon's):
 // with h0 h1 h2 the homogeneous pixel-space vertices and p the pixel's ray (x + 0.5 - cx,
 // y + 0.5 - cy, 1), z = dot(h0, n) / dot(p, n), n = (h1 - h0) x (h2 - h0); the same quantities
-// give perspective-correct barycentrics (gouraud.h). No w <= 0 is ever divided by. Shared by the
-// GPU passes and the reference; see glsl_cpp.h for the dialect rules.
+// give perspective-correct barycentrics (gouraud.h). No w <= 0 is ever divided by. With an
+// orthographic camera h0 h1 h2 are points (X, Y, z) of an affine space, n their plane's normal,
+// and the pixel's depth is that plane's z over (x + 0.5 - cx, y + 0.5 - cy). Shared by the GPU
+// passes and the reference; see glsl_cpp.h for the dialect rules.
 #ifndef PHONGVK_DEPTH_H
 #define PHONGVK_DEPTH_H
 
@@ -14,8 +16,7 @@
 
 SHARED_BEGIN
 
-// The triangle's plane in pixel space: n = (h1 - h0) x (h2 - h0) and dot(h0, n). dot(h0, n) < 0
-// exactly when the triangle faces the eye (counter-clockwise seen from outside).
+// The triangle's plane in pixel space: n = (h1 - h0) x (h2 - h0) and dot(h0, n).
 struct TrianglePlane {
   vec3 n;
   float h0n;
@@ -28,14 +29,24 @@ FN TrianglePlane trianglePlane(vec3 h0, vec3 h1, vec3 h2) {
   return t;
 }
 
+// Below 0 exactly when the triangle faces the eye (counter-clockwise seen from outside), 0 when it
+// is seen edge-on: dot(h0, n) with a perspective camera; n.z, twice its signed area on screen,
+// with an orthographic one (dot(h0, n) is then a position's offset along n).
+FN float facing(TrianglePlane t, uint projection) { return projection == PROJECTION_ORTHOGRAPHIC ? t.n.z : t.h0n; }
+
 // The pixel centre as a ray direction in pixel space: (x + 0.5 - cx, y + 0.5 - cy, 1).
 FN vec3 pixelRay(int x, int y, vec2 principal) {
   PRECISE vec3 p = vec3(float(x) + 0.5f - principal.x, float(y) + 0.5f - principal.y, 1.0f);
   return p;
 }
 
-// View depth where the pixel's ray meets the triangle's plane.
-FN float depthAt(TrianglePlane t, vec3 p) {
+// View depth where the pixel's ray meets the triangle's plane (orthographic: where the plane is
+// over the pixel's position p.xy).
+FN float depthAt(TrianglePlane t, vec3 p, uint projection) {
+  if (projection == PROJECTION_ORTHOGRAPHIC) {
+    PRECISE float zOrtho = divide(t.h0n - (p.x * t.n.x + p.y * t.n.y), t.n.z);
+    return zOrtho;
+  }
   PRECISE float z = divide(t.h0n, dot3(p, t.n));
   return z;
 }
@@ -56,7 +67,7 @@ FN uint64_t depthKey(float z, float zMin, float zMax, float farPlane, uint trian
 
 // The key a triangle with this plane, depth range and id offers pixel (x, y), which it covers.
 FN uint64_t planeKey(TrianglePlane plane, float zMin, float zMax, uint triangle, int x, int y, FrameData frame) {
-  float z = depthAt(plane, pixelRay(x, y, frame.principal));
+  float z = depthAt(plane, pixelRay(x, y, frame.principal), frame.projection);
   return depthKey(z, zMin, zMax, frame.farPlane, triangle);
 }
 

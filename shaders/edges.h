@@ -10,12 +10,18 @@
 
 SHARED_BEGIN
 
+// The homogeneous W of h: its view depth with a perspective camera, 1 with an orthographic one
+// (shared.h PROJECTION_*). h.z is the view depth either way.
+FN float homogeneousW(vec3 h, uint projection) { return projection == PROJECTION_ORTHOGRAPHIC ? 1.0f : h.z; }
+
 // Screen position in 1/256 pixel units, rounded to nearest (ties up). W >= near here, and h is
 // inside the guard band, so the result is below 2^28 in magnitude: an int holds it exactly (and
-// a SIMD CPU converts to 32-bit integers natively, to 64-bit lane by lane).
-FN ivec2 snapToSubpixel(vec3 h, vec2 principal) {
-  PRECISE float sx = (divide(h.x, h.z) + principal.x) * float(SUBPIXEL_ONE) + 0.5f;
-  PRECISE float sy = (divide(h.y, h.z) + principal.y) * float(SUBPIXEL_ONE) + 0.5f;
+// a SIMD CPU converts to 32-bit integers natively, to 64-bit lane by lane). Division by W = 1 is
+// exact, so an orthographic position is snapped as it is.
+FN ivec2 snapToSubpixel(vec3 h, vec2 principal, uint projection) {
+  float w = homogeneousW(h, projection);
+  PRECISE float sx = (divide(h.x, w) + principal.x) * float(SUBPIXEL_ONE) + 0.5f;
+  PRECISE float sy = (divide(h.y, w) + principal.y) * float(SUBPIXEL_ONE) + 0.5f;
   return ivec2(int(floor(sx)), int(floor(sy)));
 }
 

@@ -15,7 +15,9 @@ SHARED_BEGIN
 // What Gouraud interpolation needs of one triangle, whatever the pixel: the plane normal n, the
 // planes whose dot with the pixel ray give the barycentrics of vertices 1 and 2 (up to a common
 // factor), the vertex colours as c0 + b1 dc1 + b2 dc2, and for screen-space interpolation
-// dot(h0, n) and the vertices' W.
+// dot(h0, n) and the vertices' W. With an orthographic camera the vertices are taken at W = 1, so
+// the same formulas give barycentrics linear in screen space, as that projection has them, and
+// n = (0, 0, n.z), dot(h0, n) = n.z exactly (depth.h facing).
 struct GouraudTriangle {
   vec3 n;
   float det;
@@ -28,15 +30,24 @@ struct GouraudTriangle {
   vec3 dc2;
 };
 
-FN GouraudTriangle gouraudTriangle(ShadedVertex a, ShadedVertex b, ShadedVertex c) {
+FN GouraudTriangle gouraudTriangle(ShadedVertex a, ShadedVertex b, ShadedVertex c, uint projection) {
   vec3 h0 = vec3(a.hpos);
   vec3 h1 = vec3(b.hpos);
   vec3 h2 = vec3(c.hpos);
+  if (projection == PROJECTION_ORTHOGRAPHIC) {
+    h0.z = 1.0f;
+    h1.z = 1.0f;
+    h2.z = 1.0f;
+  }
   PRECISE vec3 e1 = h1 - h0;
   PRECISE vec3 e2 = h2 - h0;
   GouraudTriangle g;
   g.n = cross3(e1, e2);
   g.det = dot3(h0, g.n);
+  if (projection == PROJECTION_ORTHOGRAPHIC) {  // the same values, without zeros' signs
+    g.n = vec3(0.0f, 0.0f, g.n.z);
+    g.det = g.n.z;
+  }
   g.u1 = cross3(e2, h0);  // dot(p, u1) is proportional to the barycentric of vertex 1
   g.u2 = cross3(h0, e1);  // ... of vertex 2
   g.w1 = h1.z;
@@ -93,7 +104,7 @@ FN uint shadePixel(GouraudTriangle g, int x, int y, FrameData frame, uint mode) 
 
 // shadePixel for the triangle with these vertices.
 FN uint resolvePixel(ShadedVertex a, ShadedVertex b, ShadedVertex c, int x, int y, FrameData frame, uint mode) {
-  return shadePixel(gouraudTriangle(a, b, c), x, y, frame, mode);
+  return shadePixel(gouraudTriangle(a, b, c, frame.projection), x, y, frame, mode);
 }
 
 SHARED_END

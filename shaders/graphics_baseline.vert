@@ -27,17 +27,20 @@ layout(constant_id = SPEC_LIGHT_COUNT) const uint LIGHT_COUNT = 0u;
 // clipped polygon instead and disagree with the reference.
 layout(location = 0) out vec4 gouraud;
 
-// h = (X, Y, W) -> clip space. The screen position is principal + (X, Y) / W and Vulkan's NDC run
-// from -1 to 1 across the image with y down like ours, so x_ndc = (X / W + principal.x) * 2 / width
-// - 1. Depth is reversed-Z: z_ndc = near (far - W) / ((far - near) W) is 1 at the near plane and
-// 0 at the far plane, so the hardware's clipping (0 <= z <= w) is exactly near <= W <= far, and a
-// float depth buffer keeps the relative precision of W at every distance (hyperbolic z / w meets
-// float's dense exponents near 0).
+// h = (X, Y, z) -> clip space, with W = homogeneousW(h): z with a perspective camera, 1 with an
+// orthographic one. The screen position is principal + (X, Y) / W and Vulkan's NDC run from -1 to
+// 1 across the image with y down like ours, so x_ndc = (X / W + principal.x) * 2 / width - 1. Depth
+// is reversed-Z: z_ndc = near (far - z) / ((far - near) W) is 1 at the near plane and 0 at the far
+// plane, so the hardware's clipping (0 <= z <= w) is exactly near <= z <= far, and a float depth
+// buffer keeps the relative precision of z at every distance (hyperbolic z / w meets float's dense
+// exponents near 0). An orthographic depth is linear in z: (far - z) / (far - near).
 vec4 clipPosition(vec3 h) {
   vec2 size = vec2(frame.width, frame.height);
-  vec2 xy = h.xy * (2.0f / size) + h.z * (frame.principal * (2.0f / size) - 1.0f);
-  float z = frame.nearPlane * (frame.farPlane - h.z) / (frame.farPlane - frame.nearPlane);
-  return vec4(xy, z, h.z);
+  float w = homogeneousW(h, frame.projection);
+  vec2 xy = h.xy * (2.0f / size) + w * (frame.principal * (2.0f / size) - 1.0f);
+  float nearScale = frame.projection == PROJECTION_ORTHOGRAPHIC ? 1.0f : frame.nearPlane;
+  float z = nearScale * (frame.farPlane - h.z) / (frame.farPlane - frame.nearPlane);
+  return vec4(xy, z, w);
 }
 
 void main() {
@@ -48,8 +51,9 @@ void main() {
   vec3 h = toHomogeneous(v.position, object.viewOffset, frame);
   gl_Position = clipPosition(h);
   vec3 P = lightingPosition(v.position, object.lightOffset);
-  vec3 V = toEye(P, frame.eye);
+  vec3 V = viewVector(P, frame);
   vec3 color = phongAmbient(m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) color += phongLight(P, v.normal, V, m, lightData(l));
-  gouraud = INTERPOLATION == INTERP_SCREEN ? vec4(color * h.z, h.z) : vec4(color, 1.0f);
+  float w = homogeneousW(h, frame.projection);
+  gouraud = INTERPOLATION == INTERP_SCREEN ? vec4(color * w, w) : vec4(color, 1.0f);
 }

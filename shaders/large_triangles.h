@@ -222,14 +222,19 @@ FN LargeShading packShading(GouraudTriangle g) {
 // The GouraudTriangle that packShading(g) kept, with n and det from g's triangle's plane: every
 // field equals g's, bit for bit (t4 may be left zero in perspective mode, which does not read W).
 // With n shared, the dot product of the pixel ray and n is the same value in depthAt and in
-// interpolateColor, computed once per pixel.
-FN GouraudTriangle unpackShading(LargeShading s, TrianglePlane plane) {
+// interpolateColor, computed once per pixel. With an orthographic camera g's n is (0, 0, n.z) and
+// det n.z (gouraudTriangle), n.z being the same products of the same positions as the plane's.
+FN GouraudTriangle unpackShading(LargeShading s, TrianglePlane plane, uint projection) {
   GouraudTriangle g;
   g.u1 = vec3(s.t0);
   g.u2 = vec3(s.t1);
   g.c0 = vec3(s.t0.w, s.t1.w, s.t2.w);
   g.n = plane.n;
   g.det = plane.h0n;
+  if (projection == PROJECTION_ORTHOGRAPHIC) {
+    g.n = vec3(0.0f, 0.0f, plane.n.z);
+    g.det = plane.n.z;
+  }
   g.w1 = s.t4.x;
   g.w2 = s.t4.y;
   g.dc1 = vec3(s.t2);

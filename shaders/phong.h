@@ -169,6 +169,14 @@ FN vec3 toEye(vec3 P, vec3 eye) {
   return V;
 }
 
+// The view vector V of the Phong model at P: toward the eye with a perspective camera; with an
+// orthographic one every point is seen along the view axis, so V is -forward (the host's unit
+// vector, rounded to float) everywhere.
+FN vec3 viewVector(vec3 P, FrameData frame) {
+  if (frame.projection == PROJECTION_ORTHOGRAPHIC) return -vec3(frame.forward);
+  return toEye(P, frame.eye);
+}
+
 SHARED_END
 
 #endif  // PHONGVK_PHONG_H

@@ -34,7 +34,7 @@ void main() {
     loadForSetup(id, h0, h1, h2, cullBack);
     TriangleSetup t;
     if (!setupPlane(h0, h1, h2, cullBack, id, frame, t)) continue;
-    bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane);
+    bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection);
     if (inside && !setupUnclipped(h0, h1, h2, frame, t)) continue;
     if (inside && fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {
       rasterizeSmallTriangle(t);

@@ -101,7 +101,7 @@ void rasterizeTile(ivec2 origin, uint head, uint end, uint tile, bool keysWritte
   for (uvec2 entry = nextEntryIn(head, end, tile); entry.x != LIST_END; entry = nextEntryIn(entry.y, end, tile)) {
     uint slot = entry.x;
     LargeTriangle t = largeSetup(slot);
-    GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), t.plane);
+    GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), t.plane, frame.projection);
     ColumnEdges c = columnEdges(t, blockEdges(t, origin), column);
     FOR_ROWS(RASTER_ROW)
   }
@@ -130,7 +130,7 @@ void rasterizeTile(ivec2 origin, uint head, uint end, uint tile, bool keysWritte
 // same as rasterizeTile would compute for them.
 void shadeOwnedTile(ivec2 origin, uint slot) {
   int x = origin.x + int(gl_LocalInvocationID.x);
-  GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), largeSetup(slot).plane);
+  GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), largeSetup(slot).plane, frame.projection);
   uint packedBits = 0u;
   FOR_ROWS(SHADE_OWNED_ROW)
   keepVectors(packedBits);

@@ -30,7 +30,7 @@ uint pixelColor(uint id, int x, int y) {
     vec2 bary = barycentrics(loadGouraud(id), pixelRay(x, y, frame.principal), INTERPOLATION);
     s = phongSurface(a, b, c, object.lightOffset, m, bary);
   }
-  vec3 V = toEye(s.P, frame.eye);
+  vec3 V = viewVector(s.P, frame);
   vec3 color = phongAmbient(s.m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
     color += phongLightWith(s.P, s.N, V, s.m, lightData(l), SPECULAR, CONSTANT_ATTENUATION, BLINN);

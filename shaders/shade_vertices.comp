@@ -27,7 +27,7 @@ void shadeVertex(uint i) {
   }
   if (control.shadeColors == 0u || SHADING != SHADING_GOURAUD) return;  // unchanged, or lit per pixel
   vec3 P = lightingPosition(v.position, object.lightOffset);
-  vec3 V = toEye(P, frame.eye);
+  vec3 V = viewVector(P, frame);
   vec3 color = phongAmbient(m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
     color += phongLightWith(P, v.normal, V, m, lightData(l), SPECULAR, CONSTANT_ATTENUATION, BLINN);

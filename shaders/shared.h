@@ -43,6 +43,13 @@ PHONGVK_CONST uint MAX_CLIP_VERTICES = 8;
 PHONGVK_CONST uint INTERP_PERSPECTIVE = 0;
 PHONGVK_CONST uint INTERP_SCREEN = 1;
 
+// Projections (FrameData.projection; docs/DESIGN.md "Camera"). Perspective: the homogeneous
+// pixel-space position h = (X, Y, W) has W = z_view, the screen position is principal + (X, Y) / W.
+// Orthographic: focalX and focalY are pixels per metre at any depth, the screen position is
+// principal + (X, Y) and h.z is the view depth alone (W = 1; edges.h homogeneousW).
+PHONGVK_CONST uint PROJECTION_PERSPECTIVE = 0;
+PHONGVK_CONST uint PROJECTION_ORTHOGRAPHIC = 1;
+
 // Shading modes (FrameData.shading; docs/DESIGN.md "Shading"): Gouraud (lit per vertex, colours
 // interpolated), flat (one colour per triangle, lit at its centroid with its face normal) and Phong
 // (lit per pixel, position, normal and colour interpolated).
@@ -100,7 +107,8 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(SPEC_LIST_CHUNK, 8)                 \
   X(SPEC_SHADING, 9)                    \
   X(SPEC_BLINN, 10)                     \
-  X(SPEC_CLIP_POLYGONS, 11)
+  X(SPEC_CLIP_POLYGONS, 11)             \
+  X(SPEC_PROJECTION, 12)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;
@@ -122,7 +130,8 @@ PHONGVK_CONST uint VERTEX_WHITE = 0xFFFFFFFFu;  // the colour of a vertex that h
 
 // Output of the per-vertex pass: homogeneous pixel-space position and unclamped Phong colour.
 // hpos = (focalX * x_view, -focalY * y_view, z_view, unused): the screen position is
-// principal point + hpos.xy / hpos.z, with y pointing down.
+// principal point + hpos.xy / hpos.z with a perspective camera (principal point + hpos.xy with an
+// orthographic one), with y pointing down.
 struct ShadedVertex {
   vec4 hpos;
   vec4 color;
@@ -175,6 +184,10 @@ struct FrameData {
   uint shading;      // SHADING_*
   uint specular;     // SPECULAR_*
   float focalY;      // pixels per metre at 1 m, down (fy)
+  uint projection;   // PROJECTION_*; in the shaders, the specialization constant (bindings.glsl)
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 #ifdef __cplusplus
@@ -190,7 +203,8 @@ static_assert(offsetof(FrameData, width) == 92 && offsetof(FrameData, eye) == 96
 static_assert(offsetof(FrameData, height) == 108 && offsetof(FrameData, interpolation) == 112);
 static_assert(offsetof(FrameData, shading) == 116 && offsetof(FrameData, specular) == 120);
 static_assert(offsetof(FrameData, focalY) == 124);
-static_assert(sizeof(FrameData) == 128);
+static_assert(offsetof(FrameData, projection) == 128);
+static_assert(sizeof(FrameData) == 144);
 
 // Every binding number and specialization-constant id appears once in its table.
 constexpr bool distinctIds(std::initializer_list<uint> ids) {

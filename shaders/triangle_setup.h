@@ -37,9 +37,9 @@ FN bool setupUnclipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(Triangl
   t.count = 3;
   t.zMin = min(min(h0.z, h1.z), h2.z);
   t.zMax = max(max(h0.z, h1.z), h2.z);
-  ivec2 v0 = snapToSubpixel(h0, frame.principal);
-  ivec2 v1 = snapToSubpixel(h1, frame.principal);
-  ivec2 v2 = snapToSubpixel(h2, frame.principal);
+  ivec2 v0 = snapToSubpixel(h0, frame.principal, frame.projection);
+  ivec2 v1 = snapToSubpixel(h1, frame.principal, frame.projection);
+  ivec2 v2 = snapToSubpixel(h2, frame.principal, frame.projection);
   t.snapped[0] = v0;
   t.snapped[1] = v1;
   t.snapped[2] = v2;
@@ -52,8 +52,9 @@ FN bool setupUnclipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(Triangl
 FN bool setupPlane(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
   if (outsideFrustum(h0, h1, h2, frame)) return false;
   t.plane = trianglePlane(h0, h1, h2);
-  if (t.plane.h0n == 0.0f) return false;
-  t.frontFacing = t.plane.h0n < 0.0f ? 1u : 0u;
+  float side = facing(t.plane, frame.projection);
+  if (side == 0.0f) return false;
+  t.frontFacing = side < 0.0f ? 1u : 0u;
   if (cullBack && t.frontFacing == 0u) return false;
   t.triangle = triangle;
   return true;
@@ -65,17 +66,17 @@ FN bool setupPlane(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, Fram
 // per-lane arrays slow down every triangle of a pass that merely contains them.)
 FN bool setupClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleSetup) t) {
   vec3 poly[MAX_CLIP_VERTICES];
-  t.count = clipTriangle(h0, h1, h2, frame.nearPlane, poly);
+  t.count = clipTriangle(h0, h1, h2, frame.nearPlane, frame.projection, poly);
   if (t.count == 0) return false;
   t.zMin = poly[0].z;
   t.zMax = poly[0].z;
-  ivec2 lo = snapToSubpixel(poly[0], frame.principal);
+  ivec2 lo = snapToSubpixel(poly[0], frame.principal, frame.projection);
   ivec2 hi = lo;
   t.snapped[0] = lo;
   for (int i = 1; i < t.count; ++i) {
     t.zMin = min(t.zMin, poly[i].z);
     t.zMax = max(t.zMax, poly[i].z);
-    ivec2 v = snapToSubpixel(poly[i], frame.principal);
+    ivec2 v = snapToSubpixel(poly[i], frame.principal, frame.projection);
     t.snapped[i] = v;
     lo = min(lo, v);
     hi = max(hi, v);
@@ -87,7 +88,7 @@ FN bool setupClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleS
 // Culls, clips and snaps a triangle for rasterization. False: it draws nothing.
 FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
   if (!setupPlane(h0, h1, h2, cullBack, triangle, frame, t)) return false;
-  if (insideClipVolume(h0, h1, h2, frame.nearPlane)) return setupUnclipped(h0, h1, h2, frame, t);
+  if (insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection)) return setupUnclipped(h0, h1, h2, frame, t);
   return setupClipped(h0, h1, h2, frame, t);
 }
 

@@ -2,6 +2,7 @@
 #include "prepare/camera_fit.h"
 #include "prepare/scene_data.h"
 #include "scene/camera.h"
+#include "shaders/edges.h"
 #include "shaders/phong.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +25,8 @@ glm::vec2 project(const CameraSpec& camera, glm::dvec3 world) {
   data.objectOrigins = {world};
   const FrameInputs in = makeFrame(data, view);
   const glm::vec3 h = gpu::toHomogeneous(glm::vec3(0.0f), in.objects[0].viewOffset, in.frame);
-  return glm::vec2(h.x / h.z, h.y / h.z) + in.frame.principal;
+  const float w = gpu::homogeneousW(h, in.frame.projection);
+  return glm::vec2(h.x / w, h.y / w) + in.frame.principal;
 }
 
 TEST(Camera, DefaultImageIs1385x923) {
@@ -153,6 +155,44 @@ TEST(Camera, AFittedCameraNeedsThePrincipalPointInsideTheImage) {
     EXPECT_STREQ(e.what(), "camera.fit: the principal point (cx, cy) = (-3, 70) is not inside the image, so no "
                            "view centred on it frames the scene");
   }
+}
+
+CameraSpec orthographic() {
+  CameraSpec c = lookingAlongY();
+  c.orthographic = true;
+  c.orthoHeight = 2.5;
+  c.width = 200;
+  c.height = 100;
+  return c;
+}
+
+TEST(Camera, OrthographicPointsLandAtTheirOffsetTimesTheScaleAtAnyDepth) {
+  // 100 px over 2.5 m: 40 px per metre both ways, about the image centre (100, 50), y down.
+  const CameraSpec c = orthographic();
+  EXPECT_EQ(makeView(c).focal, glm::dvec2(40, 40));
+  for (double depth : {0.5, 5.0, 500.0}) {
+    const glm::vec2 p = project(c, {1 + 0.5, 2 + depth, 3 - 0.25});
+    EXPECT_FLOAT_EQ(p.x, 100 + 40 * 0.5f) << depth;
+    EXPECT_FLOAT_EQ(p.y, 50 + 40 * 0.25f) << depth;
+  }
+  // Resized and supersampled, it keeps its height in metres.
+  EXPECT_EQ(makeView(withImageSize(c, 400, 50)).focal, glm::dvec2(20, 20));
+  EXPECT_EQ(supersampled(makeView(c), 2).focal, glm::dvec2(80, 80));
+}
+
+TEST(Camera, AFittedOrthographicCameraSpansTheBoundingSphereAcrossItsNarrowerSide) {
+  SceneSpec scene;
+  scene.camera = orthographic();
+  scene.camera.fit = true;
+  scene.camera.aspect = 2;
+  SceneData data;
+  data.boundsMin = {-1, -1, -1};
+  data.boundsMax = {1, 1, 1};
+  const SceneSpec framed = framedScene(scene, data);
+  EXPECT_NEAR(framed.camera.orthoHeight, 2 * 1.05 * std::sqrt(3.0), 1e-12);  // the height is the narrower side
+  EXPECT_NEAR(glm::length(framed.camera.position), 1.05 * std::sqrt(3.0) / std::sin(glm::radians(30.0)), 1e-9);
+  scene.camera.aspect = 0.5;  // portrait: the width is
+  EXPECT_NEAR(framedScene(scene, data).camera.orthoHeight, 2 * 1.05 * std::sqrt(3.0) / 0.5, 1e-12);
 }
 
 }  // namespace

@@ -300,33 +300,39 @@ TEST(GpuMaths, BinRowRangeKeepsEveryBinWithACoveredPixel) {
 TEST(GpuMaths, LargeShadingKeepsTheColourOfEveryPixelBitForBit) {
   // The clip pass stores a large triangle's Gouraud constants without n and det, which resolve
   // takes from the triangle's plane: every pixel's colour must be the one computed from the
-  // triangle itself, in both interpolation modes, bit for bit.
+  // triangle itself, in both interpolation modes and both projections, bit for bit. (An
+  // orthographic triangle's plane is through its (X, Y, depth) points; its Gouraud constants are
+  // those of the points at W = 1.)
   std::mt19937 rng(41);
   std::uniform_real_distribution<float> xy(-3000.0f, 3000.0f), w(0.05f, 50.0f), colour(0.0f, 1.5f);
   std::uniform_real_distribution<float> pixel(-800.0f, 800.0f);
   int compared = 0;
-  for (int trial = 0; trial < 2000; ++trial) {
-    ShadedVertex v[3];
-    for (ShadedVertex& s : v) {
-      const float z = w(rng);
-      s.hpos = vec4(xy(rng) * z / 100.0f, xy(rng) * z / 100.0f, z, 1.0f);
-      s.color = vec4(colour(rng), colour(rng), colour(rng), 1.0f);
-    }
-    const GouraudTriangle g = gouraudTriangle(v[0], v[1], v[2]);
-    const TrianglePlane plane = trianglePlane(vec3(v[0].hpos), vec3(v[1].hpos), vec3(v[2].hpos));
-    const GouraudTriangle stored = unpackShading(packShading(g), plane);
-    for (int k = 0; k < 8; ++k) {
-      const vec3 p(pixel(rng), pixel(rng), 1.0f);
-      for (uint mode : {INTERP_PERSPECTIVE, INTERP_SCREEN}) {
-        const vec3 expected = interpolateColor(g, p, mode), got = interpolateColor(stored, p, mode);
-        for (int c = 0; c < 3; ++c) {
-          ASSERT_EQ(std::bit_cast<uint32_t>(got[c]), std::bit_cast<uint32_t>(expected[c])) << "trial " << trial;
+  for (uint projection : {PROJECTION_PERSPECTIVE, PROJECTION_ORTHOGRAPHIC}) {
+    for (int trial = 0; trial < 2000; ++trial) {
+      ShadedVertex v[3];
+      for (ShadedVertex& s : v) {
+        const float z = w(rng);
+        const float scale = projection == PROJECTION_ORTHOGRAPHIC ? 1.0f : z / 100.0f;
+        s.hpos = vec4(xy(rng) * scale, xy(rng) * scale, z, 1.0f);
+        s.color = vec4(colour(rng), colour(rng), colour(rng), 1.0f);
+      }
+      const GouraudTriangle g = gouraudTriangle(v[0], v[1], v[2], projection);
+      const TrianglePlane plane = trianglePlane(vec3(v[0].hpos), vec3(v[1].hpos), vec3(v[2].hpos));
+      const GouraudTriangle stored = unpackShading(packShading(g), plane, projection);
+      for (int k = 0; k < 8; ++k) {
+        const vec3 p(pixel(rng), pixel(rng), 1.0f);
+        for (uint mode : {INTERP_PERSPECTIVE, INTERP_SCREEN}) {
+          const vec3 expected = interpolateColor(g, p, mode), got = interpolateColor(stored, p, mode);
+          for (int c = 0; c < 3; ++c) {
+            ASSERT_EQ(std::bit_cast<uint32_t>(got[c]), std::bit_cast<uint32_t>(expected[c]))
+                << "projection " << projection << " trial " << trial;
+          }
+          ++compared;
         }
-        ++compared;
       }
     }
   }
-  EXPECT_EQ(compared, 2000 * 8 * 2);
+  EXPECT_EQ(compared, 2 * 2000 * 8 * 2);
 }
 
 }  // namespace

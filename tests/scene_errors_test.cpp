@@ -100,7 +100,7 @@ TEST(SceneErrors, UnknownKeyAtTopLevel) {
 TEST(SceneErrors, UnknownKeyNested) {
   EXPECT_EQ(errorFor([](ordered_json& s) { s["camera"]["zoom"] = 2; }),
             "a.json: camera.zoom: unknown key (allowed: position, direction, look_at, up, fov, "
-            "aspect, resolution, width, height, near, far, fit, fx, fy, cx, cy)");
+            "aspect, resolution, width, height, near, far, fit, fx, fy, cx, cy, projection, ortho_height)");
   EXPECT_EQ(
       materialError(R"({"shininess": 3})"),
       "a.json: materials.m.shininess: unknown key (allowed: ka, kd, ks, n, attenuation, color)");
@@ -263,6 +263,28 @@ TEST(SceneErrors, Intrinsics) {
   EXPECT_EQ(error(R"("fx": 100, "cx": 40000, "width": 64, "height": 48)"),
             "a.json: camera.cx: must be between -16384 and 32768, got 40000");
   EXPECT_EQ(error(R"("fx": 100, "cx": 31.5, "cy": 23.5, "fy": 90, "width": 64, "height": 48)"), "(no error)");
+}
+
+TEST(SceneErrors, Orthographic) {
+  const std::string eye = R"("position": [0, -5, 0], "look_at": [0, 0, 0], )";
+  const auto error = [&](const std::string& rest) { return cameraError(("{" + eye + rest + "}").c_str()); };
+  const std::string ortho = R"("projection": "orthographic", )";
+  EXPECT_EQ(error(R"("projection": "fisheye")"),
+            "a.json: camera.projection: must be one of perspective, orthographic, got 'fisheye'");
+  EXPECT_EQ(error(R"("ortho_height": 2)"), "a.json: camera.ortho_height: is only used with 'projection': 'orthographic'");
+  EXPECT_EQ(error(ortho + R"("ortho_height": 2)"),
+            "a.json: camera: an orthographic camera needs 'width' and 'height' (its image in pixels)");
+  EXPECT_EQ(error(ortho + R"("width": 64, "height": 48)"),
+            "a.json: camera: missing required field 'ortho_height' (the metres the image spans from top to bottom)");
+  EXPECT_EQ(error(ortho + R"("ortho_height": 2, "fov": 40, "width": 64, "height": 48)"),
+            "a.json: camera.fov: cannot be given with 'projection': 'orthographic' (ortho_height sets the view)");
+  EXPECT_EQ(error(ortho + R"("ortho_height": 2, "fx": 40, "width": 64, "height": 48)"),
+            "a.json: camera.fx: cannot be given with 'projection': 'orthographic' (ortho_height sets the view)");
+  EXPECT_EQ(error(ortho + R"("ortho_height": 0, "width": 64, "height": 48)"),
+            "a.json: camera.ortho_height: must be between 1e-06 and 1e+15, got 0");
+  EXPECT_EQ(error(ortho + R"("ortho_height": "2", "width": 64, "height": 48)"),
+            "a.json: camera.ortho_height: must be a number, got string");
+  EXPECT_EQ(error(ortho + R"("ortho_height": 2.5, "width": 64, "height": 48)"), "(no error)");
 }
 
 TEST(SceneErrors, FarMustExceedNear) {

@@ -47,6 +47,11 @@ struct Camera {
   double nearPlane = 0.05;
   double farPlane = 1000;
   std::optional<Intrinsics> intrinsics;
+  // Set: an orthographic camera, whose image spans this many metres from top to bottom (and
+  // orthoHeight * width / height across); every pixel looks along the view direction, and fov
+  // is not used. It needs a width and height, and no intrinsics. A scene file says it as
+  // "projection": "orthographic", "ortho_height": h.
+  std::optional<double> orthoHeight;
   bool operator==(const Camera&) const = default;
 };
 

@@ -32,9 +32,10 @@ class Camera:
     near: float
     far: float
     intrinsics: Optional[Tuple[float, float, float, float]]
+    ortho_height: Optional[float]
     def __init__(self, *, position: Sequence[float] = ..., look_at: Sequence[float] = ..., up: Sequence[float] = ...,
                  fov: float = ..., width: int = ..., height: int = ..., near: float = ..., far: float = ...,
-                 intrinsics: Optional[Sequence[float]] = None) -> None: ...
+                 intrinsics: Optional[Sequence[float]] = None, ortho_height: Optional[float] = None) -> None: ...
     @staticmethod
     def from_pose(pose: ArrayLike, *, convention: str = "opengl", fov: float = 60.0, width: int = 0,
                   height: int = 0) -> Camera: ...

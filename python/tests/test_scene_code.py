@@ -119,6 +119,44 @@ def test_poses_and_intrinsics_project_as_numpy_does(eye, intrinsics):
     assert np.array_equal(phongvk.Renderer("cpu").render(same), cpu_image)
 
 
+def test_an_orthographic_camera_projects_as_numpy_does():
+    """Markers seen by an orthographic camera land where numpy's parallel projection puts them
+    (u = (W - 1) / 2 + s r.(p - eye), v = (H - 1) / 2 - s u.(p - eye), s = H / ortho_height pixels
+    per metre), with the same size and place however far along the view they are; both renderers
+    give the same bytes, and the camera survives to_dict."""
+    width, height, ortho_height = 160, 120, 3.0
+    eye = np.array([3.0, -2.0, 1.5])
+    pose = look_at_pose_opencv(eye, (0, 0, 0))
+    rotation = pose[:3, :3]  # columns: right, down, forward
+    scene = phongvk.scene_from_dict({"camera": {"position": [9, 9, 9], "look_at": [0, 0, 0]},
+                                     "lights": [{"direction": list(rotation[:, 2])}], "objects": []})
+    scene.camera = phongvk.Camera(position=tuple(eye), look_at=(0, 0, 0), width=width, height=height,
+                                  ortho_height=ortho_height, near=0.1, far=30)
+    assert scene.camera.ortho_height == ortho_height and "ortho_height=3.0" in repr(scene.camera)
+    vertices, faces = square(0.15)
+    marker = np.eye(4)
+    marker[:3, :3] = rotation @ np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]]).T  # its -y toward the camera
+    handle = scene.add(vertices, faces)
+    gpu, cpu = phongvk.Renderer("gpu"), phongvk.Renderer("cpu")
+    s = height / ortho_height
+    for point in ([0, 0, 0], [0.9, 0.3, 0.2], [-0.7, 0.1, 0.6]):
+        seen = []
+        for along in (0.0, 8.0):  # the same marker 8 m further along the view
+            marker[:3, 3] = np.array(point) + along * rotation[:, 2]
+            scene.set_pose(handle, marker)
+            image, triangle, _ = gpu.render_visibility(scene)
+            cpu_image, cpu_triangle, _ = cpu.render_visibility(scene)
+            assert np.array_equal(image, cpu_image) and np.array_equal(triangle, cpu_triangle)
+            ys, xs = np.nonzero(triangle != phongvk.NO_TRIANGLE)
+            seen.append((len(xs), xs.mean(), ys.mean()))
+        x, y, _ = (np.array(point) - eye) @ rotation  # camera axes: right, down, forward
+        count, u, v = seen[0]
+        assert count > 16 and abs(seen[1][0] - count) <= 2  # one subpixel of rounding may move an edge
+        assert abs(seen[1][1] - u) < 0.05 and abs(seen[1][2] - v) < 0.05
+        assert abs(u - ((width - 1) / 2 + s * x)) < 0.5 and abs(v - ((height - 1) / 2 + s * y)) < 0.5
+    assert phongvk.scene_from_dict(scene.to_dict()).camera == scene.camera
+
+
 def test_objects_are_placed_moved_and_removed_by_handle(tmp_path):
     vertices, faces = octahedron()
     obj = tmp_path / "octahedron.obj"
