@@ -27,7 +27,7 @@ class CpuBackend : public RendererImpl {
   std::string deviceName() const override { return "cpu (reference)"; }
 
  protected:
-  void upload(const SceneData&, bool) override {}
+  void upload(const SceneData&, uint32_t) override {}
   RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys, Image) override {
     ++frames_;
     const auto start = Clock::now();
@@ -86,11 +86,11 @@ class GpuBackend : public VulkanBackend {
   Backend backend() const override { return Backend::Gpu; }
 
  protected:
-  void upload(const SceneData& data, bool firstFrameClips) override {
+  void upload(const SceneData& data, uint32_t firstFrameClip) override {
     const ContextLock lock(context_);
     if (renderer_) {  // a new geometry: new scene buffers; the image's buffers and the pipelines stay
       try {
-        renderer_->replaceScene(data, firstFrameClips);
+        renderer_->replaceScene(data, firstFrameClip);
         return;
       } catch (...) {
         renderer_.reset();
@@ -100,7 +100,7 @@ class GpuBackend : public VulkanBackend {
     GpuRendererOptions options;
     options.exactFloats = exactFloats_;
     options.pipelines = pipelines_;
-    options.clipPolygons = firstFrameClips;
+    options.clip = firstFrameClip;
     renderer_.emplace(context_, data, options);
   }
   RenderOutput draw(const SceneData&, const FrameInputs& in, bool withKeys, Image storage) override {
@@ -138,7 +138,7 @@ class GraphicsBackend : public VulkanBackend {
   Backend backend() const override { return Backend::Graphics; }
 
  protected:
-  void upload(const SceneData& data, bool) override {
+  void upload(const SceneData& data, uint32_t) override {
     const ContextLock lock(context_);
     renderer_.reset();
     renderer_.emplace(context_, data);

@@ -66,7 +66,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   frame(spec);
   notice_ = noticeFor(spec, *data_, camera_);
   buildMs_ += msSince(start);
-  upload(*data_, boxMayClip(*data_, sampleView()));
+  upload(*data_, boxClip(*data_, sampleView()));
   builtFrom_ = std::make_shared<const SceneSpec>(spec);
   ++sceneBuilds_;
 }

@@ -32,7 +32,7 @@ class Renderer::Impl {
 
  protected:
   // New meshes (or new material or light counts): replace whatever was uploaded.
-  virtual void upload(const SceneData& data, bool firstFrameClips) = 0;  // FrameInputs::mayClip
+  virtual void upload(const SceneData& data, uint32_t firstFrameClip) = 0;  // FrameInputs::clip
   virtual RenderOutput draw(const SceneData& data, const FrameInputs& in, bool withKeys, Image storage) = 0;
   // Frames whose lighting the backend computed, and frames it rendered again (gpu).
   virtual uint64_t framesShaded() const = 0;

@@ -129,7 +129,7 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
   std::vector<PipelineRequest> requests = {
       {SHADE, shadeSpecs(materials, lightCount)},
       {RASTER, {}},
-      {CLIP, {{SPEC_BIN_PASS, binPass_}, {SPEC_CLIP_POLYGONS, frameClips_}}},
+      {CLIP, {{SPEC_BIN_PASS, binPass_}, {SPEC_CLIP_POLYGONS, frameClip_}}},
       {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_OUTPUT, output}}},
       {RESOLVE_LARGE,
        {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
@@ -161,7 +161,7 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
 bool GpuRenderer::packsColors(bool withKeys) const { return !withKeys && !colorsInKeys_; }
 
 void GpuRenderer::selectPipelines(const FrameInputs& in) {
-  frameClips_ = clipPolygons_ || in.mayClip;
+  frameClip_ = std::max(clipFloor_, in.clip);
   const std::vector<PipelineRequest> requests = requestsFor(in.materials, in.lights.size(), in.frame, withKeys_);
   compilePipelines(requests);
   for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);

@@ -44,7 +44,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
   }
   colorsInKeys_ = options.output == ColorOutput::InKeySlots ||
                   (options.output == ColorOutput::Auto && hasSharedMemory(context_));
-  frameClips_ = options.clipPolygons;
+  frameClip_ = options.clip;
   try {
     checkSceneFits(data);
     compileSceneModes(data);
@@ -78,10 +78,10 @@ void GpuRenderer::startRetries() {
   listChunk_ = options_.firstListChunk;
 }
 
-void GpuRenderer::replaceScene(const SceneData& data, bool clipPolygons) {
+void GpuRenderer::replaceScene(const SceneData& data, uint32_t clip) {
   checkSceneFits(data);  // before anything is released
   scene_ = {};  // the old meshes go before the new ones are allocated
-  frameClips_ = clipPolygons_ || clipPolygons;
+  frameClip_ = std::max(clipFloor_, clip);
   compileSceneModes(data);
   uploadScene(data);
   startRetries();
@@ -154,7 +154,7 @@ void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer
   submitAndWait(context_, cmd);
 }
 
-// Makes room for what the last attempt lacked (STATUS_* flags): the clip pass that clips (kept for
+// Makes room for what the last attempt lacked (STATUS_* flags): the next clipper (kept for
 // the renderer's later frames), or twice the large triangles' lists,
 // or 16 times the workgroups per pass, or, with the most workgroups, the bins' lists taken in
 // chunks of LIST_CHUNK_FIRST entries and then a quarter as many each time (gpu_layout.h). The
@@ -162,7 +162,7 @@ void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer
 // vertices (a cut-short shade pass may have left some out). The new sizes are kept for later frames.
 void GpuRenderer::prepareRetry(uint32_t statusFlags) {
   if (statusFlags & STATUS_NEEDS_CLIPPING) {
-    clipPolygons_ = true;  // render selects the clip pass that clips
+    clipFloor_ = std::min(frameClip_ + 1, CLIP_ALL);  // render selects the next clipper's pass
   } else if (statusFlags & STATUS_LARGE_OVERFLOW) {
     createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
                        uint32_t(std::min<uint64_t>(2ull * largeSetupCapacity_, UINT32_MAX)));

@@ -81,9 +81,9 @@ struct GpuRendererOptions {
   std::optional<bool> exactFloats;
   // Pipelines to compile into and take from (made on the same context); none: the renderer's own.
   std::shared_ptr<GpuPipelineSet> pipelines;
-  // Whether the first frame's clip pass clips (its FrameInputs::mayClip), so that the scene's
-  // pipelines are compiled with the clip pass that frame takes.
-  bool clipPolygons = false;
+  // The first frame's clipper (its FrameInputs::clip), so that the scene's pipelines are compiled
+  // with the clip pass that frame takes.
+  uint32_t clip = gpu::CLIP_NONE;
 };
 
 class GpuRenderer {
@@ -108,14 +108,15 @@ class GpuRenderer {
   // The next frame renders as a fresh renderer's first would: everything sent and shaded, the
   // workgroup cap and list chunks as the options set them. Throws as the constructor; after a
   // throw the renderer must not render again.
-  void replaceScene(const SceneData& data, bool clipPolygons = false);  // clipPolygons: as the options'
+  void replaceScene(const SceneData& data, uint32_t clip = gpu::CLIP_NONE);  // clip: as the options'
 
   // Frames rendered again so far (render), for tests and the benchmark.
   uint64_t framesRepeated() const { return framesRepeated_; }
   // 0, or how many entries of each bin's large-triangle list resolve takes per round since a frame
   // had lists too long for the device's loop budget (gpu_layout.h LIST_CHUNK_FIRST).
   uint32_t listChunk() const { return listChunk_; }
-  bool clipsPolygons() const { return clipPolygons_; }
+  // The least clipper frames take since one met a triangle its clipper could not clip (CLIP_*).
+  uint32_t clipFloor() const { return clipFloor_; }
   // Time spent compiling its pipeline set's pipelines so far, construction included (a shared set:
   // by every renderer that compiled into it).
   double compileMs() const { return pipelines_->compileMs(); }
@@ -188,8 +189,8 @@ class GpuRenderer {
   bool exactFloats_ = false;    // the passes' _exact builds
   uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
   bool binPass_ = false;       // SPEC_BIN_PASS: WorkLayout::Gpu runs the bin pass
-  bool clipPolygons_ = false;  // since a frame met a triangle to clip unforeseen (kept after)
-  bool frameClips_ = false;    // SPEC_CLIP_POLYGONS: this frame's (clipPolygons_ or FrameInputs::mayClip)
+  uint32_t clipFloor_ = gpu::CLIP_NONE;  // raised when a frame met a triangle to clip unforeseen (kept after)
+  uint32_t frameClip_ = gpu::CLIP_NONE;  // SPEC_CLIP_POLYGONS: this frame's (the larger of clipFloor_ and FrameInputs::clip)
   bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
   bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
   uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)

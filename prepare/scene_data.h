@@ -5,6 +5,7 @@
 #include "scene/camera.h"
 #include "scene/object_mesh.h"
 #include "scene/scene.h"
+#include "shaders/gpu_layout.h"
 #include "shaders/shared.h"
 
 #include <glm/glm.hpp>
@@ -44,10 +45,11 @@ struct FrameInputs {
   std::vector<gpu::ObjectData> objects;
   std::vector<gpu::LightData> lights;
   std::vector<gpu::MaterialData> materials;
-  // Whether a triangle may cross the near plane or the guard band (the scene's box does, with a
-  // margin for the passes' float arithmetic): the compute port's clip pass then carries the
-  // polygon clipper. False means none can (the box holds every vertex, the clip volume is convex).
-  bool mayClip = true;
+  // The clipper the compute port's clip pass needs (gpu_layout.h CLIP_*, boxClip): none when no
+  // triangle can cross the near plane or the guard band (the box holds every vertex, the clip
+  // volume is convex), the near plane's when the box may cross it but nothing in front of it can
+  // leave the guard band, else the general one.
+  uint32_t clip = gpu::CLIP_ALL;
 };
 
 // One object's mesh (object_mesh.h buildObjectMesh), its SceneError led by the scene's file; a
@@ -74,8 +76,10 @@ bool lightingIsViewIndependent(const FrameInputs& in);
 // The frame for `view`: camera basis, image size, and offsets from the eye computed in double.
 FrameInputs makeFrame(const SceneData& data, const View& view);
 
-// FrameInputs::mayClip of a frame of `data` seen in `view`: whether a corner of the scene's box is
-// behind the near plane or past the guard band, or within a margin of them.
-bool boxMayClip(const SceneData& data, const View& view);
+// FrameInputs::clip of a frame of `data` seen in `view`: CLIP_NONE when no corner of the scene's
+// box is behind the near plane or past the guard band, or within a margin of them; CLIP_NEAR when
+// the box's reach across the view, seen at the near plane's depth, stays inside the guard band
+// with that margin (so no polygon clipped at the near plane leaves it); else CLIP_ALL.
+uint32_t boxClip(const SceneData& data, const View& view);
 
 }  // namespace phongvk

@@ -66,6 +66,59 @@ FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection,
   return n < 3 ? 0 : n;
 }
 
+// A triangle clipped against the near plane alone: the polygon clipTriangle makes when no vertex
+// of it leaves the guard band, in four named vertices (count 0, 3 or 4) instead of an array.
+// Sutherland-Hodgman's output order for one plane, [v0], [x01], [v1], [x12], [v2], [x20] (a vertex
+// where it is inside, an edge's crossing where its ends disagree), is picked per slot with
+// selects: with no dynamically indexed array, lavapipe generates the code in a fraction of the
+// general clipper's time.
+struct NearPolygon {
+  vec3 p0;
+  vec3 p1;
+  vec3 p2;
+  vec3 p3;
+  int count;
+};
+
+// The crossing of edge a -> b with a plane (distances da, db of different signs), from its inside
+// end, as clipAgainstPlane computes it.
+FN vec3 edgeCrossing(vec3 a, vec3 b, float da, float db) {
+  return da >= 0.0f ? clipIntersect(a, b, da, db) : clipIntersect(b, a, db, da);
+}
+
+FN NearPolygon clipNear(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection) {
+  float d0 = clipDistance(h0, 0, nearPlane, projection);
+  float d1 = clipDistance(h1, 0, nearPlane, projection);
+  float d2 = clipDistance(h2, 0, nearPlane, projection);
+  bool in0 = d0 >= 0.0f;
+  bool in1 = d1 >= 0.0f;
+  bool in2 = d2 >= 0.0f;
+  vec3 x01 = edgeCrossing(h0, h1, d0, d1);
+  vec3 x12 = edgeCrossing(h1, h2, d1, d2);
+  vec3 x20 = edgeCrossing(h2, h0, d2, d0);
+  int inside = (in0 ? 1 : 0) + (in1 ? 1 : 0) + (in2 ? 1 : 0);
+  NearPolygon q;
+  q.count = inside == 0 ? 0 : (inside == 2 ? 4 : 3);
+  q.p0 = in0 ? h0 : (in1 ? x01 : x12);
+  q.p1 = in1 ? h1 : (in0 ? x01 : h2);
+  q.p2 = in1 && in2 ? h2 : ((in0 && !in1 && !in2) || (!in0 && !in1 && in2) ? x20 : x12);
+  q.p3 = in0 && !in1 && in2 ? h2 : x20;
+  return q;
+}
+
+// Whether every vertex of q is inside the guard band's four planes, where clipTriangle leaves the
+// near plane's polygon as it is.
+FN bool insideGuardBand(NearPolygon q, float nearPlane, uint projection) {
+  bool inside = true;
+  for (int plane = 1; plane < 5; ++plane) {
+    inside = inside && clipDistance(q.p0, plane, nearPlane, projection) >= 0.0f &&
+             clipDistance(q.p1, plane, nearPlane, projection) >= 0.0f &&
+             clipDistance(q.p2, plane, nearPlane, projection) >= 0.0f &&
+             (q.count < 4 || clipDistance(q.p3, plane, nearPlane, projection) >= 0.0f);
+  }
+  return inside;
+}
+
 // True when the whole triangle is outside one of the view frustum's planes (off screen, behind
 // the near plane or beyond the far plane): it cannot cover a pixel. Valid for any sign of W. The
 // image spans -lo .. hi about the principal point (lo = hi for a centred one: exact in float).

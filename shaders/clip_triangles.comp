@@ -14,11 +14,23 @@
 
 layout(local_size_x = CLIP_GROUP_SIZE) in;
 
-// Whether triangles crossing the near plane or the guard band are clipped here. Without it, the
-// first such triangle asks the host for a frame with it (STATUS_NEEDS_CLIPPING): the clipper is
-// most of this pass's code, and lavapipe generates a pass's machine code when it first runs it,
-// seconds for the clipper, which most scenes never need (docs/DECISIONS.md).
-layout(constant_id = SPEC_CLIP_POLYGONS) const bool CLIP_POLYGONS = false;
+// Which clipper this pass has (gpu_layout.h CLIP_*). Without one, the first triangle crossing the
+// near plane or the guard band asks the host for a frame with one (STATUS_NEEDS_CLIPPING), as one
+// that clips at the near plane alone does for a polygon still leaving the guard band: lavapipe
+// generates a pass's machine code when it first runs it, seconds for the general clipper (its
+// polygons are arrays indexed per lane), a fraction of that for the near plane's, and most scenes
+// need neither (docs/DECISIONS.md).
+layout(constant_id = SPEC_CLIP_POLYGONS) const uint CLIP_POLYGONS = CLIP_NONE;
+
+// The fan's sub-triangles of a set-up polygon, rasterized or deferred to resolve. Without the
+// general clipper a polygon has at most four vertices, picked with constant indices.
+void drawFan(TriangleSetup t) {
+  for (int f = 0; f + 2 < t.count; ++f) {
+    TriangleSetup sub = CLIP_POLYGONS == CLIP_ALL ? fanTriangle(t, f) : fanTriangleOfFour(t, f);
+    EdgeSetup s;
+    if (setupSingle(sub, s)) drawOrDefer(sub, s);
+  }
+}
 
 void main() {
   loadUniforms();
@@ -30,23 +42,26 @@ void main() {
     TriangleSetup t;
     if (!setupPlane(h0, h1, h2, cullBack, id, frame, t)) continue;
     // Inside the clip volume (most here: not small): set up as itself, as the reference does. The
-    // clipper runs in a 0/1-trip loop (on lavapipe no cheaper than an if: a loop body runs once,
-    // masked, even when no lane enters it).
+    // general clipper runs in a 0/1-trip loop (on lavapipe no cheaper than an if: a loop body runs
+    // once, masked, even when no lane enters it).
     bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection);
-    if (!inside && !CLIP_POLYGONS) {
+    if (!inside && CLIP_POLYGONS == CLIP_NONE) {
       atomicOr(status.flags, STATUS_NEEDS_CLIPPING);
       continue;
     }
     bool drawn = inside && setupUnclipped(h0, h1, h2, frame, t);
-    if (CLIP_POLYGONS) {
+    if (CLIP_POLYGONS == CLIP_ALL) {
       for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
     }
-    if (!drawn) continue;
-    for (int f = 0; f + 2 < t.count; ++f) {
-      TriangleSetup sub = fanTriangle(t, f);
-      EdgeSetup s;
-      if (setupSingle(sub, s)) drawOrDefer(sub, s);
+    if (CLIP_POLYGONS == CLIP_NEAR && !inside) {
+      int setup = setupNearClipped(h0, h1, h2, frame, t);
+      if (setup == SETUP_NEEDS_ALL) {
+        atomicOr(status.flags, STATUS_NEEDS_CLIPPING);
+        continue;
+      }
+      drawn = setup == SETUP_DRAWN;
     }
+    if (drawn) drawFan(t);
   }
   checkLoopBudget();
 }

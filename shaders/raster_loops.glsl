@@ -7,18 +7,24 @@
 // The pixels of a box, (x1 - x0 + 1) (y1 - y0 + 1).
 int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
 
-// Fan sub-triangle k of a clipped polygon as a triangle setup of its own (same plane, depth range
-// and id; its own box), so later passes only ever see count == 3 and index constantly.
-TriangleSetup fanTriangle(TriangleSetup t, int k) {
+// Fan sub-triangle (0, b, c) of a clipped polygon as a triangle setup of its own (same plane,
+// depth range and id; its own box), so later passes only ever see count == 3 and index constantly.
+TriangleSetup fanSubTriangle(TriangleSetup t, ivec2 b, ivec2 c) {
   TriangleSetup sub = t;
   sub.count = 3;
-  sub.snapped[1] = t.snapped[k + 1];
-  sub.snapped[2] = t.snapped[k + 2];
+  sub.snapped[1] = b;
+  sub.snapped[2] = c;
   ivec2 a = sub.snapped[0];
-  ivec2 b = sub.snapped[1];
-  ivec2 c = sub.snapped[2];
   sub.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), frame.width, frame.height);
   return sub;
+}
+
+// Fan sub-triangle k (0, k + 1, k + 2) of a polygon of any count.
+TriangleSetup fanTriangle(TriangleSetup t, int k) { return fanSubTriangle(t, t.snapped[k + 1], t.snapped[k + 2]); }
+
+// The same of a polygon of at most four vertices, picked with constant indices.
+TriangleSetup fanTriangleOfFour(TriangleSetup t, int k) {
+  return fanSubTriangle(t, k == 0 ? t.snapped[1] : t.snapped[2], k == 0 ? t.snapped[2] : t.snapped[3]);
 }
 
 // The only sub-triangle of an unclipped triangle (count == 3), with constant indices.

@@ -85,6 +85,35 @@ FN bool setupClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleS
   return !isEmpty(t.bbox);
 }
 
+// setupClipped for the GPU clip pass built to clip at the near plane alone (gpu_layout.h
+// CLIP_NEAR): the same polygon, vertices, depth range and box, from clipNear, with constant
+// indices only. SETUP_NEEDS_ALL where the near plane's polygon leaves the guard band (the host then
+// renders the frame again with the general clipper); else SETUP_DRAWN, or SETUP_NOTHING when
+// nothing is left or no pixel centre is in the box.
+PHONGVK_CONST int SETUP_NOTHING = 0;
+PHONGVK_CONST int SETUP_DRAWN = 1;
+PHONGVK_CONST int SETUP_NEEDS_ALL = 2;
+
+FN int setupNearClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleSetup) t) {
+  NearPolygon q = clipNear(h0, h1, h2, frame.nearPlane, frame.projection);
+  if (q.count == 0) return SETUP_NOTHING;
+  if (!insideGuardBand(q, frame.nearPlane, frame.projection)) return SETUP_NEEDS_ALL;
+  t.count = q.count;
+  bool four = q.count == 4;
+  t.zMin = min(min(q.p0.z, q.p1.z), four ? min(q.p2.z, q.p3.z) : q.p2.z);
+  t.zMax = max(max(q.p0.z, q.p1.z), four ? max(q.p2.z, q.p3.z) : q.p2.z);
+  ivec2 v0 = snapToSubpixel(q.p0, frame.principal, frame.projection);
+  ivec2 v1 = snapToSubpixel(q.p1, frame.principal, frame.projection);
+  ivec2 v2 = snapToSubpixel(q.p2, frame.principal, frame.projection);
+  ivec2 v3 = four ? snapToSubpixel(q.p3, frame.principal, frame.projection) : v2;
+  t.snapped[0] = v0;
+  t.snapped[1] = v1;
+  t.snapped[2] = v2;
+  t.snapped[3] = v3;
+  t.bbox = pixelBounds(min(min(v0, v1), min(v2, v3)), max(max(v0, v1), max(v2, v3)), frame.width, frame.height);
+  return isEmpty(t.bbox) ? SETUP_NOTHING : SETUP_DRAWN;
+}
+
 // Culls, clips and snaps a triangle for rasterization. False: it draws nothing.
 FN bool setupTriangle(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, FrameData frame, OUT(TriangleSetup) t) {
   if (!setupPlane(h0, h1, h2, cullBack, triangle, frame, t)) return false;

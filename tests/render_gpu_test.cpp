@@ -259,37 +259,48 @@ TEST(GpuRender, FrameOutOfLoopIterationsIsRenderedAgainWithMoreWorkgroups) {
   EXPECT_EQ(context.validation->count(), 0u);
 }
 
-// The clip pass carries the polygon clipper only in frames whose scene box reaches outside the clip
-// volume (FrameInputs::mayClip), and from the first frame whose clip pass met a triangle to clip
-// all the same (that frame rendered again with it). Every frame gives the reference's bytes.
+// The clip pass carries a clipper only in frames whose scene box reaches outside the clip volume
+// (FrameInputs::clip), the near plane's alone where nothing in front of it can leave the guard
+// band, and the next clipper from the first frame whose clip pass met a triangle its clipper could
+// not clip (that frame rendered again with it). Every frame gives the reference's bytes.
 TEST(GpuRender, ClipperOnlyWhereAFrameMayNeedIt) {
   const SceneSpec insideSpec = loadSceneSpec(test::sourcePath("scenes/basic.json"));
   const SceneSpec crossingSpec = loadSceneSpec(test::sourcePath("scenes/stress/near_plane.json"));
-  const SceneData inside = buildSceneData(insideSpec), crossing = buildSceneData(crossingSpec);
+  const SceneSpec hugeSpec = loadSceneSpec(test::sourcePath("scenes/stress/huge_triangles.json"));
+  const SceneData inside = buildSceneData(insideSpec), crossing = buildSceneData(crossingSpec),
+                  huge = buildSceneData(hugeSpec);
   const FrameInputs insideFrame = makeFrame(inside, makeView(insideSpec.camera));
   FrameInputs crossingFrame = makeFrame(crossing, makeView(crossingSpec.camera));
-  EXPECT_FALSE(insideFrame.mayClip) << "basic.json's box lies in front of the camera";
-  EXPECT_TRUE(crossingFrame.mayClip) << "near_plane.json crosses the near plane";
+  FrameInputs hugeFrame = makeFrame(huge, makeView(hugeSpec.camera));
+  EXPECT_EQ(insideFrame.clip, gpu::CLIP_NONE) << "basic.json's box lies in front of the camera";
+  EXPECT_EQ(crossingFrame.clip, gpu::CLIP_NEAR) << "near_plane.json crosses the near plane, 70 m across at most";
+  EXPECT_EQ(hugeFrame.clip, gpu::CLIP_ALL) << "huge_triangles.json reaches past the guard band at the near plane";
   VulkanContext context = createContext({-1, true});
   {
     GpuRenderer gpu(context, crossing);
     EXPECT_EQ(gpu.render(crossingFrame).image.rgb, renderReference(crossing, crossingFrame).image.rgb);
     EXPECT_EQ(gpu.framesRepeated(), 0u) << "foreseen: the first attempt clips";
-    EXPECT_FALSE(gpu.clipsPolygons());
-    // Unforeseen (a frame told that nothing crosses): the clip pass asks for the clipper.
-    crossingFrame.mayClip = false;
+    EXPECT_EQ(gpu.clipFloor(), gpu::CLIP_NONE);
+    // Unforeseen (a frame told that nothing crosses): the clip pass asks for the next clipper.
+    crossingFrame.clip = gpu::CLIP_NONE;
     EXPECT_EQ(gpu.render(crossingFrame).image.rgb, renderReference(crossing, crossingFrame).image.rgb);
     EXPECT_EQ(gpu.framesRepeated(), 1u);
-    EXPECT_TRUE(gpu.clipsPolygons()) << "kept for the later frames";
+    EXPECT_EQ(gpu.clipFloor(), gpu::CLIP_NEAR) << "kept for the later frames";
+    // A polygon the near plane's clipper cannot finish asks for the general one.
+    gpu.replaceScene(huge);
+    hugeFrame.clip = gpu::CLIP_NEAR;
+    EXPECT_EQ(gpu.render(hugeFrame).image.rgb, renderReference(huge, hugeFrame).image.rgb);
+    EXPECT_EQ(gpu.framesRepeated(), 2u);
+    EXPECT_EQ(gpu.clipFloor(), gpu::CLIP_ALL);
     gpu.replaceScene(inside);
     EXPECT_EQ(gpu.render(insideFrame).image.rgb, renderReference(inside, insideFrame).image.rgb);
-    EXPECT_EQ(gpu.framesRepeated(), 1u);
+    EXPECT_EQ(gpu.framesRepeated(), 2u);
   }
   {
     GpuRenderer gpu(context, inside);
     EXPECT_EQ(gpu.render(insideFrame).image.rgb, renderReference(inside, insideFrame).image.rgb);
     EXPECT_EQ(gpu.framesRepeated(), 0u);
-    EXPECT_FALSE(gpu.clipsPolygons());
+    EXPECT_EQ(gpu.clipFloor(), gpu::CLIP_NONE);
   }
   destroyContext(context);
   EXPECT_EQ(context.validation->count(), 0u);
