@@ -6,7 +6,8 @@
 The peer is moderngl (Debian's python3-moderngl: OpenGL through headless EGL, on the same llvmpipe
 that runs lavapipe here, or on the GPU's driver) with a per-vertex Phong shader (Gouraud), the
 model phongvk renders by default. Each workload is the same triangles, normals, camera path and
-image size for every renderer:
+image size for every renderer, and the same work: back faces culled by both (moderngl's
+`CULL_FACE`, phongvk's `closed=True`; the models are closed surfaces):
 
 - per frame: one warm-up frame, then `--frames` frames with the camera moving on a circle around
   the model, each frame's image read back into a numpy array (phongvk: `scene.camera = ...;
@@ -121,7 +122,7 @@ class PhongvkRenderer:
             "lights": [{"position": light}],
             "materials": {"m": {"attenuation": [1, 0, 0], "color": [0.8, 0.6, 0.4]}},
             "objects": []})
-        self.scene.add_mesh(vertices, faces, normals, material="m")
+        self.scene.add_mesh(vertices, faces, normals, material="m", closed=True)  # as moderngl's CULL_FACE
         self.renderer = phongvk.Renderer(backend)
         self.size = size
 
