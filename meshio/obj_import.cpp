@@ -172,6 +172,56 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   const std::string& where_;
 };
 
+// The face corner with an index outside the file's positions or normals, named by its line: the
+// first whose index, resolved as tinyobjloader resolves it (positive: 1-based; negative: back from
+// the last 'v' or 'vn' line before it), is not one of the file's. Run only once an index is known
+// to be bad, so the common case pays nothing for the line numbers.
+[[noreturn]] void failAtBadIndex(std::string_view text, size_t positionCount, size_t normalCount,
+                                 const std::string& path, const std::string& where) {
+  size_t lineNumber = 0, positions = 0, normals = 0;
+  std::vector<std::string_view> words;
+  const auto bad = [](int64_t index, size_t before, size_t count) {
+    const int64_t resolved = index > 0 ? index - 1 : int64_t(before) + index;
+    return resolved < 0 || uint64_t(resolved) >= count;
+  };
+  for (size_t start = 0; start < text.size();) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    ++lineNumber;
+    wordsOf(text.substr(start, end - start), words);
+    start = end + 1;
+    if (words.empty()) continue;
+    if (words[0] == "v") ++positions;
+    if (words[0] == "vn") ++normals;
+    if (words[0] != "f") continue;
+    for (size_t w = 1; w < words.size(); ++w) {
+      const std::string_view corner = words[w];
+      const size_t slash = corner.find('/'), second = slash == std::string_view::npos ? slash : corner.find('/', slash + 1);
+      int64_t v = 0, vn = 0;
+      std::from_chars(corner.data(), corner.data() + std::min(slash, corner.size()), v);
+      const bool hasNormal = second != std::string_view::npos && second + 1 < corner.size();
+      if (hasNormal) std::from_chars(corner.data() + second + 1, corner.data() + corner.size(), vn);
+      const std::string at = "line " + std::to_string(lineNumber) + ": face corner '" + std::string(corner.substr(0, 40)) + "': ";
+      if (bad(v, positions, positionCount))
+        fail(where, path, at + "vertex index " + std::to_string(v) + " is out of range (the file has " +
+                              std::to_string(positionCount) + " vertices)");
+      if (hasNormal && bad(vn, normals, normalCount))
+        fail(where, path, at + "normal index " + std::to_string(vn) + " is out of range (the file has " +
+                              std::to_string(normalCount) + " normals)");
+    }
+  }
+  fail(where, path, "a face's index is out of range (the file has " + std::to_string(positionCount) + " vertices and " +
+                        std::to_string(normalCount) + " normals)");
+}
+
+void checkIndices(const ObjData& data, std::string_view text, const std::string& path, const std::string& where) {
+  const size_t positionCount = data.positions.size() / 3, normalCount = data.normals.size() / 3;
+  for (const tinyobj::index_t& c : data.corners) {
+    if (c.vertex_index < 0 || size_t(c.vertex_index) >= positionCount ||
+        (c.normal_index >= 0 && size_t(c.normal_index) >= normalCount))
+      failAtBadIndex(text, positionCount, normalCount, path, where);
+  }
+}
+
 ObjData parse(const std::string& path, const std::string& where) {
   const MappedFile file(path, where);
   const std::vector<uint32_t> faceSizes = checkLines(file.bytes(), path, where);
@@ -186,7 +236,7 @@ ObjData parse(const std::string& path, const std::string& where) {
     fail(where, path, "not a valid OBJ file: " + firstLine(error));
   // tinyobjloader skips a quad with a bad index, with only this warning.
   if (warning.find("invalid vertex index") != std::string::npos)
-    fail(where, path, "a face's vertex index is out of range");
+    failAtBadIndex(file.bytes(), attrib.vertices.size() / 3, attrib.normals.size() / 3, path, where);
   ObjData data{attrib.vertices, attrib.normals, {}, faceSizes};
   size_t faces = 0;
   for (const tinyobj::shape_t& shape : shapes) {
@@ -202,21 +252,8 @@ ObjData parse(const std::string& path, const std::string& where) {
   if (faces != faceSizes.size() || corners != data.corners.size())
     fail(where, path, "tinyobjloader read the faces differently from the file's 'f' lines");
   if (data.corners.empty()) fail(where, path, "no triangles (no 'f' lines)");
+  checkIndices(data, file.bytes(), path, where);
   return data;
-}
-
-void checkIndices(const ObjData& data, const std::string& path, const std::string& where) {
-  const size_t positionCount = data.positions.size() / 3, normalCount = data.normals.size() / 3;
-  for (const tinyobj::index_t& c : data.corners) {
-    if (c.vertex_index < 0 || size_t(c.vertex_index) >= positionCount)
-      fail(where, path,
-           "a face's vertex index is out of range (the file has " + std::to_string(positionCount) +
-               " vertices)");
-    if (c.normal_index >= 0 && size_t(c.normal_index) >= normalCount)
-      fail(where, path,
-           "a face's normal index is out of range (the file has " + std::to_string(normalCount) +
-               " normals)");
-  }
 }
 
 // Finite, and within the scene's coordinate range: a float position that overflowed to inf would
@@ -274,7 +311,6 @@ Mesh buildMesh(const ObjData& data, bool fileNormals) {
 
 Mesh importObj(const std::string& path, const std::string& where) {
   ObjData data = parse(path, where);
-  checkIndices(data, path, where);
   checkPositions(data, path, where);
   return buildMesh(data, hasFileNormals(data));
 }

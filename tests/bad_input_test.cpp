@@ -211,11 +211,14 @@ class BadMesh : public ::testing::Test {
 
 TEST_F(BadMesh, IndicesOutOfRange) {
   EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
-            prefix() + "a face's vertex index is out of range (the file has 3 vertices)");
+            prefix() + "line 4: face corner '9': vertex index 9 is out of range (the file has 3 vertices)");
   EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -9 1 2\n"),
-            prefix() + "a face's vertex index is out of range (the file has 3 vertices)");
+            prefix() + "line 4: face corner '-9': vertex index -9 is out of range (the file has 3 vertices)");
   EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n"),
-            prefix() + "a face's normal index is out of range (the file has 1 normals)");
+            prefix() + "line 5: face corner '3//4': normal index 4 is out of range (the file has 1 normals)");
+  // A negative index counts back from the 'v' lines before it: -4 on line 5 reaches before the first.
+  EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -3\nf -1 -2 -4\nv 1 1 0\n"),
+            prefix() + "line 5: face corner '-4': vertex index -4 is out of range (the file has 4 vertices)");
 }
 
 TEST_F(BadMesh, NonFiniteOrOverflowingPositions) {

@@ -75,11 +75,11 @@ void expectObjError(const std::string& text, const std::string& why) {
 TEST(ObjMesh, BadFilesNameTheJsonPathAndTheFile) {
   expectObjError("this is not\nan OBJ file \x01\x02\n", "no triangles (no 'f' lines)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
-                 "a face's vertex index is out of range (the file has 3 vertices)");
+                 "line 4: face corner '9': vertex index 9 is out of range (the file has 3 vertices)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -7\n",
-                 "a face's vertex index is out of range (the file has 3 vertices)");
+                 "line 4: face corner '-7': vertex index -7 is out of range (the file has 3 vertices)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 9\n",
-                 "a face's vertex index is out of range (the file has 4 vertices)");
+                 "line 5: face corner '9': vertex index 9 is out of range (the file has 4 vertices)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n",
                  "every triangle is degenerate (zero area)");
   // tinyobjloader reads these as 0; they must not become a vertex at the origin.
