@@ -67,6 +67,7 @@ void GpuRenderer::compileSceneModes(const SceneData& data) {
   modes.interpolation = data.interpolation;
   modes.shading = data.shading;
   modes.specular = data.specular;
+  modes.projection = data.projection;
   const std::vector<PipelineRequest> requests = requestsFor(data.materials, data.lights.size(), modes, false);
   compilePipelines(requests);
   current_[RASTER] = pipeline(requests[RASTER]);

@@ -324,9 +324,8 @@ GraphicsRenderer::GraphicsRenderer(const VulkanContext& context, const SceneData
   // On a throw, ~State releases whatever was made.
   state_->createFixedObjects();
   state_->uploadScene(data);
-  // Compile the pipelines the scene draws with now, not inside the first (timed) frame (with a
-  // perspective camera; an orthographic frame compiles its own when it first comes).
-  for (const DrawRun& run : drawRuns(data)) state_->pipelineFor(data.interpolation, PROJECTION_PERSPECTIVE, run.cullBack);
+  // Compile the pipelines the scene draws with now, not inside the first (timed) frame.
+  for (const DrawRun& run : drawRuns(data)) state_->pipelineFor(data.interpolation, data.projection, run.cullBack);
 }
 
 GraphicsRenderer::~GraphicsRenderer() = default;

@@ -165,6 +165,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
                  : scene.shading == Shading::Phong ? gpu::SHADING_PHONG
                                                   : gpu::SHADING_GOURAUD;
   data.specular = scene.specular == Specular::Blinn ? gpu::SPECULAR_BLINN : gpu::SPECULAR_PHONG;
+  data.projection = scene.camera.orthographic ? gpu::PROJECTION_ORTHOGRAPHIC : gpu::PROJECTION_PERSPECTIVE;
   data.samples = scene.samples;
 }
 

@@ -32,6 +32,9 @@ struct SceneData {
   uint32_t interpolation = gpu::INTERP_PERSPECTIVE;
   uint32_t shading = gpu::SHADING_GOURAUD;
   uint32_t specular = gpu::SPECULAR_PHONG;
+  // The scene camera's projection (gpu::PROJECTION_*): frames take their camera's, this only says
+  // which pipelines the GPU renderer compiles when the scene is uploaded.
+  uint32_t projection = gpu::PROJECTION_PERSPECTIVE;
   int samples = 1;  // per pixel, on a regular grid (1, 4, 9 or 16): the frame is rendered this many times larger
   // With a share of the scene (SceneSpec::sharePart): the whole scene's index of triangles[0]. The
   // renderers' keys name triangles by their index here; add this to name them in the whole scene.
