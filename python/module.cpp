@@ -456,14 +456,18 @@ across) for an orthographic camera, whose pixels all look along the view directi
 perspective one. An orthographic camera needs a width and height, and no intrinsics.)")
       .def_static(
           "from_pose",
-          [](const py::object& pose, const std::string& conventionName, double fov, int width, int height) {
-            return cameraFromPose(matrix4(pose, "pose"), convention(conventionName), fov, width, height);
+          [](const py::object& pose, const std::string& conventionName, double fov, int width, int height,
+             std::optional<double> orthoHeight) {
+            Camera camera = cameraFromPose(matrix4(pose, "pose"), convention(conventionName), fov, width, height);
+            camera.orthoHeight = orthoHeight;
+            return camera;
           },
           py::arg("pose"), py::kw_only(), py::arg("convention") = "opengl", py::arg("fov") = 60.0,
-          py::arg("width") = 0, py::arg("height") = 0,
+          py::arg("width") = 0, py::arg("height") = 0, py::arg("ortho_height") = py::none(),
           R"(The camera a (4, 4) camera-to-world pose describes. convention: "opengl" (the camera looks
 down its -z, y up: Blender, three.js, NeRF) or "opencv" (looks down +z, y down: COLMAP, most
-datasets). A pose whose rotation block is not a rotation raises ValueError.)")
+datasets). A pose whose rotation block is not a rotation raises ValueError. ortho_height (metres
+from the image's top to its bottom) makes it an orthographic camera, fov then unused.)")
       .def_static(
           "from_intrinsics",
           [](double fx, double fy, double cx, double cy, int width, int height, const py::object& pose,

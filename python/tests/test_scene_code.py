@@ -155,6 +155,15 @@ def test_an_orthographic_camera_projects_as_numpy_does():
         assert abs(seen[1][1] - u) < 0.05 and abs(seen[1][2] - v) < 0.05
         assert abs(u - ((width - 1) / 2 + s * x)) < 0.5 and abs(v - ((height - 1) / 2 + s * y)) < 0.5
     assert phongvk.scene_from_dict(scene.to_dict()).camera == scene.camera
+    posed = phongvk.Camera.from_pose(pose, convention="opencv", width=width, height=height, ortho_height=ortho_height)
+    posed.near, posed.far = 0.1, 30
+    assert posed.ortho_height == ortho_height and np.allclose(posed.position, eye)
+    _, looking, _ = cpu.render_visibility(scene)
+    scene.camera = posed  # the same camera from its pose: the same picture, to float rounding of its axes
+    _, posed_ids, _ = cpu.render_visibility(scene)
+    covered = looking != phongvk.NO_TRIANGLE
+    assert covered.sum() > 16 and abs(int((posed_ids != phongvk.NO_TRIANGLE).sum()) - int(covered.sum())) <= 2
+    assert (posed_ids[covered] == looking[covered]).mean() > 0.9
 
 
 def test_objects_are_placed_moved_and_removed_by_handle(tmp_path):
