@@ -96,6 +96,20 @@ bool isCorner(std::string_view corner) {
   }
 }
 
+// Calls visit(lineNumber, words) for each line of `text` that has words, lines numbered from 1.
+template <typename Visit>
+void forEachLine(std::string_view text, Visit&& visit) {
+  size_t lineNumber = 0;
+  std::vector<std::string_view> words;
+  for (size_t start = 0; start < text.size();) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    ++lineNumber;
+    wordsOf(text.substr(start, end - start), words);
+    start = end + 1;
+    if (!words.empty()) visit(lineNumber, words);
+  }
+}
+
 // What tinyobjloader lets through without a word, checked line by line: every number on the v, vn
 // and vt lines is a plain decimal number, a v line has x, y and z, a face has three corners or
 // more and every corner index is one (in 32 bits); and the file is text. Returns the faces' corner
@@ -104,14 +118,7 @@ std::vector<uint32_t> checkLines(std::string_view text, const std::string& path,
   std::vector<uint32_t> faceSizes;
   if (text.find('\0') != std::string_view::npos)
     fail(where, path, "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
-  size_t lineNumber = 0;
-  std::vector<std::string_view> words;
-  for (size_t start = 0; start < text.size();) {
-    const size_t end = std::min(text.find('\n', start), text.size());
-    ++lineNumber;
-    wordsOf(text.substr(start, end - start), words);
-    start = end + 1;
-    if (words.empty()) continue;
+  forEachLine(text, [&](size_t lineNumber, const std::vector<std::string_view>& words) {
     const auto at = [&] { return "line " + std::to_string(lineNumber) + ": "; };  // built only for a message
     const std::string_view keyword = words[0];
     if (keyword == "v" || keyword == "vn" || keyword == "vt") {
@@ -129,7 +136,7 @@ std::vector<uint32_t> checkLines(std::string_view text, const std::string& path,
           fail(where, path, at() + "'" + std::string(words[w]).substr(0, 40) + "' is not a face corner (v, v/vt, v//vn or v/vt/vn, indices 32-bit and not 0)");
       }
     }
-  }
+  });
   return faceSizes;
 }
 
@@ -178,21 +185,15 @@ class MaterialLibraries : public tinyobj::MaterialReader {
 // to be bad, so the common case pays nothing for the line numbers.
 [[noreturn]] void failAtBadIndex(std::string_view text, size_t positionCount, size_t normalCount,
                                  const std::string& path, const std::string& where) {
-  size_t lineNumber = 0, positions = 0, normals = 0;
-  std::vector<std::string_view> words;
+  size_t positions = 0, normals = 0;
   const auto bad = [](int64_t index, size_t before, size_t count) {
     const int64_t resolved = index > 0 ? index - 1 : int64_t(before) + index;
     return resolved < 0 || uint64_t(resolved) >= count;
   };
-  for (size_t start = 0; start < text.size();) {
-    const size_t end = std::min(text.find('\n', start), text.size());
-    ++lineNumber;
-    wordsOf(text.substr(start, end - start), words);
-    start = end + 1;
-    if (words.empty()) continue;
+  forEachLine(text, [&](size_t lineNumber, const std::vector<std::string_view>& words) {
     if (words[0] == "v") ++positions;
     if (words[0] == "vn") ++normals;
-    if (words[0] != "f") continue;
+    if (words[0] != "f") return;
     for (size_t w = 1; w < words.size(); ++w) {
       const std::string_view corner = words[w];
       const size_t slash = corner.find('/'), second = slash == std::string_view::npos ? slash : corner.find('/', slash + 1);
@@ -208,7 +209,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
         fail(where, path, at + "normal index " + std::to_string(vn) + " is out of range (the file has " +
                               std::to_string(normalCount) + " normals)");
     }
-  }
+  });
   fail(where, path, "a face's index is out of range (the file has " + std::to_string(positionCount) + " vertices and " +
                         std::to_string(normalCount) + " normals)");
 }
