@@ -13,7 +13,8 @@ from conftest import scene_path
 ALL = ["color", "rgba", "alpha", "depth", "object_id", "triangle_id", "normal"]
 
 
-@pytest.mark.parametrize("name", ["scenes/basic.json", "scenes/paper/fig1_cube.json", "scenes/mesh_torus.json"])
+@pytest.mark.parametrize("name", ["scenes/basic.json", "scenes/paper/fig1_cube.json", "scenes/mesh_torus.json",
+                                  "scenes/orthographic.json"])
 @pytest.mark.parametrize("shading", ["gouraud", "flat", "phong"])
 @pytest.mark.parametrize("samples", [1, 4])
 def test_every_output_is_the_same_bytes_on_both_backends(name, shading, samples):
@@ -162,3 +163,29 @@ def test_normals_are_the_sphere_normals_in_camera_axes():
     assert inner.sum() > 3000
     assert np.degrees(np.arccos(np.minimum(cosine, 1))).max() < 0.1
     assert normal[height // 2, width // 2, 2] < -0.99  # facing the camera: z toward it is negative
+
+
+def test_orthographic_depth_and_normals_are_the_spheres():
+    """Through an orthographic camera every pixel's ray runs along the axis from its own point of
+    the eye's plane (x, y = pixel offset / pixels per metre): the depth is distance - sqrt(r^2 -
+    x^2 - y^2) and the normal (x, y, depth - distance) / r, within the same bounds as for a
+    perspective camera, on both backends alike."""
+    distance, width, height, ortho_height = 4.0, 96, 96, 2.4
+    scene = phongvk.scene_from_dict({
+        "camera": {"projection": "orthographic", "ortho_height": ortho_height, "position": [0, -distance, 0],
+                   "look_at": [0, 0, 0], "width": width, "height": height},
+        "objects": [{"shape": "icosphere", "radius": 1, "subdivide": 5}], "render": {"shading": "phong"}})
+    out = phongvk.Renderer("gpu").render(scene, outputs=["depth", "normal"])
+    cpu = phongvk.Renderer("cpu").render(scene, outputs=["depth", "normal"])
+    assert all(np.array_equal(out[k], cpu[k]) for k in ("depth", "normal"))
+    scale = height / ortho_height
+    ys, xs = np.mgrid[0:height, 0:width]
+    x, y = (xs + 0.5 - width / 2) / scale, -(ys + 0.5 - height / 2) / scale
+    rr = x ** 2 + y ** 2
+    inner, outer = rr < 0.95 ** 2, rr > 1.05 ** 2
+    t = distance - np.sqrt(np.maximum(1 - rr, 0))
+    assert inner.sum() > 3000 and np.isinf(out["depth"][outer]).all()
+    assert np.abs(out["depth"][inner] - t[inner]).max() < 0.002
+    expected = np.stack([x, y, t - distance], axis=-1)
+    cosine = (expected[inner] * out["normal"][inner]).sum(axis=-1)
+    assert np.degrees(np.arccos(np.minimum(cosine, 1))).max() < 0.1
