@@ -228,9 +228,10 @@ ModelUp parseModelUp(const std::string& name) {
 }
 
 Scene loadScene(const std::string& path, const LoadOptions& options) {
-  std::optional<UpAxis> up;
-  if (options.up != ModelUp::Usual) up = options.up == ModelUp::Y ? UpAxis::Y : UpAxis::Z;
-  return firstFrame(std::make_shared<const SceneSequence>(SceneSequence::load(path, up)));
+  ModelView view;
+  if (options.up != ModelUp::Usual) view.up = options.up == ModelUp::Y ? UpAxis::Y : UpAxis::Z;
+  view.orthographic = options.orthographic;
+  return firstFrame(std::make_shared<const SceneSequence>(SceneSequence::load(path, view)));
 }
 
 Scene parseScene(const std::string& json, const std::string& name, const std::string& baseDir, bool objectsLater) {

@@ -63,7 +63,7 @@ Scene frameAsAsked(const Scene& sequence, int index, const ViewOptions& options)
 }
 
 LoadOptions loadOptions(const ViewOptions& options) {
-  return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up)};
+  return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up), options.projection == "orthographic"};
 }
 
 Scene loadEveryFrameValidated(const ViewOptions& options) {

@@ -29,6 +29,7 @@ struct ViewOptions {
   std::string specular;
   int samples = 0;
   std::string up;       // --up y|z: a model file alone stood up along this axis ("": its format's usual one)
+  std::string projection;  // --projection perspective|orthographic: a model file alone's fitted camera ("": perspective)
 };
 
 // --up as the library takes it.

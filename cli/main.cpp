@@ -53,6 +53,10 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
                       "y or z: the up axis of a model file rendered alone, for one whose exporter used the other "
                       "convention (default: its format's usual one, y for glTF and OBJ, z for PLY and STL)")
       ->check(CLI::IsMember({"y", "z"}));
+  command->add_option("--projection", options.projection,
+                      "perspective or orthographic: the fitted camera of a model file rendered alone (default "
+                      "perspective); a scene file's camera says its own")
+      ->check(CLI::IsMember({"perspective", "orthographic"}));
   command->add_option("--png-level", options.pngLevel,
                       "PNG deflate level: 0 (stored, largest) to 12 (smallest, slowest); the same pixels at every "
                       "level (default " + std::to_string(phongvk::PNG_LEVEL_DEFAULT) + ", the fastest)")

@@ -688,16 +688,20 @@ phongvk.scene_from_dict(scene.to_dict()) renders the same bytes.)")
 
   m.def(
       "load_scene",
-      [](const std::string& path, std::optional<std::string> up) {
-        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual});
+      [](const std::string& path, std::optional<std::string> up, const std::string& projection) {
+        if (projection != "perspective" && projection != "orthographic")
+          throw ArgumentError("projection: expected 'perspective' or 'orthographic', got '" + projection + "'");
+        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual, projection == "orthographic"});
       },
-      py::arg("path"), py::arg("up") = py::none(),
+      py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = "perspective",
       R"(Reads and validates a scene file (the CLI's schema), or a model file (.obj .ply .stl .gltf
 .glb) as a scene of its own: the model in full view, lit from the camera. Raises SceneError naming
 the file and the JSON path.
 
 up: None, "y" or "z": the up axis of a model file loaded alone, for one whose exporter used the
-    other convention (None: its format's usual one, y for glTF and OBJ, z for PLY and STL).)");
+    other convention (None: its format's usual one, y for glTF and OBJ, z for PLY and STL).
+projection: "perspective" or "orthographic": the fitted camera of a model file loaded alone (a
+    scene file's camera says its own).)");
   m.def("scene_from_dict", &sceneFromDict, py::arg("d"), py::arg("base_dir") = py::none(),
         R"(A scene from a dict with the scene file's schema, validated the same way.
 

@@ -171,15 +171,19 @@ std::vector<PathStep> parseTrackPath(const Node& node) {
   return steps;
 }
 
-SceneSequence SceneSequence::load(const std::string& path, std::optional<UpAxis> modelUp) {
+SceneSequence SceneSequence::load(const std::string& path, const ModelView& modelView) {
   if (isModelFile(path)) {
-    SceneSequence model(modelScene(path, modelUp), path, "");
+    SceneSequence model(modelScene(path, modelView), path, "");
     model.modelAlone_ = true;
     return model;
   }
-  if (modelUp) {
+  if (modelView.up) {
     throw ArgumentError(path + ": an up axis applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "
                         "in a scene file each mesh object has its own \"up\"");
+  }
+  if (modelView.orthographic) {
+    throw ArgumentError(path + ": a projection applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "
+                        "a scene file's camera has its own \"projection\"");
   }
   return SceneSequence(parseJson(readSceneText(path), path), path,
                        std::filesystem::path(path).parent_path().string());

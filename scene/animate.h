@@ -15,6 +15,7 @@
 #pragma once
 
 #include "scene/scene.h"
+#include "scene/model_scene.h"
 #include "scene/scene_json.h"
 
 #include <string>
@@ -43,9 +44,9 @@ std::vector<PathStep> parseTrackPath(const scenejson::Node& node);
 
 class SceneSequence {
  public:
-  // Reads a scene file, or a model file alone (model_scene.h) stood up along `modelUp` where given;
-  // errors as loadSceneSpec's.
-  static SceneSequence load(const std::string& path, std::optional<UpAxis> modelUp = std::nullopt);
+  // Reads a scene file, or a model file alone (model_scene.h) shown as `model` says; errors as
+  // loadSceneSpec's, and ArgumentError for a `model` given with a scene file.
+  static SceneSequence load(const std::string& path, const ModelView& model = {});
   // `json` is the whole scene file; `path` names it in messages and `baseDir` resolves its
   // relative files. Validates the "animate" block, evaluating every expression at every frame
   // (so a NaN at frame 17 is an error before anything is rendered), and that every track path

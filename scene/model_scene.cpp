@@ -13,14 +13,17 @@ bool isModelFile(const std::string& path) {
   return extension == ".obj" || extension == ".ply" || extension == ".stl" || extension == ".gltf" || extension == ".glb";
 }
 
-scenejson::Json modelScene(const std::string& path, std::optional<UpAxis> up) {
+scenejson::Json modelScene(const std::string& path, const ModelView& view) {
   const DetectedFormat detected = detectMeshFormat(path);
   if (!detected.format) throw SceneError(detected.problem);  // "<path>: <why>": the user's file alone
   const MeshFormat format = *detected.format;
   const std::string file = std::filesystem::absolute(path).string();
   const glm::vec3 noFallOff = noFallOffMaterial().attenuation;
+  scenejson::Json camera = {{"fit", true}, {"fov", 40}, {"width", 960}, {"height", 720}};
+  if (view.orthographic) camera = {{"fit", true}, {"projection", "orthographic"}, {"width", 960}, {"height", 720}};
+  const std::optional<UpAxis> up = view.up;
   return scenejson::Json{
-      {"camera", {{"fit", true}, {"fov", 40}, {"width", 960}, {"height", 720}}},
+      {"camera", camera},
       {"background", {0.12, 0.12, 0.14}},
       {"ambient", {1, 1, 1}},
       {"lights", {{{"position", "camera"}}}},

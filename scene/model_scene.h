@@ -13,10 +13,18 @@ namespace phongvk {
 // rather than a scene file.
 bool isModelFile(const std::string& path);
 
-// The scene for a model alone: the mesh (up axis `up` where given, else as its format usually has
-// it, mesh_file.h usuallyYUp; back faces drawn), a camera fitted from the front, left and above (960x720, 40°
-// field of view), one white light at the camera without fall-off, a dark grey background.
-// A glTF model keeps its base colours. Throws SceneError for a file that is not a mesh.
-scenejson::Json modelScene(const std::string& path, std::optional<UpAxis> up = std::nullopt);
+// How a model alone is shown where its user says: its up axis (none: as its format usually has
+// it, mesh_file.h usuallyYUp) and an orthographic camera instead of the perspective one.
+struct ModelView {
+  std::optional<UpAxis> up;
+  bool orthographic = false;
+  bool given() const { return up || orthographic; }
+};
+
+// The scene for a model alone: the mesh (standing up along view.up; back faces drawn), a camera
+// fitted from the front, left and above (960x720, 40° field of view, or orthographic), one white
+// light at the camera without fall-off, a dark grey background. A glTF model keeps its base
+// colours. Throws SceneError for a file that is not a mesh.
+scenejson::Json modelScene(const std::string& path, const ModelView& view = {});
 
 }  // namespace phongvk

@@ -401,5 +401,27 @@ TEST(MeshFiles, UpAxisOfAModelAlone) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/s.png"));
 }
 
+// --projection orthographic (LoadOptions::orthographic): a model alone seen by a fitted
+// orthographic camera, the same bytes on both renderers and from the CLI; a scene file's camera
+// says its own projection, so asked of one it is an error (exit 2).
+TEST(MeshFiles, OrthographicViewOfAModelAlone) {
+  const std::string model = test::sourcePath("scenes/meshes/torus.obj");
+  const Scene scene = loadScene(model, {.orthographic = true});
+  ASSERT_TRUE(scene.camera().orthoHeight.has_value());
+  EXPECT_GT(*scene.camera().orthoHeight, 0.0);
+  const Image expected = renderBoth(scene);
+  EXPECT_FALSE(renderBoth(loadScene(model)).rgb == expected.rgb);  // the perspective view differs
+  const std::string dir = makeTempDir();
+  const CommandResult cli = runCli("render '" + model + "' --projection orthographic -o '" + dir + "/o.png'");
+  EXPECT_EQ(cli.exitCode, 0) << cli.output;
+  EXPECT_TRUE(readPng(dir + "/o.png").rgb == expected.rgb);
+  const CommandResult withScene =
+      runCli("render " + test::sourcePath("scenes/basic.json") + " --projection orthographic -o '" + dir + "/s.png'");
+  EXPECT_EQ(withScene.exitCode, 2) << withScene.output;
+  EXPECT_NE(withScene.output.find("basic.json: a projection applies to a model file rendered alone"), std::string::npos)
+      << withScene.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/s.png"));
+}
+
 }  // namespace
 }  // namespace phongvk

@@ -146,12 +146,15 @@ PHONGVK_API ModelUp parseModelUp(const std::string& name);
 
 struct LoadOptions {
   ModelUp up = ModelUp::Usual;  // only for a model file alone: a scene file names each object's "up"
+  // Only for a model file alone: a fitted orthographic camera (its view spanning the model with a
+  // margin) instead of the perspective one; a scene file's camera says its own "projection".
+  bool orthographic = false;
 };
 
 // Reads and validates a scene file, or a model file (.obj .ply .stl .gltf .glb) as a scene of its
 // own: the model in full view, lit from the camera. Throws SceneError naming the file and the JSON
-// path (and for a mesh the inner file and line), ArgumentError for an up axis given with a scene
-// file. A file with an "animate" block gives its frame 0.
+// path (and for a mesh the inner file and line), ArgumentError for an up axis or a projection
+// given with a scene file. A file with an "animate" block gives its frame 0.
 PHONGVK_API Scene loadScene(const std::string& path, const LoadOptions& options = {});
 
 // The same from JSON text: `name` stands for the file in messages (none when empty) and relative
