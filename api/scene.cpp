@@ -227,6 +227,12 @@ ModelUp parseModelUp(const std::string& name) {
   throw ArgumentError("up: expected 'y' or 'z', got '" + name + "'");
 }
 
+bool parseOrthographic(const std::string& projection) {
+  if (projection == "perspective") return false;
+  if (projection == "orthographic") return true;
+  throw ArgumentError("projection: expected 'perspective' or 'orthographic', got '" + projection + "'");
+}
+
 Scene loadScene(const std::string& path, const LoadOptions& options) {
   ModelView view;
   if (options.up != ModelUp::Usual) view.up = options.up == ModelUp::Y ? UpAxis::Y : UpAxis::Z;

@@ -63,7 +63,8 @@ Scene frameAsAsked(const Scene& sequence, int index, const ViewOptions& options)
 }
 
 LoadOptions loadOptions(const ViewOptions& options) {
-  return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up), options.projection == "orthographic"};
+  return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up),
+          !options.projection.empty() && parseOrthographic(options.projection)};
 }
 
 Scene loadEveryFrameValidated(const ViewOptions& options) {

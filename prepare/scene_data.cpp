@@ -22,6 +22,11 @@ gpu::MaterialData toGpu(const MaterialSpec& m) {
   return g;
 }
 
+// FrameData::projection of a camera that is, or is not, orthographic.
+uint32_t projectionOf(bool orthographic) {
+  return orthographic ? gpu::PROJECTION_ORTHOGRAPHIC : gpu::PROJECTION_PERSPECTIVE;
+}
+
 }  // namespace
 
 ObjectMesh buildSceneObject(const SceneSpec& scene, const Object& object) {
@@ -165,7 +170,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
                  : scene.shading == Shading::Phong ? gpu::SHADING_PHONG
                                                   : gpu::SHADING_GOURAUD;
   data.specular = scene.specular == Specular::Blinn ? gpu::SPECULAR_BLINN : gpu::SPECULAR_PHONG;
-  data.projection = scene.camera.orthographic ? gpu::PROJECTION_ORTHOGRAPHIC : gpu::PROJECTION_PERSPECTIVE;
+  data.projection = projectionOf(scene.camera.orthographic);
   data.samples = scene.samples;
 }
 
@@ -230,7 +235,7 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   f.shading = data.shading;
   f.specular = data.specular;
   f.eye = glm::vec3(view.eye - data.lightingOrigin);
-  f.projection = view.orthographic ? gpu::PROJECTION_ORTHOGRAPHIC : gpu::PROJECTION_PERSPECTIVE;
+  f.projection = projectionOf(view.orthographic);
 
   in.objects = data.objects;
   for (size_t i = 0; i < in.objects.size(); ++i) {

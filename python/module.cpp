@@ -689,9 +689,7 @@ phongvk.scene_from_dict(scene.to_dict()) renders the same bytes.)")
   m.def(
       "load_scene",
       [](const std::string& path, std::optional<std::string> up, const std::string& projection) {
-        if (projection != "perspective" && projection != "orthographic")
-          throw ArgumentError("projection: expected 'perspective' or 'orthographic', got '" + projection + "'");
-        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual, projection == "orthographic"});
+        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual, parseOrthographic(projection)});
       },
       py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = "perspective",
       R"(Reads and validates a scene file (the CLI's schema), or a model file (.obj .ply .stl .gltf

@@ -42,8 +42,9 @@ int sampleGridSide(int samples);
 View supersampled(View view, int side);
 
 // The same camera rendered at width x height (the CLI's --width/--height): the vertical field of
-// view (an orthographic camera's ortho_height) is kept and the aspect follows the new size. Intrinsics are scaled with the height (fx and
-// fy keep their ratio) and the principal point stays where it was relative to the image's sides.
+// view (an orthographic camera's ortho_height) is kept and the aspect follows the new size.
+// Intrinsics are scaled with the height (fx and fy keep their ratio) and the principal point
+// stays where it was relative to the image's sides.
 CameraSpec withImageSize(CameraSpec camera, int width, int height);
 
 }  // namespace phongvk

@@ -19,9 +19,12 @@ scenejson::Json modelScene(const std::string& path, const ModelView& view) {
   const MeshFormat format = *detected.format;
   const std::string file = std::filesystem::absolute(path).string();
   const glm::vec3 noFallOff = noFallOffMaterial().attenuation;
-  scenejson::Json camera = {{"fit", true}, {"fov", 40}, {"width", 960}, {"height", 720}};
-  if (view.orthographic) camera = {{"fit", true}, {"projection", "orthographic"}, {"width", 960}, {"height", 720}};
-  const std::optional<UpAxis> up = view.up;
+  scenejson::Json camera = {{"fit", true}, {"width", 960}, {"height", 720}};
+  if (view.orthographic) {
+    camera["projection"] = "orthographic";
+  } else {
+    camera["fov"] = 40;
+  }
   return scenejson::Json{
       {"camera", camera},
       {"background", {0.12, 0.12, 0.14}},
@@ -30,7 +33,7 @@ scenejson::Json modelScene(const std::string& path, const ModelView& view) {
       {"objects",
        {{{"shape", "mesh"},
          {"file", file},
-         {"up", up ? (*up == UpAxis::Y ? "y" : "z") : usuallyYUp(format) ? "y" : "z"},
+         {"up", view.up ? (*view.up == UpAxis::Y ? "y" : "z") : usuallyYUp(format) ? "y" : "z"},
          {"material", {{"attenuation", {noFallOff.x, noFallOff.y, noFallOff.z}}}}}}},
   };
 }

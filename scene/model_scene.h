@@ -18,7 +18,6 @@ bool isModelFile(const std::string& path);
 struct ModelView {
   std::optional<UpAxis> up;
   bool orthographic = false;
-  bool given() const { return up || orthographic; }
 };
 
 // The scene for a model alone: the mesh (standing up along view.up; back faces drawn), a camera

@@ -144,6 +144,11 @@ class PHONGVK_API Scene {
 // got '...'" for anything else.
 PHONGVK_API ModelUp parseModelUp(const std::string& name);
 
+// "perspective" or "orthographic", as the CLI's --projection and Python's projection= take it:
+// whether it is orthographic (LoadOptions::orthographic); ArgumentError "projection: expected
+// 'perspective' or 'orthographic', got '...'" for anything else.
+PHONGVK_API bool parseOrthographic(const std::string& projection);
+
 struct LoadOptions {
   ModelUp up = ModelUp::Usual;  // only for a model file alone: a scene file names each object's "up"
   // Only for a model file alone: a fitted orthographic camera (its view spanning the model with a
