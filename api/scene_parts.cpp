@@ -188,14 +188,15 @@ SceneSpec withRenderSettings(const SceneSpec& scene, const RenderSettings& setti
   const Json render = {{"shading", shadingName(settings.shading)},
                        {"specular", specularName(settings.specular)},
                        {"interpolation", interpolationName(settings.interpolation)},
-                       {"samples", settings.samples}};
+                       {"samples", settings.samples},
+                       {"texture_filter", TEXTURE_FILTER_NAMES[size_t(settings.textureFilter)]}};
   const Json background = vec3Json(settings.background, "background");
   return withSection(withSection(scene, "render", render.dump()), "background", background.dump());
 }
 
 RenderSettings renderSettingsOf(const SceneSpec& scene) {
   const glm::vec3 b = scene.background;
-  return {scene.shading, scene.specular, scene.interpolation, scene.samples, {b.x, b.y, b.z}};
+  return {scene.shading, scene.specular, scene.interpolation, scene.samples, {b.x, b.y, b.z}, scene.textureFilter};
 }
 
 SceneSpec sceneInCode(int width, int height) {

@@ -45,6 +45,15 @@ void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   checkFits(context, data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");  // and colours
   texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");
   checkFits(context, sizeof(IdList) + data.triangles.size() * sizeof(uint32_t), "the clip list");
+  texels(data.uvs.size() * sizeof(VertexUv), "the texture coordinates");
+  texels(data.texels.size() * sizeof(uint32_t) + TEXEL_BYTES - 1, "the textures' texels");
+}
+
+// The textures' texels, four to a texel (bindings.glsl poolTexel), the last texel padded.
+void createTexelPool(TexelBuffer& pool, const VulkanContext& context, const std::vector<uint32_t>& texels) {
+  const VkDeviceSize bytes = texels.size() * sizeof(uint32_t);
+  createTexelBuffer(pool, context, nullptr, (bytes + TEXEL_BYTES - 1) / TEXEL_BYTES * TEXEL_BYTES, 0, MemoryKind::DeviceLocal);
+  if (bytes != 0) uploadToBuffer(context, pool.buffer, texels.data(), bytes);
 }
 
 template <typename T>
@@ -94,6 +103,10 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
   createTexelBuffer(scene_.shadedPositions, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
   createTexelBuffer(scene_.shadedColors, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  textured_ = !data.uvs.empty();
+  createTexelBuffer(scene_.uvs, context_, data.uvs, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal);
+  createTexelPool(scene_.texelPool, context_, data.texels);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
   createBuffer(scene_.clipList, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
 }
@@ -187,6 +200,9 @@ void GpuRenderer::updateDescriptors() {
       texelDescriptor(BINDING_LARGE_SETUP_TEXELS, image_.largeSetups),
       bufferDescriptor(BINDING_CLIP_LIST, scene_.clipList),
       bufferDescriptor(BINDING_STATUS, perFrame_.status),
+      texelDescriptor(BINDING_UVS, scene_.uvs),
+      texelDescriptor(BINDING_TEXTURES, scene_.textures),
+      texelDescriptor(BINDING_TEXEL_POOL, scene_.texelPool),
   };
   static_assert(std::size(descriptors) == std::size(SHARED_BINDINGS), "every binding of the table is written");
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);

@@ -136,16 +136,19 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
   };
   // Only where they differ from the defaults: a Gouraud frame of whole lists keeps the pipelines
   // (and pipeline cache entries) it always had. requests[p] is pass p's request up to RESOLVE_LARGE.
-  if (listChunk_ != 0u || frame.shading != SHADING_GOURAUD) requests[RESOLVE_LARGE].code = RESOLVE_LARGE_KEYS;
+  // Frames lit per pixel and scenes with textures colour every pixel in resolve_lit.
+  const bool perPixel = frame.shading != SHADING_GOURAUD || textured_;
+  if (listChunk_ != 0u || perPixel) requests[RESOLVE_LARGE].code = RESOLVE_LARGE_KEYS;
   if (listChunk_ != 0u) {
     for (Pass pass : {RESOLVE_SMALL, RESOLVE_LARGE}) requests[pass].specs.push_back({SPEC_LIST_CHUNK, listChunk_});
   }
+  if (perPixel) requests[RESOLVE_SMALL].code = RESOLVE_LIT;
   if (frame.shading != SHADING_GOURAUD) {  // lit per pixel: resolve_lit as the second resolve, with the lights
-    requests[RESOLVE_SMALL].code = RESOLVE_LIT;
     const std::vector<SpecConstant> lighting = shadeSpecs(materials, lightCount);
     requests[RESOLVE_SMALL].specs.insert(requests[RESOLVE_SMALL].specs.end(), lighting.begin(), lighting.end());
     for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_SHADING, frame.shading});
   }
+  if (textured_) requests[RESOLVE_SMALL].specs.push_back({SPEC_TEXTURED, 1u});
   if (frame.specular == SPECULAR_BLINN) {
     for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_BLINN, 1u});
   }

@@ -209,6 +209,7 @@ class GpuRenderer {
     TexelBuffer vertices, triangles, objects, materials, lights;  // read as texels (bindings.glsl)
     TexelBuffer shadedPositions, shadedColors;  // written by the shade pass, read as texels
     Buffer clipList;
+    TexelBuffer uvs, textures, texelPool;  // the textures' (a texel each where the scene has none)
   };
   // The image's: sized to the image (ensureImageBuffers) and, for the large-triangle lists, to
   // the scene's triangles as well (createLargeBuffersFor).
@@ -225,6 +226,7 @@ class GpuRenderer {
   FrameBuffers perFrame_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
+  bool textured_ = false;  // the scene samples textures: resolve_lit colours every pixel
   uint32_t largeCapacity_ = 0;
   uint32_t largeSetupCapacity_ = 0;
   uint32_t width_ = 0;

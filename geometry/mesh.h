@@ -1,9 +1,12 @@
 // mesh.h — the triangle mesh every library passes around, and the coordinates a mesh may hold.
 #pragma once
 
+#include "geometry/texture_image.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace phongvk {
@@ -22,6 +25,11 @@ struct Mesh {
   // One RGBA8 colour per position (red in the low byte) that multiplies the material's colour, or
   // none: white.
   std::vector<uint32_t> colors;
+  // Texture coordinates, one per position, or none; which of `textures` each vertex samples (the
+  // same at a triangle's three vertices), gpu::TEXTURE_NONE where none, one per position or none.
+  std::vector<glm::vec2> uvs;
+  std::vector<uint32_t> textureIds;
+  std::vector<std::shared_ptr<const TextureImage>> textures;
 };
 
 }  // namespace phongvk

@@ -100,12 +100,18 @@ void appendMidpoints(SurfaceMesh& m, const EdgeTable& edges) {
   m.surfaces.resize(vertexCount + edgeCount);
   const bool colors = !m.mesh.colors.empty();
   if (colors) m.mesh.colors.resize(vertexCount + edgeCount);
+  // Texture coordinates halfway; an edge's ends sample the same texture (a mesh part's vertices).
+  const bool textured = !m.mesh.uvs.empty();
+  if (textured) m.mesh.uvs.resize(vertexCount + edgeCount);
+  if (textured) m.mesh.textureIds.resize(vertexCount + edgeCount);
   for (size_t e = 0; e < edgeCount; ++e) {
     SurfaceVertex mid = m.midpoint(vertexAt(m, edges.lo[e]), vertexAt(m, edges.hi[e]));
     m.mesh.positions[vertexCount + e] = mid.position;
     m.mesh.normals[vertexCount + e] = mid.normal;
     m.surfaces[vertexCount + e] = mid.surface;
     if (colors) m.mesh.colors[vertexCount + e] = mid.color;
+    if (textured) m.mesh.uvs[vertexCount + e] = (m.mesh.uvs[edges.lo[e]] + m.mesh.uvs[edges.hi[e]]) * 0.5f;
+    if (textured) m.mesh.textureIds[vertexCount + e] = m.mesh.textureIds[edges.lo[e]];
   }
 }
 

@@ -1,8 +1,11 @@
-// png_read.cpp — PNG files read back as 8-bit RGB or RGBA or 16-bit grey (stb_image), for diffs, tests and tools.
+// png_read.cpp — PNG files read back as 8-bit RGB or RGBA or 16-bit grey (stb_image), for diffs, tests
+// and tools. stb_image is compiled here with its PNG and JPEG decoders (texture_decode.cpp decodes
+// textures with it too).
 #include "phongvk/image.h"
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
 #include <stb_image.h>
 
 #include <cstdint>

@@ -5,6 +5,7 @@
 
 #include "base/number_text.h"
 #include "base/regular_file.h"
+#include "image/texture_decode.h"
 #include "meshio/mesh_import.h"
 #include "phongvk/errors.h"
 
@@ -20,7 +21,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cctype>
 #include <cmath>
+#include <map>
 #include <cstring>
 #include <filesystem>
 #include <optional>
@@ -56,9 +59,33 @@ bool readRegularFile(std::vector<unsigned char>* out, std::string* error, const 
   return true;
 }
 
-// Images are not needed: textures are not rendered.
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+// An embedded image (a GLB's buffer view, a data URI) kept encoded: only the base-colour textures
+// a primitive uses are decoded (Reader::texture), and an image file beside the glTF is read then.
+bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                 int size, void*) {
+  image->image.assign(bytes, bytes + size);
   return true;
+}
+
+// A URI's %XX escapes decoded (a relative URI names a file beside the glTF).
+std::string percentDecoded(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uint8_t(uri[i + 1])) && std::isxdigit(uint8_t(uri[i + 2]))) {
+      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// A sampler's wrap mode (glTF's GL enums) as gpu::TEXTURE_WRAP_*.
+uint32_t wrapMode(int gl) {
+  if (gl == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return gpu::TEXTURE_WRAP_CLAMP;
+  if (gl == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return gpu::TEXTURE_WRAP_MIRROR;
+  return gpu::TEXTURE_WRAP_REPEAT;
 }
 
 // Reads accessor elements as doubles, bounds checked once up front.
@@ -239,6 +266,7 @@ class Reader {
     }
     normals(p, transform, part);
     colors(p, part);
+    texturing(p, part);
     part.triangles = triangles(indices(p, positions.count()), mode);
     parts_.push_back(std::move(part));
   }
@@ -278,12 +306,56 @@ class Reader {
     }
   }
 
+  // The primitive's base-colour texture and its texture coordinates (TEXCOORD_n as the texture
+  // names), if its material has one.
+  void texturing(const tinygltf::Primitive& p, MeshPart& part) {
+    if (p.material < 0 || size_t(p.material) >= model_.materials.size()) return;
+    const tinygltf::TextureInfo& info = model_.materials[size_t(p.material)].pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) return;
+    const std::string name = "TEXCOORD_" + std::to_string(info.texCoord);
+    const auto coordinates = p.attributes.find(name);
+    if (coordinates == p.attributes.end())
+      fail(where_, path_, "materials[" + std::to_string(p.material) + "]'s base colour texture reads " + name + ", which a primitive lacks");
+    const Accessor a(model_, coordinates->second, name, path_, where_);
+    if (a.components() != 2 || a.count() != part.positions.size()) fail(where_, path_, name + " is not one 2-vector a vertex");
+    for (size_t v = 0; v < a.count(); ++v) part.uvs.push_back(glm::vec2(float(a.at(v, 0)), float(a.at(v, 1))));
+    part.texture = texture(info.index);
+  }
+
+  // Texture `index` (its image decoded, its sampler's wrap modes), decoded once per file.
+  std::shared_ptr<const TextureImage> texture(int index) {
+    const std::string name = "textures[" + std::to_string(index) + "]";
+    if (size_t(index) >= model_.textures.size()) fail(where_, path_, name + " does not exist");
+    std::shared_ptr<const TextureImage>& decoded = textures_[index];
+    if (decoded) return decoded;
+    const tinygltf::Texture& t = model_.textures[size_t(index)];
+    if (t.source < 0 || size_t(t.source) >= model_.images.size()) fail(where_, path_, name + " has no image");
+    TextureImage image = decodedImage(t.source);
+    if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
+      image.wrapU = wrapMode(model_.samplers[size_t(t.sampler)].wrapS);
+      image.wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
+    }
+    decoded = std::make_shared<const TextureImage>(std::move(image));
+    return decoded;
+  }
+
+  // Image `index`: embedded (kept encoded by keepEncoded), or a file beside the glTF.
+  TextureImage decodedImage(int index) const {
+    const tinygltf::Image& image = model_.images[size_t(index)];
+    const std::string what = where_ + ": " + path_ + ": images[" + std::to_string(index) + "]";
+    if (!image.image.empty()) return decodeTexture(std::string(image.image.begin(), image.image.end()), what);
+    if (image.uri.empty()) throw SceneError(what + ": no image data");
+    const std::string file = texturePathBeside(percentDecoded(image.uri), path_);
+    return readTextureFile(file, what + " ('" + image.uri + "')");
+  }
+
   const tinygltf::Model& model_;
   bool baseColors_;
   const std::string& path_;
   const std::string& where_;
   std::vector<MeshPart> parts_;
   std::vector<bool> visited_;  // nodes reached so far
+  std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by texture index, once decoded
 };
 
 // glTF 2.x (a later minor version is read as 2.0, as the specification allows), and no required
@@ -305,7 +377,7 @@ void checkAsset(const tinygltf::Model& model, const std::string& path, const std
 
 Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std::string& where) {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skipImage, nullptr);
+  loader.SetImageLoader(keepEncoded, nullptr);
   loader.SetFsCallbacks({fileExists, tinygltf::ExpandFilePath, readRegularFile, tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string error, warning;

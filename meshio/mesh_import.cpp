@@ -5,7 +5,9 @@
 
 #include "geometry/normals.h"
 
+#include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <utility>
 
 namespace phongvk {
@@ -42,6 +44,8 @@ void removeUnused(Mesh& mesh) {
   keepUsed(mesh.positions, newIndex);
   if (!mesh.normals.empty()) keepUsed(mesh.normals, newIndex);
   if (!mesh.colors.empty()) keepUsed(mesh.colors, newIndex);
+  if (!mesh.uvs.empty()) keepUsed(mesh.uvs, newIndex);
+  if (!mesh.textureIds.empty()) keepUsed(mesh.textureIds, newIndex);
 }
 
 }  // namespace
@@ -63,27 +67,58 @@ namespace {
 void unshareVertices(Mesh& mesh) {
   Mesh flat;
   flat.positions.reserve(3 * mesh.triangles.size());
+  flat.textures = std::move(mesh.textures);
   for (const glm::uvec3& t : mesh.triangles) {
     const uint32_t first = uint32_t(flat.positions.size());
     for (uint32_t v : {t.x, t.y, t.z}) {
       flat.positions.push_back(mesh.positions[v]);
       if (!mesh.colors.empty()) flat.colors.push_back(mesh.colors[v]);
+      if (!mesh.uvs.empty()) flat.uvs.push_back(mesh.uvs[v]);
+      if (!mesh.textureIds.empty()) flat.textureIds.push_back(mesh.textureIds[v]);
     }
     flat.triangles.push_back({first, first + 1, first + 2});
   }
   mesh = std::move(flat);
 }
 
+// Part `part`'s texture as an index into mesh.textures (added there the first time a part names
+// it), or gpu::TEXTURE_NONE.
+uint32_t textureIndex(Mesh& mesh, const std::shared_ptr<const TextureImage>& texture) {
+  if (!texture) return gpu::TEXTURE_NONE;
+  for (size_t i = 0; i < mesh.textures.size(); ++i) {
+    if (mesh.textures[i] == texture) return uint32_t(i);
+  }
+  mesh.textures.push_back(texture);
+  return uint32_t(mesh.textures.size() - 1);
+}
+
+// The part's texture coordinates and texture appended to the mesh's: (0, 0) and none for a part
+// without coordinates when another part has them.
+void appendTexturing(Mesh& mesh, MeshPart& part) {
+  const uint32_t texture = part.uvs.empty() ? gpu::TEXTURE_NONE : textureIndex(mesh, part.texture);
+  if (part.uvs.empty()) part.uvs.assign(part.positions.size(), glm::vec2(0.0f));
+  mesh.uvs.insert(mesh.uvs.end(), part.uvs.begin(), part.uvs.end());
+  mesh.textureIds.insert(mesh.textureIds.end(), part.positions.size(), texture);
+}
+
 }  // namespace
 
+std::string texturePathBeside(const std::string& name, const std::string& modelPath) {
+  std::string file = name;
+  std::replace(file.begin(), file.end(), '\\', '/');
+  const std::filesystem::path p(file);
+  return p.is_absolute() ? file : (std::filesystem::path(modelPath).parent_path() / p).string();
+}
+
 Mesh joinParts(std::vector<MeshPart>& parts, bool flatWithoutNormals, const std::string& where) {
-  bool normals = !parts.empty(), colors = false;
+  bool normals = !parts.empty(), colors = false, textured = false;
   for (const MeshPart& part : parts) {
     normals = normals && part.normals.size() == part.positions.size();
     colors = colors || !part.colors.empty();
+    textured = textured || (!part.uvs.empty() && part.texture);
   }
   Mesh mesh;
-  if (parts.size() == 1 && (normals || parts[0].normals.empty()) && !(!normals && flatWithoutNormals)) {
+  if (parts.size() == 1 && !textured && (normals || parts[0].normals.empty()) && !(!normals && flatWithoutNormals)) {
     mesh.positions = std::move(parts[0].positions);  // one part: its arrays, not a copy
     mesh.normals = std::move(parts[0].normals);
     mesh.colors = std::move(parts[0].colors);
@@ -93,6 +128,7 @@ Mesh joinParts(std::vector<MeshPart>& parts, bool flatWithoutNormals, const std:
   for (MeshPart& part : parts) {
     const uint32_t first = uint32_t(mesh.positions.size());
     for (const glm::uvec3& t : part.triangles) mesh.triangles.push_back(t + glm::uvec3(first));
+    if (textured) appendTexturing(mesh, part);
     mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
     if (normals) mesh.normals.insert(mesh.normals.end(), part.normals.begin(), part.normals.end());
     if (colors && part.colors.empty()) part.colors.assign(part.positions.size(), 0xFFFFFFFFu);

@@ -24,12 +24,21 @@ struct MeshPart {
   std::vector<glm::vec3> normals;
   std::vector<uint32_t> colors;
   std::vector<glm::uvec3> triangles;
+  // Texture coordinates (one per position) and the base-colour texture they sample, or none.
+  std::vector<glm::vec2> uvs;
+  std::shared_ptr<const TextureImage> texture;
 };
+
+// A texture file a model names (OBJ's map_Kd, PLY's TextureFile, a glTF image's URI) as a path:
+// relative to the model's folder, Windows separators (".\\wood.jpg", as some exporters write) read
+// as '/'.
+std::string texturePathBeside(const std::string& name, const std::string& modelPath);
 
 // The parts as one loaded mesh: normals where every part has them (otherwise none, and with
 // `flatWithoutNormals` each triangle gets vertices of its own, so that the computed normals are
 // the face normals: STL's facets, glTF's rule for primitives without normals), colours where any
-// part has them (white for the others). Throws SceneError "<where>: no triangles" for none.
+// part has them (white for the others), texture coordinates where any part has them with a
+// texture ((0, 0) and no texture for the others). Throws SceneError "<where>: no triangles" for none.
 Mesh joinParts(std::vector<MeshPart>& parts, bool flatWithoutNormals, const std::string& where);
 
 }  // namespace phongvk

@@ -10,6 +10,8 @@
 #include "base/text_words.h"
 #include "geometry/normals.h"
 #include "geometry/polygon.h"
+#include "image/texture_decode.h"
+#include "meshio/mesh_import.h"
 
 #include <tiny_obj_loader.h>
 
@@ -32,8 +34,11 @@ namespace {
 struct ObjData {
   std::vector<float> positions;           // xyz per position
   std::vector<float> normals;             // xyz per normal
+  std::vector<float> texcoords;           // uv per 'vt' line
   std::vector<tinyobj::index_t> corners;  // the faces' corners, in order
   std::vector<uint32_t> faceSizes;        // corners per face, in file order
+  std::vector<int> faceMaterials;         // each face's material (usemtl), -1 for none
+  std::vector<std::string> diffuseMaps;   // each material's map_Kd, as its library names it
 };
 
 [[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
@@ -238,10 +243,12 @@ ObjData parse(const std::string& path, const std::string& where) {
   // tinyobjloader skips a quad with a bad index, with only this warning.
   if (warning.find("invalid vertex index") != std::string::npos)
     failAtBadIndex(file.bytes(), attrib.vertices.size() / 3, attrib.normals.size() / 3, path, where);
-  ObjData data{attrib.vertices, attrib.normals, {}, faceSizes};
+  ObjData data{attrib.vertices, attrib.normals, attrib.texcoords, {}, faceSizes, {}, {}};
+  for (const tinyobj::material_t& m : materials) data.diffuseMaps.push_back(m.diffuse_texname);
   size_t faces = 0;
   for (const tinyobj::shape_t& shape : shapes) {
     data.corners.insert(data.corners.end(), shape.mesh.indices.begin(), shape.mesh.indices.end());
+    data.faceMaterials.insert(data.faceMaterials.end(), shape.mesh.material_ids.begin(), shape.mesh.material_ids.end());
     for (size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f, ++faces) {
       // tinyobjloader's count is the low 8 bits of ours (a face of 300 corners: 44): ours is kept.
       if (faces >= faceSizes.size() || uint8_t(faceSizes[faces]) != uint8_t(shape.mesh.num_face_vertices[f]))
@@ -283,29 +290,92 @@ bool hasFileNormals(const ObjData& data) {
   return true;
 }
 
-// Vertices are the distinct (position, normal) index pairs the faces use, in the order of first use.
-Mesh buildMesh(const ObjData& data, bool fileNormals) {
+// The materials' diffuse maps, each decoded once (file by file), as the mesh's textures; and each
+// material's index among them (gpu::TEXTURE_NONE for a material without one).
+std::vector<uint32_t> loadDiffuseMaps(const ObjData& data, Mesh& mesh, const std::string& path, const std::string& where) {
+  std::vector<uint32_t> textureOf(data.diffuseMaps.size(), gpu::TEXTURE_NONE);
+  std::map<std::string, uint32_t> byFile;
+  for (size_t m = 0; m < data.diffuseMaps.size(); ++m) {
+    if (data.diffuseMaps[m].empty()) continue;
+    const std::string file = texturePathBeside(data.diffuseMaps[m], path);
+    const auto [it, added] = byFile.emplace(file, uint32_t(mesh.textures.size()));
+    if (added) {
+      mesh.textures.push_back(std::make_shared<const TextureImage>(
+          readTextureFile(file, where + ": " + path + ": map_Kd '" + data.diffuseMaps[m] + "'")));
+    }
+    textureOf[m] = it->second;
+  }
+  return textureOf;
+}
+
+// A vertex of the mesh: the position, normal and texture coordinate indices of a corner and the
+// texture its face samples (gpu::TEXTURE_NONE, and no coordinate, where none).
+struct CornerKey {
+  uint32_t position, normal, texcoord, texture;
+  bool operator==(const CornerKey&) const = default;
+};
+
+struct CornerHash {
+  size_t operator()(const CornerKey& k) const {
+    return std::hash<uint64_t>()((uint64_t(k.position) << 32 | k.normal) ^ (uint64_t(k.texcoord) << 32 | k.texture) * 0x9E3779B97F4A7C15ull);
+  }
+};
+
+// Whether every corner of the face starting at corners[k] has a texture coordinate.
+bool faceHasTexcoords(const ObjData& data, size_t k, uint32_t size) {
+  for (uint32_t c = 0; c < size; ++c) {
+    if (data.corners[k + c].texcoord_index < 0) return false;
+  }
+  return true;
+}
+
+// Vertices are the distinct corners (position, normal, and where the face samples a texture its
+// texture coordinate and texture) the faces use, in the order of first use. OBJ's v runs up the
+// image, phongvk's down (texture_image.h): v becomes 1 - v.
+Mesh buildMesh(const ObjData& data, bool fileNormals, const std::string& path, const std::string& where) {
   Mesh mesh;
-  std::unordered_map<uint64_t, uint32_t> vertexOf;  // (position, normal) index pair -> vertex; lookups only
-  auto vertex = [&](const tinyobj::index_t& c) {
+  const std::vector<uint32_t> textureOf = loadDiffuseMaps(data, mesh, path, where);
+  const bool textured = !mesh.textures.empty();
+  std::unordered_map<CornerKey, uint32_t, CornerHash> vertexOf;  // lookups only
+  auto vertex = [&](const tinyobj::index_t& c, uint32_t texture) {
     const int normal = fileNormals ? c.normal_index : 0;
-    const uint64_t key = (uint64_t(uint32_t(c.vertex_index)) << 32) | uint32_t(normal);
-    auto [it, inserted] = vertexOf.try_emplace(key, uint32_t(mesh.positions.size()));
+    const uint32_t texcoord = texture == gpu::TEXTURE_NONE ? 0u : uint32_t(c.texcoord_index);
+    auto [it, inserted] = vertexOf.try_emplace({uint32_t(c.vertex_index), uint32_t(normal), texcoord, texture},
+                                               uint32_t(mesh.positions.size()));
     if (inserted) {
       mesh.positions.push_back(glm::vec3(at(data.positions, c.vertex_index)));
       if (fileNormals) mesh.normals.push_back(glm::vec3(at(data.normals, normal)));
+      if (textured) {
+        const bool has = texture != gpu::TEXTURE_NONE;
+        const double u = has ? data.texcoords[2 * size_t(texcoord)] : 0.0, v = has ? data.texcoords[2 * size_t(texcoord) + 1] : 1.0;
+        mesh.uvs.push_back(glm::vec2(float(u), float(1.0 - v)));
+        mesh.textureIds.push_back(texture);
+      }
     }
     return it->second;
   };
   std::vector<uint32_t> face;
   size_t k = 0;
-  for (uint32_t size : data.faceSizes) {
+  for (size_t f = 0; f < data.faceSizes.size(); ++f) {
+    const uint32_t size = data.faceSizes[f];
+    const int material = f < data.faceMaterials.size() ? data.faceMaterials[f] : -1;
+    uint32_t texture = material >= 0 && size_t(material) < textureOf.size() ? textureOf[size_t(material)] : gpu::TEXTURE_NONE;
+    if (!faceHasTexcoords(data, k, size)) texture = gpu::TEXTURE_NONE;
     face.clear();
-    for (unsigned int c = 0; c < size; ++c) face.push_back(vertex(data.corners[k + c]));
+    for (unsigned int c = 0; c < size; ++c) face.push_back(vertex(data.corners[k + c], texture));
     k += size;
     triangulatePolygon(mesh.positions, face, mesh.triangles);
   }
   return mesh;
+}
+
+// Every texture coordinate index is one of the file's 'vt' lines.
+void checkTexcoordIndices(const ObjData& data, const std::string& path, const std::string& where) {
+  const size_t count = data.texcoords.size() / 2;
+  for (const tinyobj::index_t& c : data.corners) {
+    if (c.texcoord_index >= 0 && size_t(c.texcoord_index) >= count)
+      fail(where, path, "a face's texture coordinate index is out of range (the file has " + std::to_string(count) + " 'vt' lines)");
+  }
 }
 
 }  // namespace
@@ -313,7 +383,8 @@ Mesh buildMesh(const ObjData& data, bool fileNormals) {
 Mesh importObj(const std::string& path, const std::string& where) {
   ObjData data = parse(path, where);
   checkPositions(data, path, where);
-  return buildMesh(data, hasFileNormals(data));
+  checkTexcoordIndices(data, path, where);
+  return buildMesh(data, hasFileNormals(data), path, where);
 }
 
 }  // namespace phongvk

@@ -5,6 +5,7 @@
 #include "base/number_text.h"
 #include "base/text_words.h"
 #include "geometry/polygon.h"
+#include "image/texture_decode.h"
 #include "meshio/mesh_import.h"
 #include "phongvk/errors.h"
 
@@ -39,6 +40,7 @@ struct Header {
   std::string format;
   size_t end = 0;  // offset of the first byte after "end_header\n"
   std::vector<Element> elements;
+  std::string textureFile;  // the first "comment TextureFile <name>" (MeshLab's, Blender's)
 };
 
 [[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
@@ -103,6 +105,13 @@ Header parseHeader(std::string_view bytes, const std::string& path, const std::s
       if (element.name.empty() || count.empty() || error != std::errc() || end != count.data() + count.size())
         bad("an element needs a name and a count (a whole number), got '" + line + "'");
       header.elements.push_back(element);
+    } else if (keyword == "comment") {
+      std::string word;
+      words >> word;
+      if (word == "TextureFile" && header.textureFile.empty()) {
+        std::getline(words >> std::ws, header.textureFile);
+        header.textureFile.erase(header.textureFile.find_last_not_of(" \t") + 1);
+      }
     } else if (keyword == "property") {
       if (header.elements.empty()) bad("a property before any element");
       std::string type;
@@ -273,17 +282,29 @@ struct VertexLayout {
   int position[3] = {-1, -1, -1};
   int normal[3] = {-1, -1, -1};
   int color[3] = {-1, -1, -1};
+  int uv[2] = {-1, -1};
 };
+
+// The vertex's scalar property called `name`, or -1.
+int propertyIndex(const Element& vertex, const char* name) {
+  for (size_t p = 0; p < vertex.properties.size(); ++p) {
+    if (vertex.properties[p].countType == Type::None && vertex.properties[p].name == name) return int(p);
+  }
+  return -1;
+}
 
 VertexLayout vertexLayout(const Element& vertex) {
   static const char* kNames[9] = {"x", "y", "z", "nx", "ny", "nz", "red", "green", "blue"};
   VertexLayout layout;
   int* slots[9] = {&layout.position[0], &layout.position[1], &layout.position[2], &layout.normal[0], &layout.normal[1],
                    &layout.normal[2],   &layout.color[0],    &layout.color[1],    &layout.color[2]};
-  for (size_t p = 0; p < vertex.properties.size(); ++p) {
-    for (int k = 0; k < 9; ++k) {
-      if (vertex.properties[p].countType == Type::None && vertex.properties[p].name == kNames[k]) *slots[k] = int(p);
-    }
+  for (int k = 0; k < 9; ++k) *slots[k] = propertyIndex(vertex, kNames[k]);
+  // Texture coordinates, by the names exporters use: the first pair present.
+  static const char* kUvNames[4][2] = {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+  for (const auto& names : kUvNames) {
+    if (layout.uv[0] >= 0) break;
+    if (propertyIndex(vertex, names[0]) >= 0 && propertyIndex(vertex, names[1]) >= 0)
+      layout.uv[0] = propertyIndex(vertex, names[0]), layout.uv[1] = propertyIndex(vertex, names[1]);
   }
   return layout;
 }
@@ -329,6 +350,11 @@ class Reader {
       if (layout.position[k] < 0) fail(where_, path_, "the vertex element has no x, y and z");
     const bool normals = layout.normal[0] >= 0 && layout.normal[1] >= 0 && layout.normal[2] >= 0;
     const bool colors = layout.color[0] >= 0 && layout.color[1] >= 0 && layout.color[2] >= 0;
+    // Texture coordinates count where the header names a texture; v runs up the image there, as
+    // in OBJ, and down in phongvk (texture_image.h).
+    const bool uvs = layout.uv[0] >= 0 && !header_.textureFile.empty();
+    if (uvs) part_.texture = std::make_shared<const TextureImage>(readTextureFile(
+                 texturePathBeside(header_.textureFile, path_), where_ + ": " + path_ + ": TextureFile '" + header_.textureFile + "'"));
     std::vector<double> row(element.properties.size());
     const size_t rows = size_t(std::min<uint64_t>(element.count, maxRows_));  // a header may promise more than is there
     reserveLarge(part_.positions, rows);
@@ -350,6 +376,7 @@ class Reader {
           c |= colorChannel(row[size_t(layout.color[k])], element.properties[size_t(layout.color[k])].type) << (8 * k);
         part_.colors.push_back(c);
       }
+      if (uvs) part_.uvs.push_back(glm::vec2(float(row[size_t(layout.uv[0])]), float(1.0 - row[size_t(layout.uv[1])])));
     }
     usableNormals_ = normals && usableNormals_;
   }

@@ -3,9 +3,10 @@
 #include "base/huge_pages.h"
 #include "scene/object_mesh.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <map>
 
 namespace phongvk {
 
@@ -60,6 +61,33 @@ std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, si
     }
   }
   return meshes;
+}
+
+// The scene's textures, each once however many meshes or objects share it.
+using TextureIndex = std::map<const TextureImage*, uint32_t>;
+
+// Texture `image`'s index in data.textures, its texels appended to the pool the first time.
+uint32_t pooledTexture(SceneData& data, TextureIndex& pooled, const TextureImage& image) {
+  const auto [it, added] = pooled.emplace(&image, uint32_t(data.textures.size()));
+  if (!added) return it->second;
+  data.textures.push_back({uint32_t(data.texels.size()), image.width, image.height, image.wrapU | image.wrapV << 8});
+  data.texels.insert(data.texels.end(), image.texels.begin(), image.texels.end());
+  return it->second;
+}
+
+// The object's texture coordinates and textures (the scene's indices), a record per vertex.
+void appendTexturing(SceneData& data, TextureIndex& pooled, const Mesh& mesh) {
+  std::vector<uint32_t> index;
+  for (const auto& texture : mesh.textures) index.push_back(pooledTexture(data, pooled, *texture));
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const bool has = !mesh.uvs.empty() && mesh.textureIds[i] != gpu::TEXTURE_NONE;
+    data.uvs.push_back({has ? mesh.uvs[i] : glm::vec2(0.0f), has ? index[mesh.textureIds[i]] : gpu::TEXTURE_NONE, 0u});
+  }
+}
+
+// Whether a scene of these meshes samples a texture anywhere.
+bool anyTexture(const std::vector<ObjectMesh>& meshes) {
+  return std::any_of(meshes.begin(), meshes.end(), [](const ObjectMesh& m) { return !m.mesh.textures.empty(); });
 }
 
 void appendObject(SceneData& data, const ObjectMesh& built, uint32_t objectIndex) {
@@ -132,8 +160,12 @@ SceneData buildSceneData(const SceneSpec& scene) {
   reserveLarge(data.triangles, triangles);
   data.boundsMin = glm::dvec3(HUGE_VAL);
   data.boundsMax = glm::dvec3(-HUGE_VAL);
+  const bool textured = anyTexture(meshes);
+  if (textured) reserveLarge(data.uvs, vertices);
+  TextureIndex pooled;
   for (size_t i = 0; i < meshes.size(); ++i) {
     appendObject(data, meshes[i], static_cast<uint32_t>(i));
+    if (textured) appendTexturing(data, pooled, meshes[i].mesh);
     meshes[i] = {};  // freed as soon as copied
   }
   keepShare(data, scene);
@@ -172,6 +204,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
   data.specular = scene.specular == Specular::Blinn ? gpu::SPECULAR_BLINN : gpu::SPECULAR_PHONG;
   data.projection = projectionOf(scene.camera.orthographic);
   data.samples = scene.samples;
+  data.textureFilter = scene.textureFilter == TextureFilter::Nearest ? gpu::TEXTURE_FILTER_NEAREST : gpu::TEXTURE_FILTER_BILINEAR;
 }
 
 namespace {
@@ -236,6 +269,7 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   f.specular = data.specular;
   f.eye = glm::vec3(view.eye - data.lightingOrigin);
   f.projection = projectionOf(view.orthographic);
+  f.textureFilter = data.textureFilter;
 
   in.objects = data.objects;
   for (size_t i = 0; i < in.objects.size(); ++i) {

@@ -26,6 +26,12 @@ struct SceneData {
   std::vector<gpu::ObjectData> objects;     // material, flags, lightOffset; viewOffset per frame
   std::vector<gpu::MaterialData> materials;
   std::vector<gpu::LightData> lights;       // positions relative to lightingOrigin
+  // Textures (docs/DESIGN.md "Textures"): for a scene with any, each vertex's texture coordinate and
+  // texture, and every texture once (TextureData::offset into `texels`, RGBA8); empty otherwise.
+  std::vector<gpu::VertexUv> uvs;
+  std::vector<gpu::TextureData> textures;
+  std::vector<uint32_t> texels;
+  uint32_t textureFilter = gpu::TEXTURE_FILTER_BILINEAR;
   glm::dvec3 boundsMin{0.0}, boundsMax{0.0};  // world box around every vertex (camera_fit.h)
   glm::vec3 background{0.0f};
   glm::vec3 ambient{1.0f};

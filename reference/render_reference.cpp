@@ -4,6 +4,7 @@
 #include "shaders/gouraud.h"
 #include "shaders/phong.h"
 #include "shaders/pixel_shading.h"
+#include "shaders/texture.h"
 #include "shaders/triangle_setup.h"
 
 #include <algorithm>
@@ -54,30 +55,59 @@ std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedV
   return keys;
 }
 
-SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, const ShadedVertex& s0,
-                          const ShadedVertex& s1, const ShadedVertex& s2, int x, int y) {
+namespace {
+
+// The barycentrics of pixel (x, y) in the triangle with shaded vertices s0, s1, s2.
+vec2 pixelBarycentrics(const FrameData& frame, const ShadedVertex& s0, const ShadedVertex& s1, const ShadedVertex& s2,
+                       int x, int y) {
+  return barycentrics(gouraudTriangle(s0, s1, s2, frame.projection), pixelRay(x, y, frame.principal), frame.interpolation);
+}
+
+// Flat or Phong shading's surface of triangle `tri` with the pixel's barycentrics `bary` (unused
+// with flat shading).
+SurfacePoint surfaceAt(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, vec2 bary) {
   const ObjectData& object = in.objects[tri.w];
   const MaterialData& m = in.materials[object.material];
   const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
   if (in.frame.shading == SHADING_FLAT) return flatSurface(a, b, c, object.lightOffset, m);
-  const GouraudTriangle g = gouraudTriangle(s0, s1, s2, in.frame.projection);
-  return phongSurface(a, b, c, object.lightOffset, m,
-                      barycentrics(g, pixelRay(x, y, in.frame.principal), in.frame.interpolation));
+  return phongSurface(a, b, c, object.lightOffset, m, bary);
 }
 
-namespace {
+// The texel triangle `tri` shows where its barycentrics are `bary` (texture.h): white in a scene
+// without textures and on a mesh without one.
+uint32_t pixelTexel(const SceneData& data, glm::uvec4 tri, vec2 bary, uint32_t filter) {
+  if (data.uvs.empty()) return VERTEX_WHITE;
+  const VertexUv &a = data.uvs[tri.x], &b = data.uvs[tri.y], &c = data.uvs[tri.z];
+  if (a.texture == TEXTURE_NONE) return VERTEX_WHITE;
+  const TextureTaps k = textureTaps(data.textures[a.texture], interpolateUv(a.uv, b.uv, c.uv, bary), filter);
+  return blendTaps(data.texels[k.i00], data.texels[k.i10], data.texels[k.i01], data.texels[k.i11], k);
+}
 
-// Flat or Phong shading: triangle `tri`'s surface at pixel (x, y), lit with the frame's lights.
+// Flat or Phong shading, or any shading in a scene with textures: triangle `tri`'s colour at pixel
+// (x, y), Gouraud's interpolated or its surface lit with the frame's lights, times its texel.
 uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
                   glm::uvec4 tri, int x, int y) {
-  const SurfacePoint s = pixelSurface(data, in, tri, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y);
-  const vec3 V = viewVector(s.P, in.frame);
-  vec3 color = phongAmbient(s.m, in.frame.ambient);
-  for (const LightData& light : in.lights) color += phongLightModel(s.P, s.N, V, s.m, light, in.frame.specular == SPECULAR_BLINN);
+  const FrameData& frame = in.frame;
+  const vec2 bary = pixelBarycentrics(frame, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y);
+  const uint32_t texel = pixelTexel(data, tri, bary, frame.textureFilter);
+  if (frame.shading == SHADING_GOURAUD) {
+    const GouraudTriangle g = gouraudTriangle(shaded[tri.x], shaded[tri.y], shaded[tri.z], frame.projection);
+    return packColor(texturedColor(interpolateColorAt(g, bary), texel));
+  }
+  SurfacePoint s = surfaceAt(data, in, tri, bary);
+  if (!data.uvs.empty()) s.m.color = texturedColor(s.m.color, texel);
+  const vec3 V = viewVector(s.P, frame);
+  vec3 color = phongAmbient(s.m, frame.ambient);
+  for (const LightData& light : in.lights) color += phongLightModel(s.P, s.N, V, s.m, light, frame.specular == SPECULAR_BLINN);
   return packColor(color);
 }
 
 }  // namespace
+
+SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, const ShadedVertex& s0,
+                          const ShadedVertex& s1, const ShadedVertex& s2, int x, int y) {
+  return surfaceAt(data, in, tri, pixelBarycentrics(in.frame, s0, s1, s2, x, y));
+}
 
 Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
               const std::vector<uint64_t>& keys) {
@@ -92,7 +122,7 @@ Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<Sh
         continue;
       }
       const glm::uvec4 tri = data.triangles[static_cast<uint32_t>(keys[i])];
-      packed[i] = frame.shading == SHADING_GOURAUD
+      packed[i] = frame.shading == SHADING_GOURAUD && data.uvs.empty()
                       ? resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame, frame.interpolation)
                       : litPixel(data, in, shaded, tri, int(x), int(y));
     }

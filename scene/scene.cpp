@@ -19,7 +19,7 @@ using namespace scenejson;
 // "animate" is read by SceneSequence (animate.h), which hands readScene each frame without it.
 const Keys kSceneKeys = {"camera",  "background", "ambient", "lights",
                          "materials", "objects",    "render",  "animate"};
-const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples"};
+const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples", "texture_filter"};
 
 // The value of an enumerated option: the index of `node`'s string among `names` (joined for the
 // message when it is none of them).
@@ -42,7 +42,7 @@ int samplesPerPixel(const Node& node) {
   return samples;
 }
 
-// "render": interpolation, shading, specular model and samples per pixel (docs/DESIGN.md).
+// "render": interpolation, shading, specular model, samples per pixel and texture filter (docs/DESIGN.md).
 void readRender(const Node& node, SceneSpec& scene) {
   requireObject(node);
   checkKeys(node, kRenderKeys);
@@ -50,6 +50,7 @@ void readRender(const Node& node, SceneSpec& scene) {
   if (auto v = node.find("shading")) scene.shading = choice<Shading>(*v, SHADING_NAMES);
   if (auto v = node.find("specular")) scene.specular = choice<Specular>(*v, SPECULAR_NAMES);
   if (auto v = node.find("samples")) scene.samples = samplesPerPixel(*v);
+  if (auto v = node.find("texture_filter")) scene.textureFilter = choice<TextureFilter>(*v, TEXTURE_FILTER_NAMES);
 }
 
 }  // namespace

@@ -95,6 +95,7 @@ enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
 std::string_view shapeName(Shape shape);
 // The scene file's names of the render choices, in the order of their enums (scene_parts.h).
 inline constexpr std::array<const char*, 2> INTERPOLATION_NAMES = {"perspective", "screen"};
+inline constexpr std::array<const char*, 2> TEXTURE_FILTER_NAMES = {"nearest", "bilinear"};
 inline constexpr std::array<const char*, 3> SHADING_NAMES = {"gouraud", "flat", "phong"};
 inline constexpr std::array<const char*, 2> SPECULAR_NAMES = {"phong", "blinn"};
 enum class UpAxis { Z, Y };
@@ -139,6 +140,7 @@ struct SceneSpec {
   Shading shading = Shading::Gouraud;
   Specular specular = Specular::Phong;
   int samples = 1;  // per pixel: 1, 4, 9 or 16
+  TextureFilter textureFilter = TextureFilter::Bilinear;  // render.texture_filter
   // Which contiguous share of the built triangles to keep (sharePart of shareParts, near-equal
   // ranges in file order), for one process of a scene split across several (phongvk render --mpi).
   // A mesh file given alone (model_scene.h): its messages name that file only, not the scene

@@ -158,7 +158,8 @@ Json renderJson(const SceneSpec& scene) {
   return {{"interpolation", INTERPOLATION_NAMES[size_t(scene.interpolation)]},
           {"shading", SHADING_NAMES[size_t(scene.shading)]},
           {"specular", SPECULAR_NAMES[size_t(scene.specular)]},
-          {"samples", scene.samples}};
+          {"samples", scene.samples},
+          {"texture_filter", TEXTURE_FILTER_NAMES[size_t(scene.textureFilter)]}};
 }
 
 }  // namespace

@@ -62,6 +62,9 @@ layout(binding = BINDING_SHADED_TEXELS) uniform usamplerBuffer shadedTexels;  //
 layout(binding = BINDING_SHADED_COLOR_TEXELS) uniform usamplerBuffer shadedColorTexels;  // shadedColors[], likewise
 layout(binding = BINDING_LARGE_TEXELS) uniform usamplerBuffer largeTexels;     // large list, after the raster passes
 layout(binding = BINDING_LARGE_SETUP_TEXELS) uniform usamplerBuffer largeSetupTexels;  // largeSetups[], likewise
+layout(binding = BINDING_UVS) uniform usamplerBuffer uvTexels;            // VertexUv[] (scenes with textures)
+layout(binding = BINDING_TEXTURES) uniform usamplerBuffer textureTexels;  // TextureData[]
+layout(binding = BINDING_TEXEL_POOL) uniform usamplerBuffer texelPool;    // RGBA8 texels, four a texel
 layout(std430, binding = BINDING_SHADED) writeonly buffer ShadedPositions { vec4 shadedPositions[]; };
 layout(std430, binding = BINDING_SHADED_COLORS) writeonly buffer ShadedColors { vec4 shadedColors[]; };
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
@@ -114,6 +117,23 @@ LightData lightData(uint i) {
   vec4 a = floats(texelFetch(lightTexels, int(2u * i)));
   vec4 b = floats(texelFetch(lightTexels, int(2u * i + 1u)));
   return LightData(a.xyz, a.w, b.xyz, b.w);
+}
+
+VertexUv vertexUv(uint i) {
+  uvec4 t = texelFetch(uvTexels, int(i));
+  return VertexUv(uintBitsToFloat(t.xy), t.z, t.w);
+}
+
+TextureData textureData(uint i) {
+  uvec4 t = texelFetch(textureTexels, int(i));
+  return TextureData(t.x, t.y, t.z, t.w);
+}
+
+// Texel i of the pool (RGBA8), the (i mod 4)-th word of its texel (selects, not a dynamic index).
+uint poolTexel(uint i) {
+  uvec4 q = texelFetch(texelPool, int(i >> 2u));
+  uint k = i & 3u;
+  return k == 0u ? q.x : (k == 1u ? q.y : (k == 2u ? q.z : q.w));
 }
 
 // Bin entry e of the large list: one texel after the 16-byte header.

@@ -83,12 +83,14 @@ FN vec2 barycentrics(GouraudTriangle g, vec3 p, uint mode) {
   return vec2(b1, b2);
 }
 
-// The colour interpolated at pixel ray p, perspective-correct or linear in screen space.
-FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) {
-  vec2 b = barycentrics(g, p, mode);
+// The colour interpolated with barycentrics b (barycentrics).
+FN vec3 interpolateColorAt(GouraudTriangle g, vec2 b) {
   PRECISE vec3 c = g.c0 + b.x * g.dc1 + b.y * g.dc2;
   return c;
 }
+
+// The colour interpolated at pixel ray p, perspective-correct or linear in screen space.
+FN vec3 interpolateColor(GouraudTriangle g, vec3 p, uint mode) { return interpolateColorAt(g, barycentrics(g, p, mode)); }
 
 // Clamp to [0, 1], round(c * 255), pack as RGBA8 with opaque alpha.
 FN uint packColor(vec3 c) {

@@ -138,12 +138,18 @@ FN vec3 phongLight(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light) {
   return phongLightModel(P, N, V, m, light, false);
 }
 
-// The material as a vertex sees it: C times the vertex's colour (RGBA8, red in the low byte; alpha
-// unused). Each channel is c / 255, correctly rounded, so VERTEX_WHITE leaves C exactly as it is.
-FN MaterialData vertexMaterial(MaterialData m, uint color) {
+// An RGBA8 colour's red, green and blue (red in the low byte; alpha unused) as c / 255, correctly
+// rounded, so that white is exactly 1: a vertex's colour and a texel multiply C by this.
+FN vec3 unitColor(uint color) {
   PRECISE vec3 c = vec3(divide(float(color & 255u), 255.0f), divide(float((color >> 8u) & 255u), 255.0f),
                         divide(float((color >> 16u) & 255u), 255.0f));
-  m.color = m.color * c;
+  return c;
+}
+
+// The material as a vertex sees it: C times the vertex's colour, so VERTEX_WHITE leaves C exactly
+// as it is.
+FN MaterialData vertexMaterial(MaterialData m, uint color) {
+  m.color = m.color * unitColor(color);
   return m;
 }
 

@@ -14,7 +14,9 @@ layout(constant_id = SPEC_LIST_CHUNK) const uint LIST_CHUNK = 0u;
 layout(constant_id = SPEC_SHADING) const uint SHADING = SHADING_GOURAUD;
 // The second resolve pass (resolve_keys.glsl): resolve_large left every winner's key (its keys
 // build) instead of its colour, so every covered pixel of the touched bins is coloured.
-const bool KEYS_ONLY = LIST_CHUNK != 0u || SHADING != SHADING_GOURAUD;
+// A scene with textures: every pixel is coloured by resolve_lit, which samples them (texture.h).
+layout(constant_id = SPEC_TEXTURED) const bool TEXTURED = false;
+const bool KEYS_ONLY = LIST_CHUNK != 0u || SHADING != SHADING_GOURAUD || TEXTURED;
 
 // A touched bin: its first pixel, its flags (shared.h BIN_*), the head of its large-triangle list
 // and its index in the bin grid.

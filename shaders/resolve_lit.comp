@@ -1,13 +1,16 @@
-// The second resolve pass for flat and Phong shading (render.shading; resolve.glsl SHADING), in
-// place of resolve_small.comp: resolve_large left every winner's key (KEYS_ONLY), and each covered
-// pixel of the touched bins is lit once, from its winning triangle's surface there
-// (pixel_shading.h), as the shade pass lights a vertex: pixels x lights, not fragments x lights.
+// The second resolve pass for flat and Phong shading (render.shading; resolve.glsl SHADING) and for
+// scenes with textures (resolve.glsl TEXTURED), in place of resolve_small.comp: resolve_large left
+// every winner's key (KEYS_ONLY), and each covered pixel of the touched bins is coloured once, from
+// its winning triangle: flat and Phong light its surface there (pixel_shading.h), as the shade pass
+// lights a vertex (pixels x lights, not fragments x lights); Gouraud interpolates the shaded vertex
+// colours as resolve_small does; with textures either colour is times the pixel's texel (texture.h).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
 #include "gouraud.h"
 #include "pixel_shading.h"
+#include "texture.h"
 #include "bindings.glsl"
 #include "resolve.glsl"
 
@@ -17,9 +20,26 @@ layout(constant_id = SPEC_SPECULAR) const bool SPECULAR = true;
 layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION = false;
 layout(constant_id = SPEC_BLINN) const bool BLINN = false;
 
-// Triangle `id`'s surface at pixel (x, y), flat or Phong, lit and packed.
+// The texel triangle `tri` shows where its barycentrics are `bary`: white on a mesh without a texture.
+uint pixelTexel(uvec4 tri, vec2 bary) {
+  VertexUv a = vertexUv(tri.x), b = vertexUv(tri.y), c = vertexUv(tri.z);
+  if (a.texture == TEXTURE_NONE) return VERTEX_WHITE;
+  TextureTaps k = textureTaps(textureData(a.texture), interpolateUv(a.uv, b.uv, c.uv, bary), frame.textureFilter);
+  return blendTaps(poolTexel(k.i00), poolTexel(k.i10), poolTexel(k.i01), poolTexel(k.i11), k);
+}
+
+// Triangle `id`'s colour at pixel (x, y): Gouraud's, or its surface flat or Phong, lit, times its
+// texel; packed.
 uint pixelColor(uint id, int x, int y) {
   uvec4 tri = texelFetch(triangleTexels, int(id));
+  GouraudTriangle g;
+  vec2 bary = vec2(0.0f);
+  if (TEXTURED || SHADING != SHADING_FLAT) {
+    g = loadGouraud(id);
+    bary = barycentrics(g, pixelRay(x, y, frame.principal), INTERPOLATION);
+  }
+  uint texel = TEXTURED ? pixelTexel(tri, bary) : VERTEX_WHITE;
+  if (SHADING == SHADING_GOURAUD) return packColor(texturedColor(interpolateColorAt(g, bary), texel));
   ObjectData object = objectData(tri.w);
   MaterialData m = materialData(object.material);
   VertexIn a = vertexIn(tri.x), b = vertexIn(tri.y), c = vertexIn(tri.z);
@@ -27,9 +47,9 @@ uint pixelColor(uint id, int x, int y) {
   if (SHADING == SHADING_FLAT) {
     s = flatSurface(a, b, c, object.lightOffset, m);
   } else {
-    vec2 bary = barycentrics(loadGouraud(id), pixelRay(x, y, frame.principal), INTERPOLATION);
     s = phongSurface(a, b, c, object.lightOffset, m, bary);
   }
+  if (TEXTURED) s.m.color = texturedColor(s.m.color, texel);
   vec3 V = viewVector(s.P, frame);
   vec3 color = phongAmbient(s.m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {

@@ -86,7 +86,10 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(BINDING_SHADED_COLORS, 16, STORAGE_BUFFER)             /* ShadedVertex.color per vertex */        \
   X(BINDING_SHADED_COLOR_TEXELS, 17, UNIFORM_TEXEL_BUFFER) /* the same, as texels */                  \
   X(BINDING_STATUS, 18, STORAGE_BUFFER)            /* FrameStatus: why a frame must be rendered again */ \
-  X(BINDING_CONTROL, 19, UNIFORM_BUFFER)           /* PassControl (gpu_layout.h) */
+  X(BINDING_CONTROL, 19, UNIFORM_BUFFER)           /* PassControl (gpu_layout.h) */              \
+  X(BINDING_UVS, 20, UNIFORM_TEXEL_BUFFER)         /* VertexUv per vertex (scenes with textures) */  \
+  X(BINDING_TEXTURES, 21, UNIFORM_TEXEL_BUFFER)    /* TextureData per texture */                     \
+  X(BINDING_TEXEL_POOL, 22, UNIFORM_TEXEL_BUFFER)  /* every texture's RGBA8 texels, 4 a texel */
 // Arrays the passes only read are uniform texel buffers: texelFetch is gathered in SIMD by CPU
 // devices (lavapipe), where a storage-buffer load is a loop over the lanes. The shaded positions
 // and colours are arrays of their own: the triangle pass reads only positions (16 bytes a vertex
@@ -108,7 +111,8 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(SPEC_SHADING, 9)                    \
   X(SPEC_BLINN, 10)                     \
   X(SPEC_CLIP_POLYGONS, 11)             \
-  X(SPEC_PROJECTION, 12)
+  X(SPEC_PROJECTION, 12)                \
+  X(SPEC_TEXTURED, 13)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;
@@ -157,6 +161,34 @@ struct MaterialData {
   float pad1;
 };
 
+// Textures (docs/DESIGN.md "Textures"). A vertex's texture coordinate and texture: an array of its
+// own, bound only for scenes with textures, so VertexIn and the scenes without any are unchanged.
+// uv (0, 0) is the image's top-left corner, (1, 1) its bottom-right (glTF's convention).
+struct VertexUv {
+  vec2 uv;
+  uint texture;  // TEXTURE_NONE, or the index of the mesh's texture in the scene's (TextureData[])
+  uint pad0;
+};
+
+// A texture in the scene's texel pool: its first texel, its size and its wrap modes
+// (TEXTURE_WRAP_* for u in the low byte, for v in the next).
+struct TextureData {
+  uint offset;
+  uint width;
+  uint height;
+  uint wrap;
+};
+
+PHONGVK_CONST uint TEXTURE_NONE = 0xFFFFFFFFu;
+PHONGVK_CONST uint TEXTURE_WRAP_REPEAT = 0;
+PHONGVK_CONST uint TEXTURE_WRAP_CLAMP = 1;     // clamp to edge
+PHONGVK_CONST uint TEXTURE_WRAP_MIRROR = 2;    // mirrored repeat
+PHONGVK_CONST uint TEXTURE_FILTER_NEAREST = 0;
+PHONGVK_CONST uint TEXTURE_FILTER_BILINEAR = 1;
+// The largest side of a texture: Vulkan's guaranteed maxImageDimension2D is 4096, desktop devices
+// give 16384, and bilinear weights in 8 bits of a texel need side * 256 below 2^24 (texture.h).
+PHONGVK_CONST uint TEXTURE_MAX_SIDE = 16384;
+
 struct LightData {
   vec3 position;     // a point light: world coordinates relative to the lighting origin;
                      // a directional light: the unit direction toward it
@@ -185,7 +217,7 @@ struct FrameData {
   uint specular;     // SPECULAR_*
   float focalY;      // pixels per metre at 1 m, down (fy)
   uint projection;   // PROJECTION_*; in the shaders, the specialization constant (bindings.glsl)
-  uint pad0;
+  uint textureFilter;  // TEXTURE_FILTER_*
   uint pad1;
   uint pad2;
 };
@@ -195,6 +227,7 @@ static_assert(sizeof(VertexIn) == 32 && offsetof(VertexIn, normal) == 16);
 static_assert(sizeof(ShadedVertex) == 32);
 static_assert(sizeof(ObjectData) == 32 && offsetof(ObjectData, lightOffset) == 16);
 static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && offsetof(MaterialData, ks) == 32);
+static_assert(sizeof(VertexUv) == 16 && sizeof(TextureData) == 16);
 static_assert(sizeof(LightData) == 32 && offsetof(LightData, color) == 16);
 static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focalX) == 60);
 static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearPlane) == 76);
@@ -203,7 +236,7 @@ static_assert(offsetof(FrameData, width) == 92 && offsetof(FrameData, eye) == 96
 static_assert(offsetof(FrameData, height) == 108 && offsetof(FrameData, interpolation) == 112);
 static_assert(offsetof(FrameData, shading) == 116 && offsetof(FrameData, specular) == 120);
 static_assert(offsetof(FrameData, focalY) == 124);
-static_assert(offsetof(FrameData, projection) == 128);
+static_assert(offsetof(FrameData, projection) == 128 && offsetof(FrameData, textureFilter) == 132);
 static_assert(sizeof(FrameData) == 144);
 
 // Every binding number and specialization-constant id appears once in its table.

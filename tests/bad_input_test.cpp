@@ -107,7 +107,7 @@ TEST(BadInputTypes, WrongTypesNameTheirPath) {
 
 TEST(BadInputTypes, UnknownKeysInRenderAndInlineMaterials) {
   EXPECT_EQ(errorFor(sceneWith(R"("render": {"mode": "screen"})")),
-            "a.json: render.mode: unknown key (allowed: interpolation, shading, specular, samples)");
+            "a.json: render.mode: unknown key (allowed: interpolation, shading, specular, samples, texture_filter)");
   EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "sphere"}, {"shape": "cube", "material": {"shine": 1}}])")),
             "a.json: objects[1].material.shine: unknown key (allowed: ka, kd, ks, n, attenuation, color)");
 }

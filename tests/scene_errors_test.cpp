@@ -202,8 +202,10 @@ TEST(SceneErrors, RenderModesOutOfTheirSets) {
             "a.json: render.samples: must be between 1 and 16, got 0");
   EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["samples"] = 2.5; }),
             "a.json: render.samples: must be an integer, got 2.5");
+  EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["texture_filter"] = "trilinear"; }),
+            "a.json: render.texture_filter: must be one of nearest, bilinear, got 'trilinear'");
   EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["sample"] = 4; }),
-            "a.json: render.sample: unknown key (allowed: interpolation, shading, specular, samples)");
+            "a.json: render.sample: unknown key (allowed: interpolation, shading, specular, samples, texture_filter)");
 }
 
 // ---- ranges ----

@@ -100,6 +100,7 @@ inline Scene withRenderOptions(const Scene& scene, const std::string& json) {
     else if (key == "specular") settings.specular = parseSpecular(value.get<std::string>());
     else if (key == "interpolation") settings.interpolation = parseInterpolation(value.get<std::string>());
     else if (key == "samples") settings.samples = value.get<int>();
+    else if (key == "texture_filter") settings.textureFilter = value.get<std::string>() == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
     else ADD_FAILURE() << "no render option '" << key << "'";
   }
   return scene.withRender(settings);

@@ -108,9 +108,11 @@ struct Material {
 enum class Shading { Gouraud, Flat, Phong };
 enum class Specular { Phong, Blinn };
 enum class Interpolation { Perspective, Screen };
+// How a texture is sampled between its texels (docs/DESIGN.md "Textures").
+enum class TextureFilter { Nearest, Bilinear };
 
 // How a scene is rendered: its "render" section (shading, specular, interpolation, samples per
-// pixel: 1, 4, 9 or 16) and its background colour (RGB in [0, 1]; a scene gives it back as the
+// pixel: 1, 4, 9 or 16, texture filter) and its background colour (RGB in [0, 1]; a scene gives it back as the
 // renderers hold it, in 32-bit floats). The defaults are the scene file's. Where nothing is drawn,
 // a frame's alpha output (Outputs::alpha) says so.
 struct RenderSettings {
@@ -119,6 +121,7 @@ struct RenderSettings {
   Interpolation interpolation = Interpolation::Perspective;
   int samples = 1;
   Vec3 background = {0, 0, 0};
+  TextureFilter textureFilter = TextureFilter::Bilinear;
   bool operator==(const RenderSettings&) const = default;
 };
 
