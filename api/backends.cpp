@@ -9,6 +9,7 @@
 #include "reference/render_reference.h"
 #include "vulkan/context.h"
 #include "vulkan/float_probe.h"
+#include "vulkan/resources.h"
 
 #include <cmath>
 #include <limits>
@@ -59,7 +60,10 @@ class VulkanBackend : public RendererImpl {
 
  protected:
   uint64_t validationMessages() const override { return context_.validation ? context_.validation->count() : 0; }
-  void addStartup(RendererStats& s) const override { s.contextMs = contextMs_; }
+  void addStartup(RendererStats& s) const override {
+    s.contextMs = contextMs_;
+    s.deviceBytes = phongvk::deviceBytes(context_);
+  }
   VulkanContext context_;
   double contextMs_ = 0;
 };

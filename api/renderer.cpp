@@ -28,14 +28,23 @@ void Renderer::Impl::frame(const SceneSpec& spec) {
 
 namespace {
 
+// What the scene's meshes hold that is not rendered (SceneData::notices), in a line.
+std::string meshNotices(const SceneData& data) {
+  std::string line;
+  for (const std::string& notice : data.notices) line += (line.empty() ? "" : "; ") + notice;
+  return line;
+}
+
 // RendererStats::notice for a scene just built and framed.
 std::string noticeFor(const SceneSpec& spec, const SceneData& data, const CameraSpec& camera) {
-  if (!camera.fit || !seenOnlyFromBehind(data, camera.position)) return "";
+  const std::string meshes = meshNotices(data);
+  if (!camera.fit || !seenOnlyFromBehind(data, camera.position)) return meshes;
   const std::string name = spec.modelAlone && !spec.objects.empty() ? spec.objects[0].file
                            : spec.path.empty()                      ? std::string("the scene")
                                                                     : spec.path;
   return name + ": the fitted camera sees only the back of every triangle (their normals face away from it), so "
-                "the model is drawn dark, lit from behind; give the camera another direction or turn the faces";
+                "the model is drawn dark, lit from behind; give the camera another direction or turn the faces" +
+         (meshes.empty() ? "" : "; " + meshes);
 }
 
 // The samples a frame of `spec` renders: its pixels times the samples per pixel (memory_estimate.h).
@@ -50,7 +59,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   const SceneSpec& spec = SceneAccess::spec(scene);
   const uint64_t samples = pixelSamples(spec);
   if (data_ && builtFrom_ && sameGeometry(*builtFrom_, spec)) {
-    checkBuiltSceneMemory(spec, data_->triangles.size(), samples);  // this frame's size and samples
+    checkBuiltSceneMemory(spec, data_->triangles.size(), samples, textureBytes(*data_));  // this frame's size and samples
     const size_t materials = data_->materials.size(), lights = data_->lights.size();
     refreshShading(*data_, spec);
     frame(spec);
@@ -62,7 +71,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   data_.reset();  // the old meshes go before the new ones are built
   builtFrom_.reset();  // until the new ones are uploaded: a failed upload builds again next time
   data_ = buildSceneData(spec);
-  checkBuiltSceneMemory(spec, data_->triangles.size(), samples);
+  checkBuiltSceneMemory(spec, data_->triangles.size(), samples, textureBytes(*data_));
   frame(spec);
   notice_ = noticeFor(spec, *data_, camera_);
   buildMs_ += msSince(start);
@@ -116,6 +125,7 @@ RendererStats Renderer::Impl::stats() const {
   s.framesRepeated = framesRepeated();
   s.triangles = data_ ? data_->triangles.size() : 0;
   s.buildMs = buildMs_;
+  s.textureBytes = data_ ? textureBytes(*data_) : 0;
   s.firstFrameMs = firstFrameMs_;
   s.notice = notice_;
   s.validationMessages = validationMessages();

@@ -176,12 +176,14 @@ Vec3 ambientOf(const SceneSpec& scene) { return {scene.ambient.x, scene.ambient.
 Json materialJson(const Material& m) {
   for (const auto& [value, key] : {std::pair{m.ka, "ka"}, {m.kd, "kd"}, {m.ks, "ks"}, {m.n, "n"}})
     requireFinite(value, std::string("material.") + key);
-  return {{"ka", m.ka},
-          {"kd", m.kd},
-          {"ks", m.ks},
-          {"n", m.n},
-          {"attenuation", vec3Json(m.attenuation, "material.attenuation")},
-          {"color", vec3Json(m.color, "material.color")}};
+  Json json = {{"ka", m.ka},
+               {"kd", m.kd},
+               {"ks", m.ks},
+               {"n", m.n},
+               {"attenuation", vec3Json(m.attenuation, "material.attenuation")},
+               {"color", vec3Json(m.color, "material.color")}};
+  if (!m.texture.empty()) json["texture"] = m.texture;
+  return json;
 }
 
 SceneSpec withRenderSettings(const SceneSpec& scene, const RenderSettings& settings) {
@@ -189,7 +191,7 @@ SceneSpec withRenderSettings(const SceneSpec& scene, const RenderSettings& setti
                        {"specular", specularName(settings.specular)},
                        {"interpolation", interpolationName(settings.interpolation)},
                        {"samples", settings.samples},
-                       {"texture_filter", TEXTURE_FILTER_NAMES[size_t(settings.textureFilter)]}};
+                       {"texture_filter", textureFilterName(settings.textureFilter)}};
   const Json background = vec3Json(settings.background, "background");
   return withSection(withSection(scene, "render", render.dump()), "background", background.dump());
 }
@@ -232,6 +234,8 @@ Specular parseSpecular(const std::string& name) { return renderOption("specular"
 Interpolation parseInterpolation(const std::string& name) {
   return renderOption("interpolation", name).interpolation;
 }
+const char* textureFilterName(TextureFilter filter) { return nameOf(filter, TEXTURE_FILTER_NAMES); }
+TextureFilter parseTextureFilter(const std::string& name) { return renderOption("texture_filter", name).textureFilter; }
 
 void placeObject(Object& object, const Matrix4& pose) {
   checkAffine(pose, "pose");

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace phongvk {
@@ -30,6 +31,8 @@ struct Mesh {
   std::vector<glm::vec2> uvs;
   std::vector<uint32_t> textureIds;
   std::vector<std::shared_ptr<const TextureImage>> textures;
+  // What the file holds that is not rendered, for the user (RendererStats::notice); empty if nothing.
+  std::string notice;
 };
 
 }  // namespace phongvk

@@ -10,6 +10,8 @@
 #include <climits>
 #include <cstring>
 #include <memory>
+#include <optional>
+#include <string_view>
 
 namespace phongvk {
 
@@ -44,6 +46,37 @@ TextureImage decodeTexture(const std::string& bytes, const std::string& what) {
   texture.texels.resize(size_t(width) * size_t(height));
   std::memcpy(texture.texels.data(), pixels.get(), texture.texels.size() * 4);  // RGBA bytes: red in the low byte
   return texture;
+}
+
+namespace {
+
+// RFC 4648 base64 (padding optional, no line breaks), or nothing for a character outside it.
+std::optional<std::string> base64Decoded(std::string_view text) {
+  std::string out;
+  uint32_t bits = 0;
+  int count = 0;
+  for (char c : text) {
+    int value = c >= 'A' && c <= 'Z' ? c - 'A' : c >= 'a' && c <= 'z' ? c - 'a' + 26 : c >= '0' && c <= '9' ? c - '0' + 52
+              : c == '+' ? 62 : c == '/' ? 63 : c == '=' ? -2 : -1;
+    if (value == -1) return std::nullopt;
+    if (value == -2) break;
+    bits = bits << 6 | uint32_t(value);
+    if ((count += 6) >= 8) out += char((bits >> (count -= 8)) & 0xFF);
+  }
+  return out;
+}
+
+}  // namespace
+
+TextureImage readTextureSource(const std::string& source, const std::string& what) {
+  if (source.rfind("data:", 0) != 0) return readTextureFile(source, what);
+  const size_t comma = source.find(',');
+  const std::string header = source.substr(0, std::min(comma, source.size()));
+  if (comma == std::string::npos || (header != "data:image/png;base64" && header != "data:image/jpeg;base64"))
+    fail(what, "a data URI of a texture starts data:image/png;base64, or data:image/jpeg;base64,");
+  const std::optional<std::string> bytes = base64Decoded(std::string_view(source).substr(comma + 1));
+  if (!bytes) fail(what, "the data URI is not base64");
+  return decodeTexture(*bytes, what);
 }
 
 TextureImage readTextureFile(const std::string& path, const std::string& what) {

@@ -13,6 +13,11 @@ namespace phongvk {
 // image that is not PNG or JPEG, is corrupt or truncated, or has a side over gpu::TEXTURE_MAX_SIDE.
 TextureImage decodeTexture(const std::string& bytes, const std::string& what);
 
+// The texture a scene names by `source`: a PNG or JPEG file, or a data URI of one
+// ("data:image/png;base64,..." or "data:image/jpeg;base64,...", as glTF embeds images and
+// phongvk.Material writes an array). Throws SceneError "<what>: <why>".
+TextureImage readTextureSource(const std::string& source, const std::string& what);
+
 // decodeTexture of the regular file at `path`; `what` names it in the errors, and a missing or
 // unreadable file is one ("<what>: cannot open ...").
 TextureImage readTextureFile(const std::string& path, const std::string& what);

@@ -310,6 +310,7 @@ class Reader {
   // names), if its material has one.
   void texturing(const tinygltf::Primitive& p, MeshPart& part) {
     if (p.material < 0 || size_t(p.material) >= model_.materials.size()) return;
+    noteIgnoredMaps(model_.materials[size_t(p.material)]);
     const tinygltf::TextureInfo& info = model_.materials[size_t(p.material)].pbrMetallicRoughness.baseColorTexture;
     if (info.index < 0) return;
     const std::string name = "TEXCOORD_" + std::to_string(info.texCoord);
@@ -322,6 +323,27 @@ class Reader {
     part.texture = texture(info.index);
   }
 
+  // The material's maps phongvk does not render, named once each for the notice.
+  void noteIgnoredMaps(const tinygltf::Material& m) {
+    const std::pair<int, const char*> maps[] = {{m.normalTexture.index, "normal"},
+                                                {m.occlusionTexture.index, "occlusion"},
+                                                {m.emissiveTexture.index, "emissive"},
+                                                {m.pbrMetallicRoughness.metallicRoughnessTexture.index, "metallic-roughness"}};
+    for (const auto& [index, name] : maps) {
+      if (index >= 0 && std::find(ignoredMaps_.begin(), ignoredMaps_.end(), name) == ignoredMaps_.end()) ignoredMaps_.push_back(name);
+    }
+  }
+
+ public:
+  // The notice for the maps the file's primitives use that are not rendered (Mesh::notice).
+  std::string notice() const {
+    if (ignoredMaps_.empty()) return "";
+    std::string names;
+    for (size_t i = 0; i < ignoredMaps_.size(); ++i) names += (i == 0 ? "" : i + 1 == ignoredMaps_.size() ? " and " : ", ") + ignoredMaps_[i];
+    return path_ + ": its " + names + " maps are not rendered (phongvk samples base-colour textures only)";
+  }
+
+ private:
   // Texture `index` (its image decoded, its sampler's wrap modes), decoded once per file.
   std::shared_ptr<const TextureImage> texture(int index) {
     const std::string name = "textures[" + std::to_string(index) + "]";
@@ -356,6 +378,7 @@ class Reader {
   std::vector<MeshPart> parts_;
   std::vector<bool> visited_;  // nodes reached so far
   std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by texture index, once decoded
+  std::vector<std::string> ignoredMaps_;  // the kinds of map seen that are not rendered
 };
 
 // glTF 2.x (a later minor version is read as 2.0, as the specification allows), and no required
@@ -390,7 +413,9 @@ Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std
   if (size_t(sceneIndex) >= model.scenes.size()) fail(where, path, "the default scene does not exist");
   Reader reader(model, baseColors, path, where);
   for (int n : model.scenes[size_t(sceneIndex)].nodes) reader.node(n, glm::dmat4(1.0), 0);
-  return joinParts(reader.parts(), true, where + ": " + path);
+  Mesh mesh = joinParts(reader.parts(), true, where + ": " + path);
+  mesh.notice = reader.notice();
+  return mesh;
 }
 
 }  // namespace phongvk

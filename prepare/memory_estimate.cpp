@@ -75,9 +75,10 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
               std::to_string(triangles) + " triangles, " + std::to_string(pixels) + " pixels", "most of it: " + most);
 }
 
-void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels) {
-  checkMemory(scene.path, "the scene", triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL,
-              std::to_string(triangles) + " triangles as built, " + std::to_string(pixels) + " pixels",
+void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels, uint64_t textureBytes) {
+  const std::string textures = textureBytes == 0 ? "" : ", " + std::to_string(textureBytes) + " bytes of textures";
+  checkMemory(scene.path, "the scene", triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL + 2 * textureBytes,
+              std::to_string(triangles) + " triangles as built, " + std::to_string(pixels) + " pixels" + textures,
               "a smaller image, fewer samples or simpler meshes fit");
 }
 

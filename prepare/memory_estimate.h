@@ -41,8 +41,9 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels);
 // The same for a scene whose meshes are built: `triangles` as built. Every frame is checked so
 // (a renderer given the same geometry at a larger size or more samples, a sequence whose frames
 // grow), and every build before its upload (a mesh file of large polygons builds more triangles
-// than its size suggests).
-void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels);
+// than its size suggests). `textureBytes`: what the built scene's textures hold (SceneData's
+// textureBytes), counted twice, the host's arrays and the device's copies.
+void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels, uint64_t textureBytes);
 
 // Throws SceneError "<path>: <what> needs about N GiB (<detail>), more than the M GiB limit (...);
 // <remedy>" when `bytes` exceed sceneMemoryLimit(): the one message for the scene and what is made

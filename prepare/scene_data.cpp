@@ -12,8 +12,11 @@ namespace phongvk {
 
 namespace {
 
-gpu::MaterialData toGpu(const MaterialSpec& m) {
+// The material as the renderers read it; its texture's index in `textures` (none if not there).
+gpu::MaterialData toGpu(const MaterialSpec& m, const std::map<const TextureImage*, uint32_t>& textures) {
   gpu::MaterialData g{};
+  const auto texture = m.textureImage ? textures.find(m.textureImage.get()) : textures.end();
+  g.texture = texture != textures.end() ? texture->second : gpu::TEXTURE_NONE;
   g.color = m.color;
   g.ka = m.ka;
   g.attenuation = m.attenuation;
@@ -63,12 +66,10 @@ std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, si
   return meshes;
 }
 
-// The scene's textures, each once however many meshes or objects share it.
-using TextureIndex = std::map<const TextureImage*, uint32_t>;
-
-// Texture `image`'s index in data.textures, its texels appended to the pool the first time.
-uint32_t pooledTexture(SceneData& data, TextureIndex& pooled, const TextureImage& image) {
-  const auto [it, added] = pooled.emplace(&image, uint32_t(data.textures.size()));
+// Texture `image`'s index in data.textures, its texels appended to the pool the first time (each
+// texture once, however many meshes, objects or materials share it).
+uint32_t pooledTexture(SceneData& data, const TextureImage& image) {
+  const auto [it, added] = data.textureIndex.emplace(&image, uint32_t(data.textures.size()));
   if (!added) return it->second;
   data.textures.push_back({uint32_t(data.texels.size()), image.width, image.height, image.wrapU | image.wrapV << 8});
   data.texels.insert(data.texels.end(), image.texels.begin(), image.texels.end());
@@ -76,18 +77,28 @@ uint32_t pooledTexture(SceneData& data, TextureIndex& pooled, const TextureImage
 }
 
 // The object's texture coordinates and textures (the scene's indices), a record per vertex.
-void appendTexturing(SceneData& data, TextureIndex& pooled, const Mesh& mesh) {
+// Throws SceneError when its material has a texture and its mesh no coordinates.
+void appendTexturing(SceneData& data, const Mesh& mesh, const MaterialSpec& material, const std::string& object) {
+  if (material.textureImage && mesh.uvs.empty())
+    throw SceneError(object + ".material.texture: the object's mesh has no texture coordinates to sample it with");
   std::vector<uint32_t> index;
-  for (const auto& texture : mesh.textures) index.push_back(pooledTexture(data, pooled, *texture));
+  for (const auto& texture : mesh.textures) index.push_back(pooledTexture(data, *texture));
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    const bool has = !mesh.uvs.empty() && mesh.textureIds[i] != gpu::TEXTURE_NONE;
-    data.uvs.push_back({has ? mesh.uvs[i] : glm::vec2(0.0f), has ? index[mesh.textureIds[i]] : gpu::TEXTURE_NONE, 0u});
+    const uint32_t own = mesh.textureIds.empty() ? gpu::TEXTURE_NONE : mesh.textureIds[i];
+    data.uvs.push_back({mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[i], own == gpu::TEXTURE_NONE ? own : index[own], 0u});
   }
 }
 
-// Whether a scene of these meshes samples a texture anywhere.
-bool anyTexture(const std::vector<ObjectMesh>& meshes) {
-  return std::any_of(meshes.begin(), meshes.end(), [](const ObjectMesh& m) { return !m.mesh.textures.empty(); });
+// Object `object` of `scene` for a message: "scene.json: objects[2]".
+std::string sceneWhere(const SceneSpec& scene, const Object& object) {
+  return (scene.path.empty() ? "" : scene.path + ": ") + object.jsonPath;
+}
+
+// Whether a scene of these meshes and materials samples a texture anywhere.
+bool anyTexture(const std::vector<ObjectMesh>& meshes, const SceneSpec& scene) {
+  return std::any_of(meshes.begin(), meshes.end(), [](const ObjectMesh& m) { return !m.mesh.textures.empty(); }) ||
+         std::any_of(scene.objects.begin(), scene.objects.end(),
+                     [&](const Object& o) { return scene.materials[size_t(o.material)].textureImage != nullptr; });
 }
 
 void appendObject(SceneData& data, const ObjectMesh& built, uint32_t objectIndex) {
@@ -160,13 +171,19 @@ SceneData buildSceneData(const SceneSpec& scene) {
   reserveLarge(data.triangles, triangles);
   data.boundsMin = glm::dvec3(HUGE_VAL);
   data.boundsMax = glm::dvec3(-HUGE_VAL);
-  const bool textured = anyTexture(meshes);
+  const bool textured = anyTexture(meshes, scene);
   if (textured) reserveLarge(data.uvs, vertices);
-  TextureIndex pooled;
   for (size_t i = 0; i < meshes.size(); ++i) {
     appendObject(data, meshes[i], static_cast<uint32_t>(i));
-    if (textured) appendTexturing(data, pooled, meshes[i].mesh);
+    const Object& object = scene.objects[i];
+    if (textured) appendTexturing(data, meshes[i].mesh, scene.materials[size_t(object.material)], sceneWhere(scene, object));
+    const std::string& notice = meshes[i].mesh.notice;
+    if (!notice.empty() && std::find(data.notices.begin(), data.notices.end(), notice) == data.notices.end())
+      data.notices.push_back(notice);
     meshes[i] = {};  // freed as soon as copied
+  }
+  for (const Object& object : scene.objects) {
+    if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, *texture);
   }
   keepShare(data, scene);
   data.lightingOrigin = meanOrigin(data.objectOrigins);
@@ -177,10 +194,15 @@ SceneData buildSceneData(const SceneSpec& scene) {
   return data;
 }
 
+uint64_t textureBytes(const SceneData& data) {
+  return data.texels.size() * sizeof(uint32_t) + data.uvs.size() * sizeof(gpu::VertexUv) +
+         data.textures.size() * sizeof(gpu::TextureData);
+}
+
 void refreshShading(SceneData& data, const SceneSpec& scene) {
   data.materials.clear();
-  for (const MaterialSpec& m : scene.materials) data.materials.push_back(toGpu(m));
-  if (data.materials.empty()) data.materials.push_back(toGpu(MaterialSpec{}));
+  for (const MaterialSpec& m : scene.materials) data.materials.push_back(toGpu(m, data.textureIndex));
+  if (data.materials.empty()) data.materials.push_back(toGpu(MaterialSpec{}, data.textureIndex));
   data.lights.clear();
   for (const LightSpec& l : scene.lights) {
     gpu::LightData g{};
@@ -217,10 +239,16 @@ bool sameObjectGeometry(const Object& a, const Object& b) {
          a.translate == b.translate && a.closed == b.closed;
 }
 
+// Whether the materials of a and b sample the same textures (the texel pool is built with the meshes).
+bool sameTextures(const SceneSpec& a, const SceneSpec& b) {
+  return std::equal(a.materials.begin(), a.materials.end(), b.materials.begin(), b.materials.end(),
+                    [](const MaterialSpec& x, const MaterialSpec& y) { return x.textureImage == y.textureImage; });
+}
+
 }  // namespace
 
 bool sameGeometry(const SceneSpec& a, const SceneSpec& b) {
-  return a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
+  return sameTextures(a, b) && a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
 }
 
 bool lightingIsViewIndependent(const FrameInputs& in) {

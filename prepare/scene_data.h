@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <map>
 #include <vector>
 
 namespace phongvk {
@@ -32,6 +33,8 @@ struct SceneData {
   std::vector<gpu::TextureData> textures;
   std::vector<uint32_t> texels;
   uint32_t textureFilter = gpu::TEXTURE_FILTER_BILINEAR;
+  std::map<const TextureImage*, uint32_t> textureIndex;  // each texture's index in `textures`
+  std::vector<std::string> notices;  // the meshes' (Mesh::notice), each once
   glm::dvec3 boundsMin{0.0}, boundsMax{0.0};  // world box around every vertex (camera_fit.h)
   glm::vec3 background{0.0f};
   glm::vec3 ambient{1.0f};
@@ -64,6 +67,9 @@ struct FrameInputs {
 // One object's mesh (object_mesh.h buildObjectMesh), its SceneError led by the scene's file; a
 // model file alone's names that file and its line only ("m.ply: line 7: ...").
 ObjectMesh buildSceneObject(const SceneSpec& scene, const Object& object);
+
+// The bytes a built scene's textures take: texels, texture coordinates and the texture table.
+uint64_t textureBytes(const SceneData& data);
 
 // Builds every object's mesh and flattens the scene. Throws SceneError, also for a scene without
 // objects.

@@ -127,16 +127,25 @@ py::array asArray(const py::handle& value, const char* name, bool floats) {
   }
 }
 
+// Texture coordinates: an (N, 2) array (or rows of 2 numbers), as floats, flattened.
+std::vector<float> uvRows(const py::object& uvs) {
+  const py::array a = py::module_::import("numpy").attr("asarray")(uvs, py::arg("dtype") = "float64");
+  if (a.ndim() != 2 || a.shape(1) != 2) throw py::value_error("uvs: expected shape (N, 2), got " + shapeText(a));
+  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  return std::vector<float>(values.data(), values.data() + values.size());
+}
+
 // The arrays of a mesh: vertices and faces, or (faces None) one object with .vertices and .faces
-// arrays (a trimesh.Trimesh, say).
-MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const py::object& normals) {
+// arrays (a trimesh.Trimesh, say); texture coordinates if given.
+MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const py::object& normals,
+                      const py::object& uvs = py::none()) {
   if (faces.is_none()) {
     if (!py::hasattr(vertices, "vertices") || !py::hasattr(vertices, "faces")) {
       throw py::type_error("add_mesh: expected vertices and faces, a phongvk.Mesh, or one object with .vertices "
                            "and .faces arrays (a trimesh.Trimesh, for one), got " +
                            std::string(py::str(py::type::of(vertices).attr("__name__"))));
     }
-    return meshArrays(vertices.attr("vertices"), vertices.attr("faces"), normals);
+    return meshArrays(vertices.attr("vertices"), vertices.attr("faces"), normals, uvs);
   }
   const py::array vertexArray = asArray(vertices, "vertices", true);
   MeshArrays mesh;
@@ -150,6 +159,7 @@ MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const
                             "), got " + std::to_string(normalArray.shape(0)));
     }
   }
+  if (!uvs.is_none()) mesh.uvs = uvRows(uvs);
   return mesh;
 }
 
@@ -207,6 +217,19 @@ void setFields(py::object& value, const py::dict& fields, const std::string& wha
 
 // A material given to add or add_mesh: a phongvk.Material, a dict of its fields, or None (the
 // scene's default material).
+// A material's texture as Material.texture holds it: None as "", a path as text, an image array
+// ((height, width, 3 or 4) uint8) as a data URI of its PNG.
+std::string textureSource(const py::object& texture) {
+  if (texture.is_none()) return "";
+  if (py::isinstance<py::str>(texture) || py::hasattr(texture, "__fspath__"))
+    return py::str(py::module_::import("os").attr("fspath")(texture));
+  const PngImage pixels = pngImageFromArray(py::array::ensure(texture));
+  const std::vector<uint8_t> png = std::visit([](const auto& any) { return encodePng(any, PNG_LEVEL_DEFAULT); }, pixels);
+  const py::object encoded = py::module_::import("base64").attr("b64encode")(
+      py::bytes(reinterpret_cast<const char*>(png.data()), png.size()));
+  return "data:image/png;base64," + py::str(encoded.attr("decode")("ascii")).cast<std::string>();
+}
+
 std::optional<Material> materialOf(const py::object& material) {
   if (material.is_none()) return std::nullopt;
   if (py::isinstance<Material>(material)) return material.cast<Material>();
@@ -220,10 +243,11 @@ std::optional<Material> materialOf(const py::object& material) {
 }
 
 // What add and add_mesh place: a phongvk.Mesh as it is (shared, built once), or arrays built now.
-TriangleMesh meshOf(const py::object& vertices, const py::object& faces, const py::object& normals) {
-  if (!py::isinstance<TriangleMesh>(vertices)) return TriangleMesh(meshArrays(vertices, faces, normals));
-  if (!faces.is_none() || !normals.is_none())
-    throw py::type_error("faces and normals: not given with a phongvk.Mesh, which has its own");
+TriangleMesh meshOf(const py::object& vertices, const py::object& faces, const py::object& normals,
+                    const py::object& uvs = py::none()) {
+  if (!py::isinstance<TriangleMesh>(vertices)) return TriangleMesh(meshArrays(vertices, faces, normals, uvs));
+  if (!faces.is_none() || !normals.is_none() || !uvs.is_none())
+    throw py::type_error("faces, normals and uvs: not given with a phongvk.Mesh, which has its own");
   return vertices.cast<TriangleMesh>();
 }
 
@@ -234,8 +258,8 @@ unsigned long long addPlaced(Scene& scene, const TriangleMesh& mesh, const Matri
 }
 
 void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, const py::object& normals,
-             const py::object& material, bool closed) {
-  addPlaced(scene, meshOf(vertices, faces, normals), IDENTITY_POSE, material, closed);
+             const py::object& material, bool closed, const py::object& uvs) {
+  addPlaced(scene, meshOf(vertices, faces, normals, uvs), IDENTITY_POSE, material, closed);
 }
 
 unsigned long long addObject(Scene& scene, const py::object& object, const py::object& faces, const py::object& pose,
@@ -347,6 +371,8 @@ py::dict statsDict(const RendererStats& s) {
   d["frames_repeated"] = s.framesRepeated;
   d["triangles"] = s.triangles;
   d["build_ms"] = s.buildMs;
+  d["texture_bytes"] = s.textureBytes;
+  d["device_bytes"] = s.deviceBytes;
   d["validation_messages"] = s.validationMessages;
   d["startup_vulkan_ms"] = s.contextMs;
   d["startup_probe_ms"] = s.probeMs;
@@ -528,12 +554,16 @@ ambient, diffuse and specular coefficients), n (the specular exponent, the shini
 but the fall-off: 0.15, 1.0, 0.8, 10, (1, 0, 0), grey 0.8; no fall-off, as a model file rendered
 alone has, so a scene built in code is well exposed at any distance (a scene file's default
 attenuation is the paper's (1, 0.2, 0.2)). Given to Scene.add or add_mesh, it is checked like a
-scene file's material (SceneError naming objects[N].material.KEY).)")
-      .def(py::init([](double ka, double kd, double ks, double n, Vec3 attenuation, Vec3 color) {
-             return Material{ka, kd, ks, n, attenuation, color};
+scene file's material (SceneError naming objects[N].material.KEY). texture: a base-colour texture
+that multiplies color where the object's mesh has texture coordinates (uvs): a PNG or JPEG file's
+path, or an image array ((height, width, 3 or 4) uint8, row 0 at the top), kept as a data URI of
+its PNG (so a scene's to_json() holds it); None for none.)")
+      .def(py::init([](double ka, double kd, double ks, double n, Vec3 attenuation, Vec3 color, const py::object& texture) {
+             return Material{ka, kd, ks, n, attenuation, color, textureSource(texture)};
            }),
            py::kw_only(), py::arg("ka") = material.ka, py::arg("kd") = material.kd, py::arg("ks") = material.ks,
-           py::arg("n") = material.n, py::arg("attenuation") = material.attenuation, py::arg("color") = material.color)
+           py::arg("n") = material.n, py::arg("attenuation") = material.attenuation, py::arg("color") = material.color,
+           py::arg("texture") = py::none())
       .def_readwrite("ka", &Material::ka, "Ambient coefficient (>= 0).")
       .def_readwrite("kd", &Material::kd, "Diffuse coefficient (>= 0).")
       .def_readwrite("ks", &Material::ks, "Specular coefficient (>= 0).")
@@ -541,28 +571,36 @@ scene file's material (SceneError naming objects[N].material.KEY).)")
       .def_readwrite("attenuation", &Material::attenuation,
                      "(a, b, c) of the fall-off 1 / (a + b d + c d^2), positive at every distance d > 0.")
       .def_readwrite("color", &Material::color, "RGB (>= 0).")
+      .def_property(
+          "texture", [](const Material& x) { return x.texture.empty() ? py::object(py::none()) : py::object(py::str(x.texture)); },
+          [](Material& x, const py::object& texture) { x.texture = textureSource(texture); },
+          "The texture's file, or a data URI of its PNG (an array given); None for none.")
       .def("__eq__", [](const Material& a, const Material& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const Material& x) {
         return "phongvk.Material(ka=" + floatText(x.ka) + ", kd=" + floatText(x.kd) + ", ks=" + floatText(x.ks) +
-               ", n=" + floatText(x.n) + ", attenuation=" + vec3Text(x.attenuation) + ", color=" + vec3Text(x.color) + ")";
+               ", n=" + floatText(x.n) + ", attenuation=" + vec3Text(x.attenuation) + ", color=" + vec3Text(x.color) +
+               (x.texture.empty()                     ? std::string()
+                : x.texture.rfind("data:", 0) == 0    ? ", texture=<PNG data URI, " + std::to_string(x.texture.size()) + " characters>"
+                                                      : ", texture='" + x.texture + "'") +
+               ")";
       });
 
   const RenderSettings settings;
   py::class_<RenderSettings>(m, "RenderSettings", R"(How a scene is rendered: its scene file's "render" options
 and background. shading: "gouraud" (lit at the vertices), "flat" (once per triangle) or "phong" (at
 every pixel); specular: "phong" or "blinn" (the highlight's base); interpolation: "perspective" or
-"screen"; samples per pixel: 1, 4, 9 or 16; background: RGB in [0, 1]. The defaults are the scene
-file's. A name that is none of the choices raises SceneError at once; the rest is checked when a
+"screen"; samples per pixel: 1, 4, 9 or 16; background: RGB in [0, 1]; texture_filter: "bilinear" or
+"nearest" (how a model's base-colour texture is sampled). The defaults are the scene file's. A name that is none of the choices raises SceneError at once; the rest is checked when a
 scene takes the settings (Scene.render_settings, with_render), like a scene file's "render".)")
       .def(py::init([](const std::string& shading, const std::string& specular, const std::string& interpolation,
-                       int samples, Vec3 background) {
+                       int samples, Vec3 background, const std::string& textureFilter) {
              return RenderSettings{parseShading(shading), parseSpecular(specular), parseInterpolation(interpolation),
-                                   samples, background};
+                                   samples, background, parseTextureFilter(textureFilter)};
            }),
            py::kw_only(), py::arg("shading") = shadingName(settings.shading),
            py::arg("specular") = specularName(settings.specular),
            py::arg("interpolation") = interpolationName(settings.interpolation), py::arg("samples") = settings.samples,
-           py::arg("background") = settings.background)
+           py::arg("background") = settings.background, py::arg("texture_filter") = textureFilterName(settings.textureFilter))
       .def_property(
           "shading", [](const RenderSettings& s) { return shadingName(s.shading); },
           [](RenderSettings& s, const std::string& name) { s.shading = parseShading(name); },
@@ -574,23 +612,28 @@ scene takes the settings (Scene.render_settings, with_render), like a scene file
           "interpolation", [](const RenderSettings& s) { return interpolationName(s.interpolation); },
           [](RenderSettings& s, const std::string& name) { s.interpolation = parseInterpolation(name); },
           "\"perspective\" or \"screen\".")
+      .def_property(
+          "texture_filter", [](const RenderSettings& s) { return textureFilterName(s.textureFilter); },
+          [](RenderSettings& s, const std::string& name) { s.textureFilter = parseTextureFilter(name); },
+          "\"bilinear\" or \"nearest\".")
       .def_readwrite("samples", &RenderSettings::samples, "Samples per pixel: 1, 4, 9 or 16 (a regular grid).")
       .def_readwrite("background", &RenderSettings::background, "RGB in [0, 1] where nothing is drawn.")
       .def("__eq__", [](const RenderSettings& a, const RenderSettings& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const RenderSettings& s) {
         return std::string("phongvk.RenderSettings(shading='") + shadingName(s.shading) + "', specular='" +
                specularName(s.specular) + "', interpolation='" + interpolationName(s.interpolation) +
-               "', samples=" + std::to_string(s.samples) + ", background=" + vec3Text(s.background) + ")";
+               "', samples=" + std::to_string(s.samples) + ", background=" + vec3Text(s.background) +
+               ", texture_filter='" + textureFilterName(s.textureFilter) + "')";
       });
 
   py::class_<TriangleMesh>(m, "Mesh", R"(A triangle mesh built once, which Scene.add and add_mesh place as many
-times as asked without building or holding it again: Mesh(vertices, faces, normals=None) from
+times as asked without building or holding it again: Mesh(vertices, faces, normals=None, uvs=None) from
 arrays (or one object with .vertices and .faces, a trimesh.Trimesh), checked as add_mesh checks
 them, or Mesh.from_file(path, up=None) from an OBJ, PLY, STL, glTF or GLB file.)")
-      .def(py::init([](const py::object& vertices, const py::object& faces, const py::object& normals) {
-             return TriangleMesh(meshArrays(vertices, faces, normals));
+      .def(py::init([](const py::object& vertices, const py::object& faces, const py::object& normals, const py::object& uvs) {
+             return TriangleMesh(meshArrays(vertices, faces, normals, uvs));
            }),
-           py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none())
+           py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none(), py::arg("uvs") = py::none())
       .def_static("from_file", &meshFromFile, py::arg("path"), py::arg("up") = py::none(),
                   R"(A mesh file read as a model rendered alone reads it: stood up by up ("y" or "z"; None: the
 format's usual axis, y for glTF and OBJ, z for PLY and STL), a glTF's base colours as vertex colours,
@@ -629,7 +672,7 @@ RenderSettings' (shading, specular, interpolation, samples, background). Checked
                     "The render settings (a phongvk.RenderSettings); assigning some checks them like a scene "
                     "file's \"render\" and \"background\".")
       .def("add_mesh", &addMesh, py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none(),
-           py::arg("material") = py::none(), py::arg("closed") = false,
+           py::arg("material") = py::none(), py::arg("closed") = false, py::arg("uvs") = py::none(),
            R"(Adds a triangle mesh object; it follows the scene into its other frames (frame(i)).
 
 vertices: (N, 3) floating-point array of world positions (or rows of 3 numbers), or, with
@@ -644,6 +687,8 @@ material: None (the scene's default material: Material() in a Scene(width, heigh
     default in a scene from a file or dict), a phongvk.Material, a dict of its fields ({"ks": 0.2,
     "color": [1, 0, 0]}), or the name of one of the scene's materials; checked like a scene file's.
 closed: True if the mesh is a closed surface whose back faces may be culled.
+uvs: optional (N, 2) array of texture coordinates, (0, 0) the texture's top-left corner and
+    (1, 1) its bottom-right: what the material's texture (Material(texture=...)) is sampled with.
 
 A wrong shape or dtype, a non-finite value or an index out of range raises ValueError naming the
 argument and the first bad row; a bad material raises SceneError.)")
@@ -783,7 +828,8 @@ same buffers; the graphics backend has none (ValueError).)")
                              "The Vulkan device's name, or 'cpu (reference)'.")
       .def_property_readonly("stats", [](const Renderer& r) { return statsDict(r.stats()); },
                              "What the renderer has done: scene_builds, frames_rendered, frames_shaded, "
-                             "frames_repeated, triangles, build_ms, validation_messages; and where its "
+                             "frames_repeated, triangles, build_ms, texture_bytes (the last scene's textures), device_bytes "
+                             "(device memory the renderer's buffers hold; 0 for the reference), validation_messages; and where its "
                              "start-up went (Vulkan backends; 0 for the reference): startup_vulkan_ms "
                              "(instance and device), startup_probe_ms (the float probe; 0 when cached), "
                              "startup_pipelines_ms, first_frame_ms (the first frame on the device: on "

@@ -74,12 +74,13 @@ SurfacePoint surfaceAt(const SceneData& data, const FrameInputs& in, glm::uvec4 
 }
 
 // The texel triangle `tri` shows where its barycentrics are `bary` (texture.h): white in a scene
-// without textures and on a mesh without one.
-uint32_t pixelTexel(const SceneData& data, glm::uvec4 tri, vec2 bary, uint32_t filter) {
+// without textures and where neither its material nor its mesh has one.
+uint32_t pixelTexel(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, vec2 bary) {
   if (data.uvs.empty()) return VERTEX_WHITE;
   const VertexUv &a = data.uvs[tri.x], &b = data.uvs[tri.y], &c = data.uvs[tri.z];
-  if (a.texture == TEXTURE_NONE) return VERTEX_WHITE;
-  const TextureTaps k = textureTaps(data.textures[a.texture], interpolateUv(a.uv, b.uv, c.uv, bary), filter);
+  const uint32_t texture = textureOf(in.materials[in.objects[tri.w].material], a);
+  if (texture == TEXTURE_NONE) return VERTEX_WHITE;
+  const TextureTaps k = textureTaps(data.textures[texture], interpolateUv(a.uv, b.uv, c.uv, bary), in.frame.textureFilter);
   return blendTaps(data.texels[k.i00], data.texels[k.i10], data.texels[k.i01], data.texels[k.i11], k);
 }
 
@@ -89,7 +90,7 @@ uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vecto
                   glm::uvec4 tri, int x, int y) {
   const FrameData& frame = in.frame;
   const vec2 bary = pixelBarycentrics(frame, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y);
-  const uint32_t texel = pixelTexel(data, tri, bary, frame.textureFilter);
+  const uint32_t texel = pixelTexel(data, in, tri, bary);
   if (frame.shading == SHADING_GOURAUD) {
     const GouraudTriangle g = gouraudTriangle(shaded[tri.x], shaded[tri.y], shaded[tri.z], frame.projection);
     return packColor(texturedColor(interpolateColorAt(g, bary), texel));

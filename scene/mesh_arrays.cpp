@@ -24,6 +24,17 @@ std::string rowText(const std::vector<float>& xyz, size_t row) {
   return text.append(", ").append(formatNumber(xyz[3 * row + 2])).append("]");
 }
 
+// Texture coordinates: two a vertex, finite (a coordinate far outside [0, 1] wraps).
+void checkUvs(const std::vector<float>& uvs, size_t vertices) {
+  if (uvs.empty()) return;
+  if (uvs.size() != 2 * vertices)
+    throw ArgumentError("uvs: expected one row [u, v] per vertex (" + std::to_string(vertices) + "), got " +
+                        std::to_string(uvs.size() / 2) + (uvs.size() % 2 ? " and a half" : ""));
+  for (size_t i = 0; i < uvs.size(); ++i) {
+    if (!std::isfinite(uvs[i])) failRow("uvs", i / 2, "is not finite");
+  }
+}
+
 void checkCounts(const MeshArrays& a) {
   if (a.positions.size() % 3 != 0 || a.triangles.size() % 3 != 0 || a.normals.size() % 3 != 0) {
     throw ArgumentError("vertices, faces and normals hold 3 values a row");
@@ -73,7 +84,10 @@ Mesh meshFromArrays(const MeshArrays& a) {
   checkPositions(a.positions);
   const size_t vertices = a.positions.size() / 3;
   checkIndices(a.triangles, vertices);
+  checkUvs(a.uvs, vertices);
   Mesh mesh;
+  for (size_t v = 0; v < a.uvs.size() / 2; ++v) mesh.uvs.push_back(glm::vec2(a.uvs[2 * v], a.uvs[2 * v + 1]));
+  if (!mesh.uvs.empty()) mesh.textureIds.assign(vertices, gpu::TEXTURE_NONE);  // the material's texture
   for (size_t v = 0; v < vertices; ++v) mesh.positions.push_back(glm::vec3(rowOf(a.positions, v)));
   for (size_t v = 0; v < a.normals.size() / 3; ++v) {
     const glm::dvec3 n = rowOf(a.normals, v);
@@ -100,7 +114,7 @@ void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const sce
   object.closed = closed;
   object.arrays = std::move(mesh);
   SceneSpec changed = scene;  // the material may add an entry; nothing changes if it fails
-  scenejson::MaterialTable table(changed);
+  scenejson::MaterialTable table(changed, "");
   std::optional<scenejson::Node> node;
   if (!material.is_null()) node.emplace(material, object.jsonPath + ".material", scene.path);
   object.material = table.forObject(node);
@@ -126,6 +140,19 @@ std::vector<T> rowsOf3(const Node& node, ElementReader element) {
 
 // Positions and normals: 32-bit floats.
 std::vector<float> floatRows(const Node& node) { return rowsOf3<float>(node, floatComponent); }
+
+// Texture coordinates: rows [u, v] of 32-bit floats, flattened.
+std::vector<float> uvRows(const Node& node) {
+  requireArray(node);
+  std::vector<float> values;
+  for (size_t i = 0; i < node.json().size(); ++i) {
+    const Node row = node.element(i);
+    requireArray(row);
+    if (row.json().size() != 2) row.fail("must be [u, v], got " + std::to_string(row.json().size()) + " numbers");
+    for (size_t c = 0; c < 2; ++c) values.push_back(floatComponent(row.element(c)));
+  }
+  return values;
+}
 
 double index(const Node& node) {
   return integer(node, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
@@ -159,6 +186,7 @@ std::shared_ptr<const Mesh> readMeshArrays(const Node& object) {
   arrays.positions = floatRows(object.require("vertices"));
   arrays.triangles = indexRows(object.require("faces"));
   if (auto normals = object.find("normals")) arrays.normals = floatRows(*normals);
+  if (auto uvs = object.find("uvs")) arrays.uvs = uvRows(*uvs);
   Mesh mesh;
   try {
     mesh = meshFromArrays(arrays);

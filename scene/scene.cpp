@@ -66,7 +66,7 @@ SceneSpec readScene(const Node& root, const std::string& path, const std::string
   if (auto background = root.find("background")) scene.background = unitColor(*background);
   if (auto ambient = root.find("ambient")) scene.ambient = color(*ambient);
   if (auto lights = root.find("lights")) scene.lights = readLights(*lights);
-  MaterialTable materials(scene);
+  MaterialTable materials(scene, baseDir);
   if (auto named = root.find("materials")) materials.readNamed(*named);
   scene.objects = readObjects(root.require("objects"), baseDir, materials, objectsLater);
   if (auto render = root.find("render")) readRender(*render, scene);

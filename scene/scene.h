@@ -27,6 +27,10 @@ struct MaterialSpec {
   float n = 10.0f;                                  // shininess
   glm::vec3 attenuation = {1.0f, 0.2f, 0.2f};       // a, b, c of 1 / (a + b d + c d^2)
   glm::vec3 color = {0.8f, 0.8f, 0.8f};
+  // "texture": a PNG or JPEG that multiplies C (docs/DESIGN.md "Textures"), as an absolute path or
+  // a data URI (textureSourceOf), and the decoded image; none when empty.
+  std::string texture;
+  std::shared_ptr<const TextureImage> textureImage;
 };
 
 // The material of a model file rendered alone (model_scene.cpp) and the default one of a scene

@@ -2,11 +2,13 @@
 // colours, intensities, Phong coefficients and an attenuation that stays positive at every distance.
 #include "scene/scene_sections.h"
 
+#include "scene/scene_textures.h"
+
 namespace phongvk::scenejson {
 namespace {
 
 const Keys kLightKeys = {"position", "direction", "intensity", "color"};
-const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color"};
+const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color", "texture"};
 
 LightSpec readLight(const Node& node) {
   requireObject(node);
@@ -62,7 +64,7 @@ glm::vec3 readAttenuation(const Node& node) {
 
 }  // namespace
 
-MaterialSpec readMaterial(const Node& node) {
+MaterialSpec readMaterial(const Node& node, const std::string& baseDir) {
   requireObject(node);
   checkKeys(node, kMaterialKeys);
   MaterialSpec material;
@@ -74,6 +76,16 @@ MaterialSpec readMaterial(const Node& node) {
     material.attenuation = readAttenuation(*attenuation);
   }
   if (auto materialColor = node.find("color")) material.color = color(*materialColor);
+  if (auto texture = node.find("texture")) {
+    const std::string source = string(*texture);
+    if (source.empty()) texture->fail("must name a PNG or JPEG file or be a data URI of one, got ''");
+    try {
+      material.textureImage = sceneTexture(source, baseDir, source.rfind("data:", 0) == 0 ? "the data URI" : "'" + source + "'");
+    } catch (const SceneError& error) {
+      texture->fail(error.what());
+    }
+    material.texture = textureSourceOf(source, baseDir);
+  }
   return material;
 }
 

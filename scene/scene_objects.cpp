@@ -27,7 +27,7 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
-    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "translate", "up"}},
+    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "translate", "up"}},
 };
 
 
@@ -87,11 +87,11 @@ void resolveMeshFile(const Node& node, const std::string& baseDir, Object& objec
   object.fileTriangles = meshFileTriangles(object.file, *format.format, object.fileVersion.bytes);
 }
 
-// A mesh's "file", or its arrays inline ("vertices", "faces", and "normals", "colors" if any).
+// A mesh's "file", or its arrays inline ("vertices", "faces", and "normals", "colors", "uvs" if any).
 void readMeshSource(const Node& node, const std::string& baseDir, Object& object) {
   const std::optional<Node> file = node.find("file");
   if (!node.find("vertices")) {
-    for (std::string_view key : {"faces", "normals", "colors"}) {
+    for (std::string_view key : {"faces", "normals", "colors", "uvs"}) {
       if (node.find(key)) node.failAt(key, "needs 'vertices' (a mesh given inline)");
     }
     resolveMeshFile(node.require("file"), baseDir, object);
@@ -184,7 +184,7 @@ bool takesBaseColors(const Node& node, const Object& object) {
 int objectMaterial(const Node& node, const Object& object, MaterialTable& materials) {
   if (!object.baseColors) return materials.forObject(node.find("material"));
   const std::optional<Node> inline_ = node.find("material");
-  MaterialSpec white = inline_ ? readMaterial(*inline_) : MaterialSpec{};
+  MaterialSpec white = inline_ ? readMaterial(*inline_, materials.baseDir()) : MaterialSpec{};
   white.color = glm::vec3(1.0f);
   return materials.add(white);
 }

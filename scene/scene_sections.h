@@ -34,7 +34,8 @@ glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction);
 // ---- sections ----
 CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
 std::vector<LightSpec> readLights(const Node& node);  // scene_lighting.cpp
-MaterialSpec readMaterial(const Node& node);          // scene_lighting.cpp
+// A material object; a "texture" file is resolved against baseDir (scene_lighting.cpp).
+MaterialSpec readMaterial(const Node& node, const std::string& baseDir);
 // A mesh object's arrays given inline ("vertices", "faces", "normals", "colors"), built as
 // Scene::addMesh builds arrays (mesh_arrays.cpp), with its messages under the object's path.
 std::shared_ptr<const Mesh> readMeshArrays(const Node& object);
@@ -45,12 +46,14 @@ std::shared_ptr<const Mesh> readMeshArrays(const Node& object);
 // (arrays) resolve their materials the same way.
 class MaterialTable {
  public:
-  explicit MaterialTable(SceneSpec& scene) : scene_(scene) {}
+  // `baseDir`: where the scene's texture files are (its file's folder; "" for the working directory).
+  MaterialTable(SceneSpec& scene, std::string baseDir) : scene_(scene), baseDir_(std::move(baseDir)) {}
+  const std::string& baseDir() const { return baseDir_; }
 
   void readNamed(const Node& node) {
     requireObject(node);
     for (const auto& [name, value] : node.json().items()) {
-      scene_.materials.push_back(readMaterial(node.child(name)));
+      scene_.materials.push_back(readMaterial(node.child(name), baseDir_));
       scene_.materialNames.push_back(name);
     }
   }
@@ -68,7 +71,7 @@ class MaterialTable {
       node->fail(std::string("must be a material name or a material object, got ") +
                  node->json().type_name());
     }
-    return add(readMaterial(*node));
+    return add(readMaterial(*node, baseDir_));
   }
 
  private:
@@ -95,6 +98,7 @@ class MaterialTable {
   }
 
   SceneSpec& scene_;
+  std::string baseDir_;
 };
 
 // The whole scene file without its "animate" block (scene.cpp). `root` names the file (or the frame

@@ -76,6 +76,7 @@ Json materialJson(const MaterialSpec& m, bool withColor = true) {
                {"n", double(m.n)},
                {"attenuation", vec3Json(m.attenuation)}};
   if (withColor) json["color"] = vec3Json(m.color);
+  if (!m.texture.empty()) json["texture"] = m.texture;
   return json;
 }
 
@@ -115,6 +116,9 @@ void writeArrays(const Mesh& mesh, Json& json) {
   json["faces"] = std::move(faces);
   json["normals"] = std::move(normals);
   if (!mesh.colors.empty()) json["colors"] = std::move(colors);
+  Json uvs = Json::array();
+  for (const glm::vec2& uv : mesh.uvs) uvs.push_back(Json::array({double(uv.x), double(uv.y)}));
+  if (!mesh.uvs.empty()) json["uvs"] = std::move(uvs);
 }
 
 // The keys of the object's shape (scene_objects.cpp kShapes), each with its value.

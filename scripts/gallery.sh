@@ -82,5 +82,16 @@ sheet fig6_orbit_red 0:120:10
 sheet fig7_orbit_white_red 0:120:10
 modes modes
 modes samples
+# model NAME FILE [OPTIONS...]: a still of a model file or scene at 360x240, with 4 samples per pixel
+# (textures seen from far away need them: there are no mipmaps).
+model() {
+  local name="$1" file="$2"
+  shift 2
+  timed "$out/textured_$name.png" "$file" \
+    "$phongvk" render "$file" -o "$out/textured_$name.png" --width 360 --height 240 --samples 4 --backend "$backend" --png-level 12 "$@"
+}
+model scene scenes/textured.json
+model box /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb
+model spider /usr/share/assimp/models/OBJ/spider.obj
 total_ms=$(( $(now_ms) - total_start ))
 echo "total: $((total_ms / 1000)).$(printf '%03d' $((total_ms % 1000))) s, $(du -ch "$out"/*.png | tail -1 | cut -f1) of PNG in $out"

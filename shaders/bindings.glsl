@@ -110,7 +110,7 @@ MaterialData materialData(uint i) {
   vec4 a = floats(texelFetch(materialTexels, int(3u * i)));
   vec4 b = floats(texelFetch(materialTexels, int(3u * i + 1u)));
   vec4 c = floats(texelFetch(materialTexels, int(3u * i + 2u)));
-  return MaterialData(a.xyz, a.w, b.xyz, b.w, c.x, c.y, c.z, c.w);
+  return MaterialData(a.xyz, a.w, b.xyz, b.w, c.x, c.y, floatBitsToUint(c.z), c.w);
 }
 
 LightData lightData(uint i) {

@@ -20,11 +20,13 @@ layout(constant_id = SPEC_SPECULAR) const bool SPECULAR = true;
 layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION = false;
 layout(constant_id = SPEC_BLINN) const bool BLINN = false;
 
-// The texel triangle `tri` shows where its barycentrics are `bary`: white on a mesh without a texture.
-uint pixelTexel(uvec4 tri, vec2 bary) {
+// The texel triangle `tri` (material m) shows where its barycentrics are `bary`: white where
+// neither the material nor the mesh has a texture.
+uint pixelTexel(uvec4 tri, MaterialData m, vec2 bary) {
   VertexUv a = vertexUv(tri.x), b = vertexUv(tri.y), c = vertexUv(tri.z);
-  if (a.texture == TEXTURE_NONE) return VERTEX_WHITE;
-  TextureTaps k = textureTaps(textureData(a.texture), interpolateUv(a.uv, b.uv, c.uv, bary), frame.textureFilter);
+  uint texture = textureOf(m, a);
+  if (texture == TEXTURE_NONE) return VERTEX_WHITE;
+  TextureTaps k = textureTaps(textureData(texture), interpolateUv(a.uv, b.uv, c.uv, bary), frame.textureFilter);
   return blendTaps(poolTexel(k.i00), poolTexel(k.i10), poolTexel(k.i01), poolTexel(k.i11), k);
 }
 
@@ -32,16 +34,16 @@ uint pixelTexel(uvec4 tri, vec2 bary) {
 // texel; packed.
 uint pixelColor(uint id, int x, int y) {
   uvec4 tri = texelFetch(triangleTexels, int(id));
+  ObjectData object = objectData(tri.w);
+  MaterialData m = materialData(object.material);
   GouraudTriangle g;
   vec2 bary = vec2(0.0f);
   if (TEXTURED || SHADING != SHADING_FLAT) {
     g = loadGouraud(id);
     bary = barycentrics(g, pixelRay(x, y, frame.principal), INTERPOLATION);
   }
-  uint texel = TEXTURED ? pixelTexel(tri, bary) : VERTEX_WHITE;
+  uint texel = TEXTURED ? pixelTexel(tri, m, bary) : VERTEX_WHITE;
   if (SHADING == SHADING_GOURAUD) return packColor(texturedColor(interpolateColorAt(g, bary), texel));
-  ObjectData object = objectData(tri.w);
-  MaterialData m = materialData(object.material);
   VertexIn a = vertexIn(tri.x), b = vertexIn(tri.y), c = vertexIn(tri.z);
   SurfacePoint s;
   if (SHADING == SHADING_FLAT) {

@@ -157,7 +157,7 @@ struct MaterialData {
   float kd;
   float ks;
   float n;
-  float pad0;
+  uint texture;      // TEXTURE_NONE, or the texture that multiplies C (over the mesh's own)
   float pad1;
 };
 
@@ -227,6 +227,7 @@ static_assert(sizeof(VertexIn) == 32 && offsetof(VertexIn, normal) == 16);
 static_assert(sizeof(ShadedVertex) == 32);
 static_assert(sizeof(ObjectData) == 32 && offsetof(ObjectData, lightOffset) == 16);
 static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && offsetof(MaterialData, ks) == 32);
+static_assert(offsetof(MaterialData, texture) == 40);
 static_assert(sizeof(VertexUv) == 16 && sizeof(TextureData) == 16);
 static_assert(sizeof(LightData) == 32 && offsetof(LightData, color) == 16);
 static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focalX) == 60);

@@ -95,6 +95,10 @@ FN uint blendTaps(uint c00, uint c10, uint c01, uint c11, TextureTaps taps) {
          blendChannel(c00, c10, c01, c11, taps.fx, taps.fy, 16u) | (255u << 24u);
 }
 
+// The texture a pixel of a triangle samples: its material's when it has one, else its mesh's (the
+// same at the triangle's three vertices; TEXTURE_NONE for none).
+FN uint textureOf(MaterialData m, VertexUv a) { return m.texture != TEXTURE_NONE ? m.texture : a.texture; }
+
 // A colour (Gouraud's interpolated one, or the material's C before lighting) times a texel's.
 FN vec3 texturedColor(vec3 color, uint texel) {
   PRECISE vec3 c = color * unitColor(texel);

@@ -109,7 +109,7 @@ TEST(BadInputTypes, UnknownKeysInRenderAndInlineMaterials) {
   EXPECT_EQ(errorFor(sceneWith(R"("render": {"mode": "screen"})")),
             "a.json: render.mode: unknown key (allowed: interpolation, shading, specular, samples, texture_filter)");
   EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "sphere"}, {"shape": "cube", "material": {"shine": 1}}])")),
-            "a.json: objects[1].material.shine: unknown key (allowed: ka, kd, ks, n, attenuation, color)");
+            "a.json: objects[1].material.shine: unknown key (allowed: ka, kd, ks, n, attenuation, color, texture)");
 }
 
 // ---- numbers: out of range, overflowing, too large for the renderers ----

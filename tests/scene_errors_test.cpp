@@ -103,7 +103,7 @@ TEST(SceneErrors, UnknownKeyNested) {
             "aspect, resolution, width, height, near, far, fit, fx, fy, cx, cy, projection, ortho_height)");
   EXPECT_EQ(
       materialError(R"({"shininess": 3})"),
-      "a.json: materials.m.shininess: unknown key (allowed: ka, kd, ks, n, attenuation, color)");
+      "a.json: materials.m.shininess: unknown key (allowed: ka, kd, ks, n, attenuation, color, texture)");
   EXPECT_EQ(errorFor([](ordered_json& s) {
               s["lights"] = {{{"position", {0, 0, 0}}, {"power", 1}}};
             }),

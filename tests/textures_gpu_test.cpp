@@ -116,6 +116,22 @@ TEST(Textures, TexturedFilesRenderTheReferenceBytesInEveryModeFilterAndSampleCou
   }
 }
 
+TEST(Textures, EveryTexturedSampleModelRendersTheReferenceBytes) {
+  // Debian's assimp-testmodels: every glTF 2.0 file with a base-colour texture that phongvk reads
+  // (the others require an extension, or are broken on purpose: below), and its OBJs with map_Kd.
+  for (const char* model : {"glTF2/BoxTextured-glTF/BoxTextured.gltf", "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf",
+                            "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb",
+                            "glTF2/BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf",
+                            "glTF2/BoxTexcoords-glTF/boxTexcoords.gltf", "glTF2/textureTransform/TextureTransformTest.gltf",
+                            "glTF2/ClearCoat-glTF/ClearCoatTest.gltf", "OBJ/spider.obj"}) {
+    const Image image = renderBoth(loadScene(kModels + model).withImageSize(240, 180), model);
+    EXPECT_GT(distinctColours(image), 100u) << model;
+  }
+  // A material whose texture reads TEXCOORD_0 on a primitive without it (assimp's crash case).
+  EXPECT_EQ(thrownMessage<SceneError>([&] { Renderer(Backend::Cpu).render(loadScene(kModels + "glTF2/issue_3269/texcoord_crash.gltf")); }),
+            kModels + "glTF2/issue_3269/texcoord_crash.gltf: materials[4]'s base colour texture reads TEXCOORD_0, which a primitive lacks");
+}
+
 TEST(Textures, BoxTexturedReadsItsTextureEmbeddedInADataUriInAGlbOrBesideTheFile) {
   const Image glb = renderBoth(loadScene(kModels + "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"), "glb");
   const Image embedded = renderBoth(loadScene(kModels + "glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf"), "data URI");
@@ -223,6 +239,36 @@ TEST(Textures, APlyTextureFileCommentTexturesItsUvCoordinates) {
   std::filesystem::copy_file(sourcePath("scenes/meshes/checker.png"), dir + "/checker.png");
   const Image textured = renderBoth(loadScene(dir + "/cube.ply"), "cube_uv.ply with a TextureFile");
   EXPECT_GT(distinctColours(textured), 4 * distinctColours(renderBoth(plain, "cube_uv.ply")));
+}
+
+TEST(Textures, TheSceneApiTakesATextureOnAMaterialAndUvsOnAMesh) {
+  Scene scene(96, 72);
+  scene.setAmbient({0.6, 0.6, 0.6});
+  MeshArrays square;
+  square.positions = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+  square.triangles = {0, 1, 2, 0, 2, 3};
+  square.uvs = {0, 2, 2, 2, 2, 0, 0, 0};  // the texture twice across and down
+  Material material;
+  material.texture = sourcePath("scenes/meshes/checker.png");
+  scene.add(square, IDENTITY_POSE, material);
+  const Image image = renderBoth(scene, "a material's texture on arrays with uvs");
+  EXPECT_GT(distinctColours(image), 50u);
+  // Written back and read again: the same bytes.
+  EXPECT_TRUE(renderBoth(parseScene(scene.toJson(), "again.json", "/"), "written back").rgb == image.rgb);
+  // A material's texture needs coordinates; a missing file is named with the material's path.
+  Scene bare(96, 72);
+  square.uvs.clear();
+  bare.add(square, IDENTITY_POSE, material);
+  EXPECT_EQ(thrownMessage<SceneError>([&] { Renderer(Backend::Cpu).render(bare); }),
+            "objects[0].material.texture: the object's mesh has no texture coordinates to sample it with");
+  material.texture = "/nonexistent/wood.png";
+  EXPECT_EQ(thrownMessage<SceneError>([&] { bare.add(square, IDENTITY_POSE, material); }),
+            "objects[1].material.texture: '/nonexistent/wood.png': cannot open '/nonexistent/wood.png': No such file or directory");
+  EXPECT_NE(thrownMessage<SceneError>([&] {
+              parseScene(R"({"camera": {"position": [0, -3, 0], "look_at": [0, 0, 0]}, "materials": {"m": {"texture": "data:image/gif;base64,R0lG"}},
+                            "objects": [{"shape": "sphere", "material": "m"}]})", "a.json", "/");
+            }).find("a.json: materials.m.texture: the data URI: a data URI of a texture starts data:image/png;base64,"),
+            std::string::npos);
 }
 
 TEST(Textures, AGltfImageFileThatIsMissingIsNamed) {

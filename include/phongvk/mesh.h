@@ -21,6 +21,9 @@ struct MeshArrays {
   std::vector<float> positions;
   std::vector<int64_t> triangles;
   std::vector<float> normals;
+  // Texture coordinates u0 v0 u1 v1 ... (2N finite floats; (0, 0) the texture's top-left corner,
+  // docs/DESIGN.md "Textures"), or none: what a material's texture is sampled with ("uvs").
+  std::vector<float> uvs;
 };
 
 // How a model file loaded alone (no scene file: loadScene("model.ply"), TriangleMesh::fromFile) is

@@ -205,6 +205,8 @@ struct RendererStats {
   uint64_t framesRepeated = 0;   // frames rendered again with larger lists or more workgroups (gpu)
   size_t triangles = 0;          // of the last scene rendered
   double buildMs = 0;            // time spent building meshes, in all (uploads not included)
+  uint64_t textureBytes = 0;     // the last scene's textures: texels, coordinates, table (docs/DESIGN.md "Textures")
+  uint64_t deviceBytes = 0;      // device memory the renderer's buffers hold now (Vulkan backends; 0 for the reference)
   uint64_t validationMessages = 0;  // Vulkan validation warnings and errors (RendererOptions::validate)
   // Start-up of the Vulkan backends (0 for the reference): the instance and device, the float
   // probe (0 when its answer came from the disk cache), and compiling pipelines so far (first

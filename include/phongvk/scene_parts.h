@@ -100,6 +100,10 @@ struct Material {
   double n = 10;
   Vec3 attenuation = {1, 0, 0};
   Vec3 color = {0.8, 0.8, 0.8};
+  // A base-colour texture that multiplies `color` where the object's mesh has texture coordinates
+  // (docs/DESIGN.md "Textures"): a PNG or JPEG file, or a data URI of one
+  // ("data:image/png;base64,..."); empty for none.
+  std::string texture;
   bool operator==(const Material&) const = default;
 };
 
@@ -125,7 +129,7 @@ struct RenderSettings {
   bool operator==(const RenderSettings&) const = default;
 };
 
-// The scene file's names of the choices ("gouraud", "blinn", "screen"), and the choice a name
+// The scene file's names of the choices ("gouraud", "blinn", "screen", "nearest"), and the choice a name
 // stands for: SceneError as a scene file's ("render.shading: must be one of gouraud, flat, phong,
 // got 'smooth'") for any other name.
 PHONGVK_API const char* shadingName(Shading shading);
@@ -134,6 +138,8 @@ PHONGVK_API const char* interpolationName(Interpolation interpolation);
 PHONGVK_API Shading parseShading(const std::string& name);
 PHONGVK_API Specular parseSpecular(const std::string& name);
 PHONGVK_API Interpolation parseInterpolation(const std::string& name);
+PHONGVK_API const char* textureFilterName(TextureFilter filter);
+PHONGVK_API TextureFilter parseTextureFilter(const std::string& name);
 
 // An object added in code: its handle for setPose and remove (Scene::add).
 struct ObjectId {

@@ -413,7 +413,7 @@ def test_a_bad_material_fails_with_the_files_message(tmp_path, fields):
     (lambda s: s.add(*octahedron(), material=phongvk.Material(ka=math.nan)), ValueError,
      r"material.ka: must be finite, got nan"),
     (lambda s: s.add(*octahedron(), material={"shine": 3}), phongvk.SceneError,
-     r"material: unknown key 'shine' \(allowed: attenuation, color, ka, kd, ks, n\)"),
+     r"material: unknown key 'shine' \(allowed: attenuation, color, ka, kd, ks, n, texture\)"),
     (lambda s: s.add(*octahedron(), material="gold"), phongvk.SceneError,
      r"objects\[0\].material: unknown material 'gold'"),
     (lambda s: s.add(*octahedron(), material=3), TypeError, r"material: expected a phongvk.Material"),
@@ -427,7 +427,7 @@ def test_a_bad_material_fails_with_the_files_message(tmp_path, fields):
      r"render.specular: must be one of phong, blinn, got 'cook'"),
     (lambda s: s.with_render(shading="smooth"), phongvk.SceneError, r"render.shading: must be one of"),
     (lambda s: s.with_render(gamma=2.2), phongvk.SceneError,
-     r"render: unknown key 'gamma' \(allowed: background, interpolation, samples, shading, specular\)"),
+     r"render: unknown key 'gamma' \(allowed: background, interpolation, samples, shading, specular, texture_filter\)"),
     (lambda s: s.with_render("phong"), TypeError, r"settings: expected a phongvk.RenderSettings"),
 ])
 def test_bad_materials_and_settings_are_clear_errors(call, error, message):
@@ -442,7 +442,7 @@ def test_materials_and_settings_say_what_they_are():
                                               "attenuation=(1.0, 0.0, 0.0), color=(0.8, 0.8, 0.8))")
     assert repr(phongvk.RenderSettings(shading="phong", samples=4)) == (
         "phongvk.RenderSettings(shading='phong', specular='phong', interpolation='perspective', samples=4, "
-        "background=(0.0, 0.0, 0.0))")
+        "background=(0.0, 0.0, 0.0), texture_filter='bilinear')")
     assert "shininess" in phongvk.Material.__doc__ and "samples" in phongvk.RenderSettings.__doc__
     assert "width x height" in phongvk.Scene.__init__.__doc__
     assert phongvk.Material(ks=0.2) != phongvk.Material()
@@ -471,7 +471,7 @@ def test_a_mesh_built_once_is_placed_many_times():
     built.camera = written.camera
     built.add(phongvk.Mesh.from_file(torus, up="z"))
     assert np.array_equal(cpu.render(built), cpu.render(written))
-    with pytest.raises(TypeError, match=r"faces and normals: not given with a phongvk.Mesh"):
+    with pytest.raises(TypeError, match=r"faces, normals and uvs: not given with a phongvk.Mesh"):
         built.add(mesh, faces)
     with pytest.raises(phongvk.ArgumentError, match=r"path: expected a mesh file"):
         phongvk.Mesh.from_file(scene_path("scenes/basic.json"))
