@@ -59,11 +59,13 @@ bool readRegularFile(std::vector<unsigned char>* out, std::string* error, const 
   return true;
 }
 
-// An embedded image (a GLB's buffer view, a data URI) kept encoded: only the base-colour textures
-// a primitive uses are decoded (Reader::texture), and an image file beside the glTF is read then.
+// A data URI's image kept encoded: only the base-colour textures a primitive uses are decoded
+// (Reader::texture). An image in a buffer view is read from the buffer then, with its range checked
+// (tinygltf passes a buffer view's bytes unchecked: a view past its buffer's end would be read out
+// of bounds), and an image file beside the glTF is read then too.
 bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes,
                  int size, void*) {
-  image->image.assign(bytes, bytes + size);
+  if (image->bufferView < 0) image->image.assign(bytes, bytes + size);
   return true;
 }
 
@@ -361,10 +363,22 @@ class Reader {
     return decoded;
   }
 
-  // Image `index`: embedded (kept encoded by keepEncoded), or a file beside the glTF.
+  // The bytes of buffer view `index`, checked against its buffer.
+  std::string bufferViewBytes(int index, const std::string& what) const {
+    if (size_t(index) >= model_.bufferViews.size()) throw SceneError(what + ": its buffer view does not exist");
+    const tinygltf::BufferView& view = model_.bufferViews[size_t(index)];
+    if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size()) throw SceneError(what + ": its buffer does not exist");
+    const std::vector<unsigned char>& buffer = model_.buffers[size_t(view.buffer)].data;
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
+      throw SceneError(what + ": its buffer view runs past the end of its buffer");
+    return std::string(buffer.begin() + std::ptrdiff_t(view.byteOffset), buffer.begin() + std::ptrdiff_t(view.byteOffset + view.byteLength));
+  }
+
+  // Image `index`: in a buffer view, a data URI (kept encoded by keepEncoded), or a file beside the glTF.
   TextureImage decodedImage(int index) const {
     const tinygltf::Image& image = model_.images[size_t(index)];
     const std::string what = where_ + ": " + path_ + ": images[" + std::to_string(index) + "]";
+    if (image.bufferView >= 0) return decodeTexture(bufferViewBytes(image.bufferView, what), what);
     if (!image.image.empty()) return decodeTexture(std::string(image.image.begin(), image.image.end()), what);
     if (image.uri.empty()) throw SceneError(what + ": no image data");
     const std::string file = texturePathBeside(percentDecoded(image.uri), path_);

@@ -162,3 +162,104 @@ def test_a_texture_file_on_a_material_and_its_errors(tmp_path):
     bare.add_mesh(vertices, faces, material=material)  # no uvs
     with pytest.raises(phongvk.SceneError, match=r"objects\[0\].material.texture: the object's mesh has no texture coordinates"):
         phongvk.Renderer("cpu").render(bare)
+
+
+def test_box_textured_shows_its_logo_where_a_numpy_ray_cast_of_its_uvs_says(tmp_path):
+    """The Khronos BoxTextured (Debian's assimp-testmodels, the glTF with its buffer and PNG in data
+    URIs), lit by the ambient term alone so a pixel is its texel (nearest): at every 3rd pixel a ray
+    cast in numpy against the file's own triangles, uvs and image gives the texel to expect."""
+    import base64
+    path = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf"
+    gltf = json.loads(pathlib.Path(path).read_text())
+    data = lambda uri: base64.b64decode(uri.split(",", 1)[1])
+    buffer = data(gltf["buffers"][0]["uri"])
+
+    def accessor(i, dtype, width):
+        a = gltf["accessors"][i]
+        view = gltf["bufferViews"][a["bufferView"]]
+        start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+        stride = view.get("byteStride", np.dtype(dtype).itemsize * width)
+        rows = [np.frombuffer(buffer, dtype, width, start + k * stride) for k in range(a["count"])]
+        return np.array(rows, dtype=np.float64)
+
+    primitive = gltf["meshes"][0]["primitives"][0]
+    faces = accessor(primitive["indices"], np.uint16, 1).astype(int).reshape(-1, 3)
+    local = accessor(primitive["attributes"]["POSITION"], np.float32, 3)
+    uvs = accessor(primitive["attributes"]["TEXCOORD_0"], np.float32, 2)
+    node = np.array(gltf["nodes"][0]["matrix"]).reshape(4, 4).T  # column-major in the file
+    world = local @ node[:3, :3].T + node[:3, 3]
+    (tmp_path / "logo.png").write_bytes(data(gltf["images"][0]["uri"]))
+    logo = phongvk.read_png(str(tmp_path / "logo.png"))
+    th, tw = logo.shape[:2]
+
+    eye, centre, fov, w, h = np.array([1.3, -1.7, 1.1]), np.zeros(3), 50.0, 240, 180
+    scene = phongvk.scene_from_dict({
+        "camera": {"position": eye.tolist(), "look_at": centre.tolist(), "fov": fov, "width": w, "height": h},
+        "ambient": [1, 1, 1], "lights": [],
+        "materials": {"m": {"ka": 1, "kd": 0, "ks": 0, "color": [1, 1, 1]}},
+        "objects": [{"shape": "mesh", "file": path, "material": "m"}],
+        "render": {"texture_filter": "nearest"}})
+    image = phongvk.Renderer("gpu").render(scene)
+    assert np.array_equal(image, phongvk.Renderer("cpu").render(scene))
+
+    forward = (centre - eye) / np.linalg.norm(centre - eye)
+    right = np.cross(forward, [0, 0, 1])
+    right /= np.linalg.norm(right)
+    up = np.cross(right, forward)
+    focal = h / (2 * np.tan(np.radians(fov) / 2))
+    checked = matched = 0
+    for y in range(1, h, 3):
+        for x in range(1, w, 3):
+            d = forward + (x + 0.5 - w / 2) / focal * right - (y + 0.5 - h / 2) / focal * up
+            best = None
+            for f in faces:  # Möller–Trumbore: the nearest hit, its barycentrics
+                p0, p1, p2 = world[f]
+                e1, e2 = p1 - p0, p2 - p0
+                q = np.cross(d, e2)
+                det = e1 @ q
+                if abs(det) < 1e-12:
+                    continue
+                s = eye - p0
+                b1 = (s @ q) / det
+                r = np.cross(s, e1)
+                b2 = (d @ r) / det
+                t = (e2 @ r) / det
+                if b1 >= 0 and b2 >= 0 and b1 + b2 <= 1 and t > 0 and (best is None or t < best[0]):
+                    best = (t, f, b1, b2)
+            if best is None:
+                continue
+            t, f, b1, b2 = best
+            if min(b1, b2, 1 - b1 - b2) < 0.02:
+                continue  # near an edge: the raster's snapping may pick the neighbour
+            u, v = uvs[f[0]] + b1 * (uvs[f[1]] - uvs[f[0]]) + b2 * (uvs[f[2]] - uvs[f[0]])
+            tx, ty = (u % 1.0) * tw, (v % 1.0) * th
+            if min(tx % 1, 1 - tx % 1, ty % 1, 1 - ty % 1) < 0.1:
+                continue  # near a texel boundary: float rounding may take either texel
+            checked += 1
+            matched += np.array_equal(image[y, x], logo[int(ty) % th, int(tx) % tw])
+    assert checked > 300, checked
+    assert matched >= 0.98 * checked, (matched, checked)
+
+
+def test_a_texture_of_the_largest_size_samples_to_its_last_texel(tmp_path):
+    """16384 x 16384 texels (1 GiB decoded): the square shows its last 32 x 32 texels, nearest, so
+    the bottom-right pixel samples the very last texel (index 2^28 - 1 in the pool)."""
+    side = 16384
+    texture = np.full((side, side, 3), (30, 0, 0), np.uint8)
+    texture[-1, -1] = (0, 255, 0)
+    phongvk.write_png(str(tmp_path / "big.png"), texture, level=1)
+    del texture
+    scene = phongvk.Scene(32, 32)
+    scene.camera = phongvk.Camera(position=[0, -5, 0], look_at=[0, 0, 0], ortho_height=2, width=32, height=32)
+    scene.ambient = [1, 1, 1]
+    vertices, faces, _ = square_arrays()
+    low = 1 - 32 / side  # u and v from here to 1 across the square: one texel a pixel
+    uvs = np.array([[low, 1], [1, 1], [1, low], [low, low]])
+    material = phongvk.Material(ka=1, kd=0, ks=0, color=[1, 1, 1], texture=str(tmp_path / "big.png"))
+    scene.add_mesh(vertices, faces, uvs=uvs, material=material)
+    scene = scene.with_render(texture_filter="nearest")
+    gpu = phongvk.Renderer("gpu")
+    image = gpu.render(scene)
+    assert np.array_equal(image, phongvk.Renderer("cpu").render(scene))
+    assert (image[-1, -1] == [0, 255, 0]).all() and (image[-2, -2] == [30, 0, 0]).all() and (image[0, 0] == [30, 0, 0]).all()
+    assert gpu.stats["texture_bytes"] >= side * side * 4
