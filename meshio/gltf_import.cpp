@@ -338,12 +338,7 @@ class Reader {
 
  public:
   // The notice for the maps the file's primitives use that are not rendered (Mesh::notice).
-  std::string notice() const {
-    if (ignoredMaps_.empty()) return "";
-    std::string names;
-    for (size_t i = 0; i < ignoredMaps_.size(); ++i) names += (i == 0 ? "" : i + 1 == ignoredMaps_.size() ? " and " : ", ") + ignoredMaps_[i];
-    return path_ + ": its " + names + " maps are not rendered (phongvk samples base-colour textures only)";
-  }
+  std::string notice() const { return ignoredMapsNotice(path_, ignoredMaps_); }
 
  private:
   // Texture `index` (its image decoded, its sampler's wrap modes), decoded once per file.

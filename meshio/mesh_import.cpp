@@ -103,6 +103,13 @@ void appendTexturing(Mesh& mesh, MeshPart& part) {
 
 }  // namespace
 
+std::string ignoredMapsNotice(const std::string& path, const std::vector<std::string>& maps) {
+  if (maps.empty()) return "";
+  std::string names;
+  for (size_t i = 0; i < maps.size(); ++i) names += (i == 0 ? "" : i + 1 == maps.size() ? " and " : ", ") + maps[i];
+  return path + ": its " + names + " maps are not rendered (phongvk samples base-colour textures only)";
+}
+
 std::string texturePathBeside(const std::string& name, const std::string& modelPath) {
   std::string file = name;
   std::replace(file.begin(), file.end(), '\\', '/');

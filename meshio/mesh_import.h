@@ -34,6 +34,10 @@ struct MeshPart {
 // as '/'.
 std::string texturePathBeside(const std::string& name, const std::string& modelPath);
 
+// Mesh::notice for a model whose materials have maps phongvk does not render ("normal",
+// "map_Ks", ...): "<path>: its normal and emissive maps are not rendered (...)"; "" for none.
+std::string ignoredMapsNotice(const std::string& path, const std::vector<std::string>& maps);
+
 // The parts as one loaded mesh: normals where every part has them (otherwise none, and with
 // `flatWithoutNormals` each triangle gets vertices of its own, so that the computed normals are
 // the face normals: STL's facets, glTF's rule for primitives without normals), colours where any

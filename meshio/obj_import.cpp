@@ -39,6 +39,7 @@ struct ObjData {
   std::vector<uint32_t> faceSizes;        // corners per face, in file order
   std::vector<int> faceMaterials;         // each face's material (usemtl), -1 for none
   std::vector<std::string> diffuseMaps;   // each material's map_Kd, as its library names it
+  std::vector<std::string> ignoredMaps;   // the other maps the materials name (map_Ks, bump, ...), once each
 };
 
 [[noreturn]] void fail(const std::string& where, const std::string& path, const std::string& why) {
@@ -228,6 +229,18 @@ void checkIndices(const ObjData& data, std::string_view text, const std::string&
   }
 }
 
+// The maps of material m other than map_Kd, by their keywords, added to `names` once each.
+void noteIgnoredMaps(const tinyobj::material_t& m, std::vector<std::string>& names) {
+  const std::pair<const std::string*, const char*> maps[] = {
+      {&m.ambient_texname, "map_Ka"},  {&m.specular_texname, "map_Ks"},  {&m.specular_highlight_texname, "map_Ns"},
+      {&m.bump_texname, "bump"},       {&m.displacement_texname, "disp"}, {&m.alpha_texname, "map_d"},
+      {&m.reflection_texname, "refl"}, {&m.roughness_texname, "map_Pr"}, {&m.metallic_texname, "map_Pm"},
+      {&m.sheen_texname, "map_Ps"},    {&m.emissive_texname, "map_Ke"},  {&m.normal_texname, "norm"}};
+  for (const auto& [texture, name] : maps) {
+    if (!texture->empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+}
+
 ObjData parse(const std::string& path, const std::string& where) {
   const MappedFile file(path, where);
   const std::vector<uint32_t> faceSizes = checkLines(file.bytes(), path, where);
@@ -244,7 +257,10 @@ ObjData parse(const std::string& path, const std::string& where) {
   if (warning.find("invalid vertex index") != std::string::npos)
     failAtBadIndex(file.bytes(), attrib.vertices.size() / 3, attrib.normals.size() / 3, path, where);
   ObjData data{attrib.vertices, attrib.normals, attrib.texcoords, {}, faceSizes, {}, {}};
-  for (const tinyobj::material_t& m : materials) data.diffuseMaps.push_back(m.diffuse_texname);
+  for (const tinyobj::material_t& m : materials) {
+    data.diffuseMaps.push_back(m.diffuse_texname);
+    noteIgnoredMaps(m, data.ignoredMaps);
+  }
   size_t faces = 0;
   for (const tinyobj::shape_t& shape : shapes) {
     data.corners.insert(data.corners.end(), shape.mesh.indices.begin(), shape.mesh.indices.end());
@@ -384,7 +400,9 @@ Mesh importObj(const std::string& path, const std::string& where) {
   ObjData data = parse(path, where);
   checkPositions(data, path, where);
   checkTexcoordIndices(data, path, where);
-  return buildMesh(data, hasFileNormals(data), path, where);
+  Mesh mesh = buildMesh(data, hasFileNormals(data), path, where);
+  mesh.notice = ignoredMapsNotice(path, data.ignoredMaps);
+  return mesh;
 }
 
 }  // namespace phongvk

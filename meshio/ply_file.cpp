@@ -340,7 +340,10 @@ class Reader {
     std::vector<MeshPart> parts(1);
     parts[0] = std::move(part_);
     if (!usableNormals_) parts[0].normals.clear();
-    return joinParts(parts, false, where_ + ": " + path_);
+    Mesh mesh = joinParts(parts, false, where_ + ": " + path_);
+    if (faceTexcoords_)
+      mesh.notice = path_ + ": its per-face texture coordinates (texcoord lists) are not read (phongvk reads u and v per vertex)";
+    return mesh;
   }
 
  private:
@@ -399,6 +402,7 @@ class Reader {
     for (uint64_t f = 0; f < element.count; ++f) {
       cursor.beginRow(element, f);
       for (const Property& p : element.properties) {
+        faceTexcoords_ = faceTexcoords_ || p.name == "texcoord";
         if (p.countType == Type::None || (p.name != "vertex_indices" && p.name != "vertex_index")) {
           readProperty(p, cursor);
           continue;
@@ -445,6 +449,7 @@ class Reader {
   MeshPart part_;
   std::vector<uint32_t> corners_;  // the face being read
   bool usableNormals_ = true;
+  bool faceTexcoords_ = false;  // MeshLab's per-face "texcoord" lists, which are not read
 };
 
 }  // namespace

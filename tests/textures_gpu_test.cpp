@@ -239,6 +239,14 @@ TEST(Textures, APlyTextureFileCommentTexturesItsUvCoordinates) {
   std::filesystem::copy_file(sourcePath("scenes/meshes/checker.png"), dir + "/checker.png");
   const Image textured = renderBoth(loadScene(dir + "/cube.ply"), "cube_uv.ply with a TextureFile");
   EXPECT_GT(distinctColours(textured), 4 * distinctColours(renderBoth(plain, "cube_uv.ply")));
+  // MeshLab's per-face coordinates are not read, and the notice says so.
+  writeFile(dir + "/faces.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                                "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\n"
+                                "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 6 0 0 1 0 0 1\n");
+  Renderer renderer(Backend::Cpu);
+  renderer.render(loadScene(dir + "/faces.ply"));
+  EXPECT_EQ(renderer.stats().notice, dir + "/faces.ply: its per-face texture coordinates (texcoord lists) are not read "
+                                           "(phongvk reads u and v per vertex)");
 }
 
 TEST(Textures, TheSceneApiTakesATextureOnAMaterialAndUvsOnAMesh) {
@@ -269,6 +277,19 @@ TEST(Textures, TheSceneApiTakesATextureOnAMaterialAndUvsOnAMesh) {
                             "objects": [{"shape": "sphere", "material": "m"}]})", "a.json", "/");
             }).find("a.json: materials.m.texture: the data URI: a data URI of a texture starts data:image/png;base64,"),
             std::string::npos);
+}
+
+TEST(Textures, MapsThatAreNotRenderedAreNamedInTheNotice) {
+  const std::string dir = makeTempDir();
+  const std::string scene = sceneWithObj(dir, "mtllib textured_cube.mtl\nusemtl checker\nv 0 0 0\nv 1 0 0\nv 0 0 1\n"
+                                              "vt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n");
+  writeFile(dir + "/textured_cube.mtl", "newmtl checker\nmap_Kd checker.png\nmap_Ks shiny.png\nbump -bm 2 bumps.png\nmap_Bump bumps.png\n");
+  Renderer renderer(Backend::Cpu);
+  renderer.render(loadScene(scene));
+  EXPECT_EQ(renderer.stats().notice,
+            dir + "/model.obj: its map_Ks and bump maps are not rendered (phongvk samples base-colour textures only)");
+  renderer.render(loadScene(sourcePath("scenes/textured.json")));
+  EXPECT_EQ(renderer.stats().notice, "");
 }
 
 TEST(Textures, AGltfImageFileThatIsMissingIsNamed) {
