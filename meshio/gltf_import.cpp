@@ -21,7 +21,6 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
-#include <cctype>
 #include <cmath>
 #include <map>
 #include <cstring>
@@ -67,20 +66,6 @@ bool keepEncoded(tinygltf::Image* image, const int, std::string*, std::string*, 
                  int size, void*) {
   if (image->bufferView < 0) image->image.assign(bytes, bytes + size);
   return true;
-}
-
-// A URI's %XX escapes decoded (a relative URI names a file beside the glTF).
-std::string percentDecoded(const std::string& uri) {
-  std::string out;
-  for (size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uint8_t(uri[i + 1])) && std::isxdigit(uint8_t(uri[i + 2]))) {
-      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
 }
 
 // A sampler's wrap mode (glTF's GL enums) as gpu::TEXTURE_WRAP_*.
@@ -376,7 +361,8 @@ class Reader {
     if (image.bufferView >= 0) return decodeTexture(bufferViewBytes(image.bufferView, what), what);
     if (!image.image.empty()) return decodeTexture(std::string(image.image.begin(), image.image.end()), what);
     if (image.uri.empty()) throw SceneError(what + ": no image data");
-    const std::string file = texturePathBeside(percentDecoded(image.uri), path_);
+    // Decoded as tinygltf decodes the file's buffer URIs, so one file's URIs follow one rule.
+    const std::string file = texturePathBeside(tinygltf::dlib::urldecode(image.uri), path_);
     return readTextureFile(file, what + " ('" + image.uri + "')");
   }
 

@@ -285,12 +285,13 @@ struct VertexLayout {
   int uv[2] = {-1, -1};
 };
 
-// The vertex's scalar property called `name`, or -1.
+// The vertex's scalar property called `name` (the last, if the header names it twice), or -1.
 int propertyIndex(const Element& vertex, const char* name) {
+  int index = -1;
   for (size_t p = 0; p < vertex.properties.size(); ++p) {
-    if (vertex.properties[p].countType == Type::None && vertex.properties[p].name == name) return int(p);
+    if (vertex.properties[p].countType == Type::None && vertex.properties[p].name == name) index = int(p);
   }
-  return -1;
+  return index;
 }
 
 VertexLayout vertexLayout(const Element& vertex) {

@@ -89,14 +89,17 @@ uint32_t pixelTexel(const SceneData& data, const FrameInputs& in, glm::uvec4 tri
 uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
                   glm::uvec4 tri, int x, int y) {
   const FrameData& frame = in.frame;
-  const vec2 bary = pixelBarycentrics(frame, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y);
+  const bool textured = !data.uvs.empty();
+  const vec2 bary = textured || frame.shading != SHADING_FLAT
+                        ? pixelBarycentrics(frame, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y)
+                        : vec2(0.0f);
   const uint32_t texel = pixelTexel(data, in, tri, bary);
   if (frame.shading == SHADING_GOURAUD) {
     const GouraudTriangle g = gouraudTriangle(shaded[tri.x], shaded[tri.y], shaded[tri.z], frame.projection);
     return packColor(texturedColor(interpolateColorAt(g, bary), texel));
   }
   SurfacePoint s = surfaceAt(data, in, tri, bary);
-  if (!data.uvs.empty()) s.m.color = texturedColor(s.m.color, texel);
+  if (textured) s.m.color = texturedColor(s.m.color, texel);
   const vec3 V = viewVector(s.P, frame);
   vec3 color = phongAmbient(s.m, frame.ambient);
   for (const LightData& light : in.lights) color += phongLightModel(s.P, s.N, V, s.m, light, frame.specular == SPECULAR_BLINN);
@@ -107,7 +110,8 @@ uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vecto
 
 SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, const ShadedVertex& s0,
                           const ShadedVertex& s1, const ShadedVertex& s2, int x, int y) {
-  return surfaceAt(data, in, tri, pixelBarycentrics(in.frame, s0, s1, s2, x, y));
+  const bool flat = in.frame.shading == SHADING_FLAT;  // the face's surface: no barycentrics
+  return surfaceAt(data, in, tri, flat ? vec2(0.0f) : pixelBarycentrics(in.frame, s0, s1, s2, x, y));
 }
 
 Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,

@@ -7,6 +7,7 @@
 #include "scene/scene_sections.h"
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -74,6 +75,15 @@ SceneSpec readScene(const Node& root, const std::string& path, const std::string
 }
 
 }  // namespace scenejson
+
+FileVersion fileVersion(const std::string& path) {
+  std::error_code error;
+  FileVersion version;
+  version.bytes = std::filesystem::file_size(path, error);
+  const auto modified = std::filesystem::last_write_time(path, error);
+  if (!error) version.modified = std::chrono::duration_cast<std::chrono::nanoseconds>(modified.time_since_epoch()).count();
+  return version;
+}
 
 SceneSpec withSection(SceneSpec scene, const std::string& key, const std::string& json) {
   const Json value = parseJson(json, scene.path);

@@ -94,6 +94,10 @@ struct FileVersion {
   bool operator==(const FileVersion&) const = default;
 };
 
+// The file at `path` as it is now (zeros where it cannot be read): a mesh file's or a texture's,
+// to tell a changed file from the one read before.
+FileVersion fileVersion(const std::string& path);
+
 enum class Shape { Sphere, Cube, Cylinder, Cone, Icosphere, Polyhedron, Mesh };
 // The scene file's name of a shape ("sphere", ..., "mesh"; scene_objects.cpp's table of shapes).
 std::string_view shapeName(Shape shape);

@@ -5,7 +5,6 @@
 #include "geometry/transform.h"
 #include "meshio/mesh_file.h"
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 
@@ -63,15 +62,6 @@ std::vector<glm::dvec3> readPoints(const Node& node) {
 }
 
 
-
-FileVersion fileVersion(const std::string& path) {
-  std::error_code error;
-  FileVersion version;
-  version.bytes = std::filesystem::file_size(path, error);
-  const auto modified = std::filesystem::last_write_time(path, error);
-  if (!error) version.modified = std::chrono::duration_cast<std::chrono::nanoseconds>(modified.time_since_epoch()).count();
-  return version;
-}
 
 // The file's path (resolved against baseDir) into `object.file`, its version, and the triangles it
 // will build (mesh_file.h meshFileTriangles).

@@ -2,8 +2,7 @@
 #include "scene/scene_textures.h"
 
 #include "image/texture_decode.h"
-
-#include <sys/stat.h>
+#include "scene/scene.h"
 
 #include <filesystem>
 #include <map>
@@ -15,32 +14,24 @@ namespace phongvk {
 namespace {
 
 // What a cached texture was decoded from: the source (an absolute path or a data URI) and, for a
-// file, its size and modification time then.
+// file, its version then.
 struct SourceVersion {
   std::string source;
-  int64_t bytes = -1;
-  int64_t modified = 0;
+  FileVersion file;
   bool operator<(const SourceVersion& o) const {
-    return std::tie(source, bytes, modified) < std::tie(o.source, o.bytes, o.modified);
+    return std::tie(source, file.bytes, file.modified) < std::tie(o.source, o.file.bytes, o.file.modified);
   }
 };
 
 SourceVersion versionOf(const std::string& source) {
-  SourceVersion v{source};
-  struct stat s;
-  if (source.rfind("data:", 0) != 0 && ::stat(source.c_str(), &s) == 0) {
-    v.bytes = int64_t(s.st_size);
-    v.modified = int64_t(s.st_mtim.tv_sec) * 1000000000 + s.st_mtim.tv_nsec;
-  }
-  return v;
+  return {source, source.rfind("data:", 0) == 0 ? FileVersion{} : fileVersion(source)};
 }
 
 }  // namespace
 
 std::string textureSourceOf(const std::string& source, const std::string& baseDir) {
-  if (source.rfind("data:", 0) == 0 || source.empty()) return source;
-  const std::filesystem::path path(source);
-  return path.is_absolute() || baseDir.empty() ? source : (std::filesystem::path(baseDir) / path).string();
+  if (source.rfind("data:", 0) == 0) return source;
+  return (std::filesystem::path(baseDir) / source).string();  // an absolute source replaces baseDir
 }
 
 std::shared_ptr<const TextureImage> sceneTexture(const std::string& source, const std::string& baseDir,
