@@ -13,7 +13,8 @@
 # Every compute shader's floating-point operations are then decorated NoContraction
 # (shaders/no_contraction.cpp: glslang's `precise` stops at function boundaries, and no optimizer
 # may rewrite an operation the reference computes as written), and the module goes through
-# spirv-opt -O unless its name is in OPT_SKIP. The optimized module is what every driver compiles:
+# spirv-opt -O unless its name is in OPT_SKIP, and is decorated again after it: the copies its loop
+# unroller makes of a loop's body can lack the decoration (setupClipped's snapping did). The optimized module is what every driver compiles:
 # lavapipe turns SPIR-V into NIR and optimizes it in every process, and inlining, scalar
 # replacement and dead-code removal done once here take much of that off each process
 # (docs/DECISIONS.md, "Shaders are optimized at build time").
@@ -63,8 +64,9 @@ function(phongvk_compile_shaders)
         list(APPEND steps COMMAND phongvk_no_contraction ${out}.spv ${out}.strict)
         set(module ${out}.strict)
         if(NOT name IN_LIST ARG_OPT_SKIP)
-          list(APPEND steps COMMAND ${PHONGVK_SPIRV_OPT} -O --target-env=vulkan1.2 ${out}.strict -o ${out}.opt)
-          set(module ${out}.opt)
+          list(APPEND steps COMMAND ${PHONGVK_SPIRV_OPT} -O --target-env=vulkan1.2 ${out}.strict -o ${out}.opt
+                            COMMAND phongvk_no_contraction ${out}.opt ${out}.final)
+          set(module ${out}.final)
         endif()
       endif()
       add_custom_command(

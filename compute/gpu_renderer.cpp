@@ -155,7 +155,7 @@ void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer
   submitAndWait(context_, cmd);
 }
 
-// Makes room for what the last attempt lacked (STATUS_* flags): the next clipper (kept for
+// Makes room for what the last attempt lacked (STATUS_* flags): the clipper (kept for
 // the renderer's later frames), or twice the large triangles' lists,
 // or 16 times the workgroups per pass, or, with the most workgroups, the bins' lists taken in
 // chunks of LIST_CHUNK_FIRST entries and then a quarter as many each time (gpu_layout.h). The
@@ -163,7 +163,7 @@ void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer
 // vertices (a cut-short shade pass may have left some out). The new sizes are kept for later frames.
 void GpuRenderer::prepareRetry(uint32_t statusFlags) {
   if (statusFlags & STATUS_NEEDS_CLIPPING) {
-    clipFloor_ = std::min(frameClip_ + 1, CLIP_ALL);  // render selects the next clipper's pass
+    clipFloor_ = CLIP_ALL;  // render selects the clip pass with the clipper
   } else if (statusFlags & STATUS_LARGE_OVERFLOW) {
     createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
                        uint32_t(std::min<uint64_t>(2ull * largeSetupCapacity_, UINT32_MAX)));

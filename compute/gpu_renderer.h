@@ -115,7 +115,8 @@ class GpuRenderer {
   // 0, or how many entries of each bin's large-triangle list resolve takes per round since a frame
   // had lists too long for the device's loop budget (gpu_layout.h LIST_CHUNK_FIRST).
   uint32_t listChunk() const { return listChunk_; }
-  // The least clipper frames take since one met a triangle its clipper could not clip (CLIP_*).
+  // CLIP_ALL once a frame met a triangle to clip in a clip pass built without the clipper: later
+  // frames keep the clipper.
   uint32_t clipFloor() const { return clipFloor_; }
   // Time spent compiling its pipeline set's pipelines so far, construction included (a shared set:
   // by every renderer that compiled into it).

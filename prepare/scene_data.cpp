@@ -260,21 +260,13 @@ bool lightingIsViewIndependent(const FrameInputs& in) {
 }
 
 uint32_t boxClip(const SceneData& data, const View& view) {
-  bool mayClip = false;
-  glm::dvec2 reach(0.0);  // the box's largest |x|, |y| in the camera's axes
   for (int corner = 0; corner < 8; ++corner) {
     const glm::dvec3 p((corner & 1) ? data.boundsMax.x : data.boundsMin.x,
                        (corner & 2) ? data.boundsMax.y : data.boundsMin.y,
                        (corner & 4) ? data.boundsMax.z : data.boundsMin.z);
-    mayClip = mayClip || nearOrOutsideClipVolume(view, p);
-    reach = glm::max(reach, glm::abs(glm::dvec2(glm::dot(view.right, p - view.eye), glm::dot(view.up, p - view.eye))));
+    if (nearOrOutsideClipVolume(view, p)) return gpu::CLIP_ALL;
   }
-  if (!mayClip) return gpu::CLIP_NONE;
-  // In front of the near plane |X| / W <= focal reach / near (orthographic: focal reach).
-  const double w = view.orthographic ? 1.0 : view.nearPlane;
-  const double band = double(gpu::GUARD_BAND) * w * (1 - 1e-4);
-  const bool nearOnly = view.focal.x * reach.x < band && view.focal.y * reach.y < band;
-  return nearOnly ? gpu::CLIP_NEAR : gpu::CLIP_ALL;
+  return gpu::CLIP_NONE;
 }
 
 FrameInputs makeFrame(const SceneData& data, const View& view) {

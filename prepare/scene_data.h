@@ -57,10 +57,9 @@ struct FrameInputs {
   std::vector<gpu::ObjectData> objects;
   std::vector<gpu::LightData> lights;
   std::vector<gpu::MaterialData> materials;
-  // The clipper the compute port's clip pass needs (gpu_layout.h CLIP_*, boxClip): none when no
-  // triangle can cross the near plane or the guard band (the box holds every vertex, the clip
-  // volume is convex), the near plane's when the box may cross it but nothing in front of it can
-  // leave the guard band, else the general one.
+  // Whether the compute port's clip pass needs the clipper (gpu_layout.h CLIP_*, boxClip): not when
+  // no triangle can cross the near plane or the guard band (the box holds every vertex, the clip
+  // volume is convex).
   uint32_t clip = gpu::CLIP_ALL;
 };
 
@@ -92,9 +91,7 @@ bool lightingIsViewIndependent(const FrameInputs& in);
 FrameInputs makeFrame(const SceneData& data, const View& view);
 
 // FrameInputs::clip of a frame of `data` seen in `view`: CLIP_NONE when no corner of the scene's
-// box is behind the near plane or past the guard band, or within a margin of them; CLIP_NEAR when
-// the box's reach across the view, seen at the near plane's depth, stays inside the guard band
-// with that margin (so no polygon clipped at the near plane leaves it); else CLIP_ALL.
+// box is behind the near plane or past the guard band, or within a margin of them; else CLIP_ALL.
 uint32_t boxClip(const SceneData& data, const View& view);
 
 }  // namespace phongvk

@@ -33,45 +33,10 @@ FN vec3 clipIntersect(vec3 inside, vec3 outside, float dIn, float dOut) {
   return p;
 }
 
-// Sutherland-Hodgman against one plane: poly (count n) -> result; returns the new count.
-FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int plane, float nearPlane, uint projection) {
-  vec3 result[MAX_CLIP_VERTICES];
-  int m = 0;
-  for (int i = 0; i < n; ++i) {
-    vec3 a = poly[i];
-    vec3 b = poly[(i + 1) % n];
-    float da = clipDistance(a, plane, nearPlane, projection);
-    float db = clipDistance(b, plane, nearPlane, projection);
-    if (da >= 0.0f) result[m++] = a;
-    if ((da >= 0.0f) != (db >= 0.0f)) {
-      result[m++] = da >= 0.0f ? clipIntersect(a, b, da, db) : clipIntersect(b, a, db, da);
-    }
-  }
-  for (int i = 0; i < m; ++i) poly[i] = result[i];
-  return m;
-}
-
-// Clips triangle h0 h1 h2 to the near plane and guard band. Returns the vertex count of the
-// convex polygon left in poly (0 when nothing is in front of the near plane).
-FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection, OUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES)) {
-  poly[0] = h0;
-  poly[1] = h1;
-  poly[2] = h2;
-  int n = 3;
-  for (int plane = 0; plane < 5 && n > 0; ++plane) {
-    bool allInside = true;
-    for (int i = 0; i < n; ++i) allInside = allInside && clipDistance(poly[i], plane, nearPlane, projection) >= 0.0f;
-    if (!allInside) n = clipAgainstPlane(poly, n, plane, nearPlane, projection);
-  }
-  return n < 3 ? 0 : n;
-}
-
-// A triangle clipped against the near plane alone: the polygon clipTriangle makes when no vertex
-// of it leaves the guard band, in four named vertices (count 0, 3 or 4) instead of an array.
-// Sutherland-Hodgman's output order for one plane, [v0], [x01], [v1], [x12], [v2], [x20] (a vertex
-// where it is inside, an edge's crossing where its ends disagree), is picked per slot with
-// selects: with no dynamically indexed array, lavapipe generates the code in a fraction of the
-// general clipper's time.
+// A triangle clipped against the near plane alone, the first of clipTriangle's planes, in four
+// named vertices (count 0, 3 or 4). Sutherland-Hodgman's output order for one plane, [v0], [x01],
+// [v1], [x12], [v2], [x20] (a vertex where it is inside, an edge's crossing where its ends
+// disagree), is picked per slot with selects.
 struct NearPolygon {
   vec3 p0;
   vec3 p1;
@@ -81,7 +46,7 @@ struct NearPolygon {
 };
 
 // The crossing of edge a -> b with a plane (distances da, db of different signs), from its inside
-// end, as clipAgainstPlane computes it.
+// end.
 FN vec3 edgeCrossing(vec3 a, vec3 b, float da, float db) {
   return da >= 0.0f ? clipIntersect(a, b, da, db) : clipIntersect(b, a, db, da);
 }
@@ -106,17 +71,49 @@ FN NearPolygon clipNear(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint project
   return q;
 }
 
-// Whether every vertex of q is inside the guard band's four planes, where clipTriangle leaves the
-// near plane's polygon as it is.
-FN bool insideGuardBand(NearPolygon q, float nearPlane, uint projection) {
-  bool inside = true;
-  for (int plane = 1; plane < 5; ++plane) {
-    inside = inside && clipDistance(q.p0, plane, nearPlane, projection) >= 0.0f &&
-             clipDistance(q.p1, plane, nearPlane, projection) >= 0.0f &&
-             clipDistance(q.p2, plane, nearPlane, projection) >= 0.0f &&
-             (q.count < 4 || clipDistance(q.p3, plane, nearPlane, projection) >= 0.0f);
+// Sutherland-Hodgman against one guard-band plane: poly (count n <= cap) -> poly; returns the new
+// count. Every index is a constant once the loops unroll (`cap` is a literal at each call), so a
+// SIMD device keeps the polygon in registers (indexed per lane, lavapipe put it in memory and took
+// seconds to generate the pass's code: docs/DECISIONS.md): each output, p_i where it is inside and the
+// crossing of edge i where its ends disagree, is pushed onto the front of the result, walking the
+// edges from the last, which leaves the result in Sutherland-Hodgman's order. A convex polygon
+// gains at most one vertex per plane, so the result fits cap + 1 <= MAX_CLIP_VERTICES; outputs
+// past that, which only rounding could make, are dropped from the end.
+FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int cap, int plane, float nearPlane, uint projection) {
+  vec3 result[MAX_CLIP_VERTICES];
+  UNROLL for (int j = 0; j < int(MAX_CLIP_VERTICES); ++j) result[j] = poly[0];
+  int m = 0;
+  UNROLL for (int i = cap - 1; i >= 0; --i) {
+    vec3 a = poly[i];
+    vec3 b = i + 1 < n ? poly[i + 1] : poly[0];
+    float da = clipDistance(a, plane, nearPlane, projection);
+    float db = clipDistance(b, plane, nearPlane, projection);
+    bool edge = i < n;
+    bool crosses = edge && (da >= 0.0f) != (db >= 0.0f);
+    bool keeps = edge && da >= 0.0f;
+    vec3 x = crosses ? edgeCrossing(a, b, da, db) : a;
+    UNROLL for (int j = cap; j > 0; --j) result[j] = crosses ? result[j - 1] : result[j];
+    result[0] = crosses ? x : result[0];
+    UNROLL for (int j = cap; j > 0; --j) result[j] = keeps ? result[j - 1] : result[j];
+    result[0] = keeps ? a : result[0];
+    m += (crosses ? 1 : 0) + (keeps ? 1 : 0);
   }
-  return inside;
+  UNROLL for (int j = 0; j <= cap; ++j) poly[j] = result[j];
+  return min(m, cap + 1);
+}
+
+// Clips triangle h0 h1 h2 to the near plane and guard band. Returns the vertex count of the
+// convex polygon left in poly (0 when nothing is in front of the near plane): the near plane's
+// polygon (clipNear), then Sutherland-Hodgman against the guard band's four planes in turn.
+FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection, OUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES)) {
+  NearPolygon q = clipNear(h0, h1, h2, nearPlane, projection);
+  UNROLL for (int j = 0; j < int(MAX_CLIP_VERTICES); ++j) poly[j] = q.p0;
+  poly[1] = q.p1;
+  poly[2] = q.p2;
+  poly[3] = q.p3;
+  int n = q.count;
+  UNROLL for (int plane = 1; plane < 5; ++plane) n = clipAgainstPlane(poly, n, plane + 3, plane, nearPlane, projection);
+  return n < 3 ? 0 : n;
 }
 
 // True when the whole triangle is outside one of the view frustum's planes (off screen, behind

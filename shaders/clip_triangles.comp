@@ -14,19 +14,17 @@
 
 layout(local_size_x = CLIP_GROUP_SIZE) in;
 
-// Which clipper this pass has (gpu_layout.h CLIP_*). Without one, the first triangle crossing the
-// near plane or the guard band asks the host for a frame with one (STATUS_NEEDS_CLIPPING), as one
-// that clips at the near plane alone does for a polygon still leaving the guard band: lavapipe
-// generates a pass's machine code when it first runs it, seconds for the general clipper (its
-// polygons are arrays indexed per lane), a fraction of that for the near plane's, and most scenes
-// need neither (docs/DECISIONS.md).
+// Whether this pass has the clipper (gpu_layout.h CLIP_*). Without it, the first triangle crossing
+// the near plane or the guard band asks the host for a frame with it (STATUS_NEEDS_CLIPPING): code a
+// pass merely contains costs lavapipe every triangle, and most scenes never clip
+// (docs/DECISIONS.md, "The clipper only where a frame may need it").
 layout(constant_id = SPEC_CLIP_POLYGONS) const uint CLIP_POLYGONS = CLIP_NONE;
 
 // The fan's sub-triangles of a set-up polygon, rasterized or deferred to resolve. Without the
-// general clipper a polygon has at most four vertices, picked with constant indices.
+// clipper the polygon is the triangle itself.
 void drawFan(TriangleSetup t) {
   for (int f = 0; f + 2 < t.count; ++f) {
-    TriangleSetup sub = CLIP_POLYGONS == CLIP_ALL ? fanTriangle(t, f) : fanTriangleOfFour(t, f);
+    TriangleSetup sub = CLIP_POLYGONS == CLIP_ALL ? fanTriangle(t, f) : t;
     EdgeSetup s;
     if (setupSingle(sub, s)) drawOrDefer(sub, s);
   }
@@ -52,14 +50,6 @@ void main() {
     bool drawn = inside && setupUnclipped(h0, h1, h2, frame, t);
     if (CLIP_POLYGONS == CLIP_ALL) {
       for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
-    }
-    if (CLIP_POLYGONS == CLIP_NEAR && !inside) {
-      int setup = setupNearClipped(h0, h1, h2, frame, t);
-      if (setup == SETUP_NEEDS_ALL) {
-        atomicOr(status.flags, STATUS_NEEDS_CLIPPING);
-        continue;
-      }
-      drawn = setup == SETUP_DRAWN;
     }
     if (drawn) drawFan(t);
   }

@@ -84,20 +84,15 @@ PHONGVK_CONST uint STATUS_LOOP_LIMIT = 2;
 // Not a failure: resolve_large, taking bins' lists a chunk at a time (SPEC_LIST_CHUNK), left some
 // bin's list unfinished; the host runs it again (a round) until no bin is left.
 PHONGVK_CONST uint STATUS_MORE_ROUNDS = 4;
-// The clip pass met a triangle its clipper cannot clip (SPEC_CLIP_POLYGONS): one crossing the near
-// plane or the guard band in a pass built without clipping, or one whose polygon clipped at the
-// near plane still leaves the guard band in a pass that clips at the near plane alone. The host
-// renders the frame again with the next clipper.
+// The clip pass met a triangle to clip (one crossing the near plane or the guard band) in a pass
+// built without the clipper (SPEC_CLIP_POLYGONS). The host renders the frame again with it.
 PHONGVK_CONST uint STATUS_NEEDS_CLIPPING = 8;
 
-// The clip pass's clippers (SPEC_CLIP_POLYGONS), each the next one's fallback: none (a triangle
-// to clip asks for the next), the near plane alone (clip.h clipNear: a polygon of at most four
-// vertices, no arrays, so lavapipe generates its code in a fraction of the time), and the near
-// plane and the guard band (clipTriangle, as the reference clips). The host picks the least a
-// frame's scene box needs (prepare/scene_data.h boxClip); all give the reference's polygons.
+// The clip pass's builds (SPEC_CLIP_POLYGONS): without the clipper (a triangle to clip asks for the
+// other build), and with the near plane and the guard band's (clip.h clipTriangle, as the reference
+// clips). The host picks what a frame's scene box needs (prepare/scene_data.h boxClip).
 PHONGVK_CONST uint CLIP_NONE = 0;
-PHONGVK_CONST uint CLIP_NEAR = 1;
-PHONGVK_CONST uint CLIP_ALL = 2;
+PHONGVK_CONST uint CLIP_ALL = 1;
 // Iterations of the loop-budget probe (PassControl.loopProbe; a uniform value, so no compiler unrolls it).
 PHONGVK_CONST uint LOOP_PROBE_ITERATIONS = 2;
 

@@ -19,13 +19,16 @@ TriangleSetup fanSubTriangle(TriangleSetup t, ivec2 b, ivec2 c) {
   return sub;
 }
 
-// Fan sub-triangle k (0, k + 1, k + 2) of a polygon of any count.
-TriangleSetup fanTriangle(TriangleSetup t, int k) { return fanSubTriangle(t, t.snapped[k + 1], t.snapped[k + 2]); }
-
-// The same of a polygon of at most four vertices, picked with constant indices.
-TriangleSetup fanTriangleOfFour(TriangleSetup t, int k) {
-  return fanSubTriangle(t, k == 0 ? t.snapped[1] : t.snapped[2], k == 0 ? t.snapped[2] : t.snapped[3]);
+// Vertex i of a set-up polygon, picked with constant indices (a per-lane index would put the
+// polygon in memory on a SIMD device, and lengthen lavapipe's code generation by seconds).
+ivec2 snappedAt(TriangleSetup t, int i) {
+  ivec2 v = t.snapped[0];
+  [[unroll]] for (int j = 1; j < int(MAX_CLIP_VERTICES); ++j) v = i == j ? t.snapped[j] : v;
+  return v;
 }
+
+// Fan sub-triangle k (0, k + 1, k + 2) of a polygon of any count.
+TriangleSetup fanTriangle(TriangleSetup t, int k) { return fanSubTriangle(t, snappedAt(t, k + 1), snappedAt(t, k + 2)); }
 
 // The only sub-triangle of an unclipped triangle (count == 3), with constant indices.
 bool setupSingle(TriangleSetup t, out EdgeSetup s) {

@@ -62,8 +62,9 @@ FN bool setupPlane(vec3 h0, vec3 h1, vec3 h2, bool cullBack, uint triangle, Fram
 
 // The rest of the setup for a triangle that crosses the near plane or the guard band: clip, snap
 // the polygon. False when nothing is left in front of the near plane or no pixel centre is in the
-// bounding box. (The GPU runs this in a pass of its own, clip_triangles.comp: on SIMD CPUs its
-// per-lane arrays slow down every triangle of a pass that merely contains them.)
+// bounding box. (The GPU runs this in a pass of its own, clip_triangles.comp: on a SIMD CPU code a
+// pass merely contains costs every triangle it runs.) Indexed with constants once the loop unrolls,
+// as clipTriangle is.
 FN bool setupClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleSetup) t) {
   vec3 poly[MAX_CLIP_VERTICES];
   t.count = clipTriangle(h0, h1, h2, frame.nearPlane, frame.projection, poly);
@@ -73,45 +74,18 @@ FN bool setupClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleS
   ivec2 lo = snapToSubpixel(poly[0], frame.principal, frame.projection);
   ivec2 hi = lo;
   t.snapped[0] = lo;
-  for (int i = 1; i < t.count; ++i) {
-    t.zMin = min(t.zMin, poly[i].z);
-    t.zMax = max(t.zMax, poly[i].z);
-    ivec2 v = snapToSubpixel(poly[i], frame.principal, frame.projection);
-    t.snapped[i] = v;
-    lo = min(lo, v);
-    hi = max(hi, v);
+  UNROLL for (int i = 1; i < int(MAX_CLIP_VERTICES); ++i) {
+    if (i < t.count) {
+      t.zMin = min(t.zMin, poly[i].z);
+      t.zMax = max(t.zMax, poly[i].z);
+      ivec2 v = snapToSubpixel(poly[i], frame.principal, frame.projection);
+      t.snapped[i] = v;
+      lo = min(lo, v);
+      hi = max(hi, v);
+    }
   }
   t.bbox = pixelBounds(lo, hi, frame.width, frame.height);
   return !isEmpty(t.bbox);
-}
-
-// setupClipped for the GPU clip pass built to clip at the near plane alone (gpu_layout.h
-// CLIP_NEAR): the same polygon, vertices, depth range and box, from clipNear, with constant
-// indices only. SETUP_NEEDS_ALL where the near plane's polygon leaves the guard band (the host then
-// renders the frame again with the general clipper); else SETUP_DRAWN, or SETUP_NOTHING when
-// nothing is left or no pixel centre is in the box.
-PHONGVK_CONST int SETUP_NOTHING = 0;
-PHONGVK_CONST int SETUP_DRAWN = 1;
-PHONGVK_CONST int SETUP_NEEDS_ALL = 2;
-
-FN int setupNearClipped(vec3 h0, vec3 h1, vec3 h2, FrameData frame, INOUT(TriangleSetup) t) {
-  NearPolygon q = clipNear(h0, h1, h2, frame.nearPlane, frame.projection);
-  if (q.count == 0) return SETUP_NOTHING;
-  if (!insideGuardBand(q, frame.nearPlane, frame.projection)) return SETUP_NEEDS_ALL;
-  t.count = q.count;
-  bool four = q.count == 4;
-  t.zMin = min(min(q.p0.z, q.p1.z), four ? min(q.p2.z, q.p3.z) : q.p2.z);
-  t.zMax = max(max(q.p0.z, q.p1.z), four ? max(q.p2.z, q.p3.z) : q.p2.z);
-  ivec2 v0 = snapToSubpixel(q.p0, frame.principal, frame.projection);
-  ivec2 v1 = snapToSubpixel(q.p1, frame.principal, frame.projection);
-  ivec2 v2 = snapToSubpixel(q.p2, frame.principal, frame.projection);
-  ivec2 v3 = four ? snapToSubpixel(q.p3, frame.principal, frame.projection) : v2;
-  t.snapped[0] = v0;
-  t.snapped[1] = v1;
-  t.snapped[2] = v2;
-  t.snapped[3] = v3;
-  t.bbox = pixelBounds(min(min(v0, v1), min(v2, v3)), max(max(v0, v1), max(v2, v3)), frame.width, frame.height);
-  return isEmpty(t.bbox) ? SETUP_NOTHING : SETUP_DRAWN;
 }
 
 // Culls, clips and snaps a triangle for rasterization. False: it draws nothing.
