@@ -178,6 +178,25 @@ std::array<Vec3, 2> Scene::bounds() const {
   return {Vec3{data.boundsMin.x, data.boundsMin.y, data.boundsMin.z}, Vec3{data.boundsMax.x, data.boundsMax.y, data.boundsMax.z}};
 }
 
+SceneTriangles Scene::triangles() const {
+  const SceneData data = buildSceneData(*state_->spec);
+  SceneTriangles out;
+  out.mesh.positions.reserve(data.vertices.size() * 3);
+  out.mesh.normals.reserve(data.vertices.size() * 3);
+  for (const gpu::VertexIn& v : data.vertices) {
+    const glm::dvec3 world = data.objectOrigins[v.object] + glm::dvec3(v.position);
+    out.mesh.positions.insert(out.mesh.positions.end(), {float(world.x), float(world.y), float(world.z)});
+    out.mesh.normals.insert(out.mesh.normals.end(), {v.normal.x, v.normal.y, v.normal.z});
+  }
+  out.mesh.triangles.reserve(data.triangles.size() * 3);
+  out.objects.reserve(data.triangles.size());
+  for (const glm::uvec4& t : data.triangles) {
+    out.mesh.triangles.insert(out.mesh.triangles.end(), {int64_t(t.x), int64_t(t.y), int64_t(t.z)});
+    out.objects.push_back(int32_t(t.w));
+  }
+  return out;
+}
+
 Camera Scene::camera() const { return cameraOf(*state_->spec); }
 
 void Scene::setCamera(const Camera& camera) {

@@ -5,14 +5,19 @@
 
 The peer is moderngl (Debian's python3-moderngl: OpenGL through headless EGL, on the same llvmpipe
 that runs lavapipe here, or on the GPU's driver) with a per-vertex Phong shader (Gouraud), the
-model phongvk renders by default. Each workload is the same triangles, normals, camera path and
-image size for every renderer, and the same work: back faces culled by both (moderngl's
-`CULL_FACE`, phongvk's `closed=True`; the models are closed surfaces):
+model phongvk renders by default: each object drawn with its material's uniforms, up to four
+point lights with their colours and each material's attenuation. Each workload is the same
+triangles, normals, lights, camera path and image size for every renderer, and the same work:
+back faces culled by both (moderngl's `CULL_FACE`, phongvk's `closed=True`; the models are closed
+surfaces). The workloads: icospheres and a real model, each with one material and one light, and
+the paper's scenes, which phongvk renders from their files and moderngl from their triangles as
+phongvk builds them (`Scene.triangles()`), their materials and lights (`Scene.to_dict()`):
 
-- per frame: one warm-up frame, then `--frames` frames with the camera moving on a circle around
-  the model, each frame's image read back into a numpy array (phongvk: `scene.camera = ...;
-  renderer.render(scene)`; moderngl: the matrix uniform, clear, draw, `fbo.read` into numpy, the
-  rows flipped to phongvk's top-first order); the time per frame;
+- per frame: one warm-up frame, then `--frames` frames with the camera moving on a circle about the
+  up axis through its target (a model's centre; a scene's look-at point, from its camera), each
+  frame's image read back into a numpy array (phongvk: `scene.camera = ...;
+  renderer.render(scene)`; moderngl: the uniforms, clear, a draw per object, `fbo.read` into
+  numpy, the rows flipped to phongvk's top-first order); the time per frame;
 - cold process: a new python3 that imports, builds the workload and renders one frame, as a user
   script that renders one picture runs; its wall clock.
 
@@ -23,7 +28,6 @@ docs/BENCHMARKS_PEERS.md with it.
 """
 
 import argparse
-import json
 import os
 import pathlib
 import platform
@@ -82,79 +86,127 @@ def ascii_ply(path):
 def workloads(quick):
     small = {"name": "icosphere, 1,280 triangles", "mesh": ("icosphere", 3), "size": (640, 480)}
     if quick:
-        return [small]
+        return [small, paper_workload("fig1_cube")]
     return [small,
             {"name": "icosphere, 1.3M triangles", "mesh": ("icosphere", 8), "size": (1920, 1080)},
-            {"name": "Wuson.ply (assimp-testmodels)", "mesh": ("ply", WUSON), "size": (960, 720)}]
+            {"name": "Wuson.ply (assimp-testmodels)", "mesh": ("ply", WUSON), "size": (960, 720)}] + [
+        paper_workload(p.stem) for p in sorted((ROOT / "scenes" / "paper").glob("*.json"))]
+
+
+def paper_workload(name):
+    scene = phongvk.load_scene(str(ROOT / "scenes" / "paper" / f"{name}.json"))
+    return {"name": f"paper: {name}", "mesh": ("scene", str(ROOT / "scenes" / "paper" / f"{name}.json")),
+            "size": (scene.width, scene.height)}
+
+
+# What a mesh workload is drawn with, by every renderer: one material, one white light.
+MESH_MATERIAL = {"ka": 0.15, "kd": 1.0, "ks": 0.8, "n": 10.0, "attenuation": [1.0, 0.0, 0.0], "color": [0.8, 0.6, 0.4]}
+LIGHT_OFFSET = np.array([1.0, -2.0, 3.0])
+FOV = 45.0
 
 
 def mesh_of(spec):
+    """What every renderer draws: world vertices, faces, normals, each face's object, the objects'
+    materials, the lights (position, RGB times intensity), the ambient light and the camera (its
+    first position, target, up, fov, near, far); for a scene file, its path too."""
     kind, arg = spec
-    return icosphere(arg) if kind == "icosphere" else ascii_ply(arg)
-
-
-def orbit(vertices, frames):
-    """Camera positions on a circle around the mesh's box (z up), 30 degrees above it, and its centre."""
+    if kind == "scene":
+        scene = phongvk.load_scene(arg)
+        t = scene.triangles()
+        d = scene.to_dict()
+        materials = [d["materials"][o["material"]] if isinstance(o["material"], str) else o["material"]
+                     for o in d["objects"]]
+        lights = [{"position": l["position"], "colour": (np.array(l["color"]) * l["intensity"]).tolist()}
+                  for l in d["lights"]]
+        c = d["camera"]
+        eye = np.array(c["position"])
+        camera = {"eye": eye, "target": eye + np.array(c["direction"]), "up": np.array(c["up"]), "fov": c["fov"],
+                  "near": c["near"], "far": c["far"]}
+        return {"vertices": t["vertices"], "faces": t["faces"].astype(np.int32), "normals": t["normals"],
+                "objects": t["objects"], "materials": materials, "lights": lights, "ambient": d["ambient"],
+                "camera": camera, "scene": arg}
+    vertices, faces, normals = icosphere(arg) if kind == "icosphere" else ascii_ply(arg)
     low, high = vertices.min(0), vertices.max(0)
     centre, radius = (low + high) / 2, float(np.linalg.norm(high - low)) / 2
+    camera = {"eye": centre + 2.6 * radius * np.array([0.87, 0.0, 0.5]), "target": centre,
+              "up": np.array([0.0, 0.0, 1.0]), "fov": FOV, "near": 0.01 * radius, "far": 100 * radius}
+    return {"vertices": vertices, "faces": faces, "normals": normals, "objects": np.zeros(len(faces), np.int32),
+            "materials": [MESH_MATERIAL], "lights": [{"position": (centre + LIGHT_OFFSET * radius).tolist(),
+                                                      "colour": [1.0, 1.0, 1.0]}],
+            "ambient": [1.0, 1.0, 1.0], "camera": camera, "scene": None}
+
+
+def orbit(mesh, frames):
+    """Camera positions on a circle about the up axis through the camera's target, starting at its
+    first position (a mesh's: 30 degrees above its box, z up)."""
+    c = mesh["camera"]
+    up = c["up"] / np.linalg.norm(c["up"])
+    offset = c["eye"] - c["target"]
     out = []
     for i in range(frames):
         a = 2 * np.pi * i / max(frames, 1)
-        out.append(centre + 2.6 * radius * np.array([np.cos(a) * 0.87, np.sin(a) * 0.87, 0.5]))
-    return centre, radius, out
+        along = np.dot(offset, up) * up
+        across = offset - along
+        out.append(c["target"] + along + np.cos(a) * across + np.sin(a) * np.cross(up, across))
+    return out
 
 
 # --- renderers ----------------------------------------------------------------------------------
 
-FOV = 45.0
-LIGHT_OFFSET = np.array([1.0, -2.0, 3.0])
-
-
 class PhongvkRenderer:
     def __init__(self, backend, mesh, size):
-        vertices, faces, normals = mesh
-        self.centre, self.radius, _ = orbit(vertices, 1)
-        width, height = size
-        light = (self.centre + LIGHT_OFFSET * self.radius).tolist()
-        self.scene = phongvk.scene_from_dict({
-            "camera": {"position": [0, -1, 0], "look_at": [0, 0, 0], "fov": FOV, "width": width, "height": height,
-                       "near": 0.01 * self.radius, "far": 100 * self.radius},
-            "lights": [{"position": light}],
-            "materials": {"m": {"attenuation": [1, 0, 0], "color": [0.8, 0.6, 0.4]}},
-            "objects": []})
-        self.scene.add_mesh(vertices, faces, normals, material="m", closed=True)  # as moderngl's CULL_FACE
+        self.camera, self.size = mesh["camera"], size
+        if mesh["scene"]:  # the scene file itself: its shapes, materials and lights
+            self.scene = phongvk.load_scene(mesh["scene"])
+        else:
+            self.scene = phongvk.scene_from_dict({
+                "camera": {"position": [0, -1, 0], "look_at": [0, 0, 0], "width": size[0], "height": size[1]},
+                "lights": [{"position": mesh["lights"][0]["position"]}],
+                "materials": {"m": MESH_MATERIAL},
+                "objects": []})
+            self.scene.add_mesh(mesh["vertices"], mesh["faces"], mesh["normals"], material="m",
+                                closed=True)  # as moderngl's CULL_FACE
         self.renderer = phongvk.Renderer(backend)
-        self.size = size
 
     def frame(self, eye):
-        width, height = self.size
-        self.scene.camera = phongvk.Camera(position=eye.tolist(), look_at=self.centre.tolist(), up=[0, 0, 1],
-                                           fov=FOV, width=width, height=height, near=0.01 * self.radius,
-                                           far=100 * self.radius)
+        c = self.camera
+        self.scene.camera = phongvk.Camera(position=eye.tolist(), look_at=c["target"].tolist(), up=c["up"].tolist(),
+                                           fov=c["fov"], width=self.size[0], height=self.size[1], near=c["near"],
+                                           far=c["far"])
         return self.renderer.render(self.scene)
 
 
+MAX_LIGHTS = 4
 VERTEX = """
 #version 330
+const int MAX_LIGHTS = %d;
 uniform mat4 view_projection;
-uniform vec3 eye, light;
+uniform vec3 eye, ambient, colour, attenuation;
+uniform vec4 material;  // ka, kd, ks, n
+uniform int light_count;
+uniform vec3 light_position[MAX_LIGHTS], light_colour[MAX_LIGHTS];
 in vec3 position, normal;
-out vec3 colour;
-const vec3 C = vec3(0.8, 0.6, 0.4);
+out vec3 shade;
 void main() {
-    vec3 n = normalize(normal), l = normalize(light - position), v = normalize(eye - position);
-    float d = max(dot(n, l), 0.0);
-    vec3 r = 2.0 * dot(n, l) * n - l;
-    float s = d > 0.0 ? pow(max(dot(r, v), 0.0), 10.0) : 0.0;
-    colour = clamp(0.15 * C + C * (1.0 * d + 0.8 * s), 0.0, 1.0);
+    vec3 n = normalize(normal), v = normalize(eye - position), c = material.x * ambient * colour;
+    for (int i = 0; i < light_count; ++i) {
+        vec3 d = light_position[i] - position;
+        float r = length(d);
+        vec3 l = d / r;
+        float nl = dot(n, l);
+        float s = nl > 0.0 ? pow(max(dot(2.0 * nl * n - l, v), 0.0), material.w) : 0.0;
+        float fall = 1.0 / (attenuation.x + attenuation.y * r + attenuation.z * r * r);
+        c += fall * light_colour[i] * (material.y * colour * max(nl, 0.0) + material.z * s);
+    }
+    shade = clamp(c, 0.0, 1.0);
     gl_Position = view_projection * vec4(position, 1.0);
 }
-"""
+""" % MAX_LIGHTS
 FRAGMENT = """
 #version 330
-in vec3 colour;
+in vec3 shade;
 out vec4 rgba;
-void main() { rgba = vec4(colour, 1.0); }
+void main() { rgba = vec4(shade, 1.0); }
 """
 
 
@@ -180,32 +232,47 @@ def perspective(fov, aspect, near, far):
 
 
 class ModernglRenderer:
+    """The same triangles with per-vertex Phong (Gouraud) as an OpenGL program draws them: one
+    vertex buffer, an index buffer and a draw with its material's uniforms per object."""
+
     def __init__(self, mesh, size):
         import moderngl
-        vertices, faces, normals = mesh
-        self.centre, self.radius, _ = orbit(vertices, 1)
         self.ctx = moderngl.create_standalone_context(backend="egl")
         self.ctx.enable(moderngl.DEPTH_TEST | moderngl.CULL_FACE)
         self.program = self.ctx.program(vertex_shader=VERTEX, fragment_shader=FRAGMENT)
-        data = np.concatenate([vertices, normals], axis=1).astype("f4")
+        data = np.concatenate([mesh["vertices"], mesh["normals"]], axis=1).astype("f4")
         self.vbo = self.ctx.buffer(data.tobytes())
-        self.ibo = self.ctx.buffer(faces.astype("i4").tobytes())
-        self.vao = self.ctx.vertex_array(self.program, [(self.vbo, "3f 3f", "position", "normal")], self.ibo)
+        self.objects = []
+        for k, m in enumerate(mesh["materials"]):
+            faces = mesh["faces"][mesh["objects"] == k]
+            if len(faces):
+                ibo = self.ctx.buffer(faces.astype("i4").tobytes())
+                vao = self.ctx.vertex_array(self.program, [(self.vbo, "3f 3f", "position", "normal")], ibo)
+                self.objects.append((vao, m))
         width, height = size
         self.fbo = self.ctx.framebuffer(self.ctx.renderbuffer((width, height)),
                                         self.ctx.depth_renderbuffer((width, height)))
-        self.size = size
-        self.program["light"].value = tuple(self.centre + LIGHT_OFFSET * self.radius)
+        self.size, self.camera = size, mesh["camera"]
+        lights = mesh["lights"][:MAX_LIGHTS]
+        self.program["light_count"].value = len(lights)
+        pad = [(0.0, 0.0, 0.0)] * (MAX_LIGHTS - len(lights))
+        self.program["light_position"].value = [tuple(l["position"]) for l in lights] + pad
+        self.program["light_colour"].value = [tuple(l["colour"]) for l in lights] + pad
+        self.program["ambient"].value = tuple(mesh["ambient"])
 
     def frame(self, eye):
         width, height = self.size
-        vp = perspective(FOV, width / height, 0.01 * self.radius, 100 * self.radius) @ look_at(eye, self.centre,
-                                                                                              np.array([0, 0, 1.0]))
+        c = self.camera
+        vp = perspective(c["fov"], width / height, c["near"], c["far"]) @ look_at(eye, c["target"], c["up"])
         self.program["view_projection"].write(vp.T.astype("f4").tobytes())
         self.program["eye"].value = tuple(eye)
         self.fbo.use()
         self.fbo.clear(0.0, 0.0, 0.0, 1.0)
-        self.vao.render()
+        for vao, m in self.objects:
+            self.program["material"].value = (m["ka"], m["kd"], m["ks"], m["n"])
+            self.program["colour"].value = tuple(m["color"])
+            self.program["attenuation"].value = tuple(m["attenuation"])
+            vao.render()
         image = np.frombuffer(self.fbo.read(components=3), dtype=np.uint8).reshape(height, width, 3)
         return image[::-1].copy()
 
@@ -233,8 +300,9 @@ def unavailable(name):
 
 def per_frame_ms(name, mesh, size, frames):
     renderer = RENDERERS[name](mesh, size)
-    _, _, eyes = orbit(mesh[0], frames)
-    renderer.frame(eyes[-1] * 1.01)  # warm-up: start-up, pipelines and the first upload are not a frame's
+    eyes = orbit(mesh, frames)
+    target = mesh["camera"]["target"]
+    renderer.frame(target + (eyes[-1] - target) * 1.01)  # warm-up: start-up, pipelines and the upload are not a frame's
     start = time.perf_counter()
     for eye in eyes:
         image = renderer.frame(eye)
@@ -247,7 +315,7 @@ def cold_process_s(name, workload):
     """A new interpreter that imports, builds the workload and renders one frame."""
     code = ("import sys, time; t = time.perf_counter(); sys.path.insert(0, %r); import peers; "
             "w = %r; m = peers.mesh_of(w['mesh']); r = peers.RENDERERS[%r](m, w['size']); "
-            "r.frame(peers.orbit(m[0], 1)[2][0]); print(time.perf_counter() - t)") % (
+            "r.frame(peers.orbit(m, 1)[0]); print(time.perf_counter() - t)") % (
                 str(pathlib.Path(__file__).parent), workload, name)
     start = time.perf_counter()
     subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, env=dict(os.environ))
@@ -262,7 +330,7 @@ def measure(workload, names, rounds, frames):
             results[n]["frame"].append(per_frame_ms(n, mesh, workload["size"], frames))
         for n in names:
             results[n]["cold"].append(cold_process_s(n, workload))
-    return len(mesh[1]), {n: {k: statistics.median(v) for k, v in r.items()} for n, r in results.items()}
+    return len(mesh["faces"]), {n: {k: statistics.median(v) for k, v in r.items()} for n, r in results.items()}
 
 
 # --- report -------------------------------------------------------------------------------------

@@ -707,6 +707,23 @@ vertices with faces; material and closed as in add_mesh.)")
       .def_property_readonly("bounds", &Scene::bounds,
                              "The world box around every object's vertices, as built: (min, max), each (x, y, z). "
                              "Builds the meshes to know.")
+      .def(
+          "triangles",
+          [](const Scene& s) {
+            SceneTriangles t = s.triangles();
+            const py::ssize_t vertices = py::ssize_t(t.mesh.positions.size() / 3), faces = py::ssize_t(t.objects.size());
+            py::dict out;
+            out["vertices"] = ownedArray(std::move(t.mesh.positions), {vertices, 3});
+            out["normals"] = ownedArray(std::move(t.mesh.normals), {vertices, 3});
+            out["faces"] = ownedArray(std::move(t.mesh.triangles), {faces, 3});
+            out["objects"] = ownedArray(std::move(t.objects), {faces});
+            return out;
+          },
+          "Every triangle as both renderers draw it (shapes tessellated, meshes subdivided, transforms and "
+          "poses applied), in world coordinates: a dict of numpy arrays, vertices (N, 3) float32, normals "
+          "(N, 3) float32 (unit), faces (M, 3) int64 (vertex indices) and objects (M,) int32 (each "
+          "triangle's object, its index in the scene's objects). For drawing the same geometry with another "
+          "renderer, or exporting it. Builds the meshes, as bounds does.")
       .def_property("camera", &Scene::camera, &Scene::setCamera,
                     "The camera (a phongvk.Camera); assigning one checks it like a scene file's \"camera\".")
       .def_property("lights", &Scene::lights, &Scene::setLights,

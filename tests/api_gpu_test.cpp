@@ -271,6 +271,41 @@ TEST(Api, TriangleMeshesAreSharedAndRenderAsTheirSources) {
 // Non-square pixels and a principal point off centre, then outside the image (the frustum's side
 // planes, the guard band and the near plane's clipping about it), with 16 samples a pixel: the
 // same bytes on both backends.
+// Scene::triangles: the built geometry in world coordinates, each triangle with its object.
+TEST(Api, TrianglesAreTheBuiltGeometryInWorldCoordinates) {
+  Scene scene = parseScene(R"({"camera": {"position": [0, -8, 1], "look_at": [0, 0, 0], "width": 64, "height": 48},
+    "lights": [{"position": [1, -4, 3]}],
+    "objects": [{"shape": "cube", "size": 2, "center": [10, 0, 0]},
+                {"shape": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "faces": [[0, 1, 2]]}]})");
+  MeshArrays tri;
+  tri.positions = {0, 0, 0, 1, 0, 0, 0, 0, 1};
+  tri.triangles = {0, 1, 2};
+  Matrix4 pose = IDENTITY_POSE;
+  pose[3] = -5;  // moved 5 along -x
+  scene.add(tri, pose);
+  const SceneTriangles t = scene.triangles();
+  ASSERT_EQ(t.objects.size(), 14u) << "a cube's 12, the inline mesh's 1 and the added one's 1";
+  ASSERT_EQ(t.mesh.triangles.size(), 3 * t.objects.size());
+  ASSERT_EQ(t.mesh.normals.size(), t.mesh.positions.size());
+  for (size_t k = 0; k < t.objects.size(); ++k) EXPECT_EQ(t.objects[k], k < 12 ? 0 : int32_t(k) - 11);
+  const auto vertex = [&](int64_t i) { return std::array<float, 3>{t.mesh.positions[3 * i], t.mesh.positions[3 * i + 1], t.mesh.positions[3 * i + 2]}; };
+  for (size_t k = 0; k < 12; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      const std::array<float, 3> p = vertex(t.mesh.triangles[3 * k + c]);
+      EXPECT_TRUE(std::abs(p[0] - 10.0f) == 1.0f && std::abs(p[1]) == 1.0f && std::abs(p[2]) == 1.0f) << k;
+    }
+  }
+  EXPECT_EQ(vertex(t.mesh.triangles[3 * 12 + 1]), (std::array<float, 3>{1, 0, 0}));
+  EXPECT_EQ(vertex(t.mesh.triangles[3 * 13 + 2]), (std::array<float, 3>{-5, 0, 1}));
+  for (size_t i = 0; i < t.mesh.normals.size(); i += 3) {
+    const double length = std::hypot(t.mesh.normals[i], t.mesh.normals[i + 1], t.mesh.normals[i + 2]);
+    EXPECT_NEAR(length, 1.0, 1e-6);
+  }
+  const std::array<Vec3, 2> box = scene.bounds();
+  EXPECT_EQ(box[0], (Vec3{-5, -1, -1}));
+  EXPECT_EQ(box[1], (Vec3{11, 1, 1}));
+}
+
 TEST(Api, IntrinsicsRenderTheSameOnBothBackends) {
   Scene scene = loadScene(source("scenes/intrinsics.json")).withImageSize(96, 72).withRender({.samples = 16});
   Renderer gpu(validatedGpu()), cpu(Backend::Cpu);

@@ -34,6 +34,12 @@ PHONGVK_API const char* revision();
 
 // A validated scene: camera, lights, materials, objects (docs/DESIGN.md "Scene file"). Cheap to
 // copy (copies share the validated model). Meshes are built by the renderer that first renders it.
+// Scene::triangles: the scene's built geometry in world coordinates.
+struct SceneTriangles {
+  MeshArrays mesh;               // positions, normals, triangles (3 vertex indices each)
+  std::vector<int32_t> objects;  // per triangle: its object's index in the scene
+};
+
 class PHONGVK_API Scene {
  public:
   // An empty scene to build in code, rendered at width x height pixels (1..16384 each): the
@@ -98,6 +104,13 @@ class PHONGVK_API Scene {
   // The world box around every object's vertices, as built: {min, max}. Builds the meshes to know
   // (a renderer builds its own again), so a program placing cameras about a model asks once.
   std::array<Vec3, 2> bounds() const;
+
+  // Every triangle as both renderers draw it (shapes tessellated, meshes subdivided, transforms and
+  // poses applied), in world coordinates: positions, unit vertex normals and vertex indices in
+  // `mesh` (no uvs), and each triangle's object (its index in the scene's objects) in `objects`.
+  // For drawing the same geometry with another renderer, or exporting it. Builds the meshes, as
+  // bounds() does.
+  SceneTriangles triangles() const;
 
   // The camera as a value, and a new one (checked like a scene file's "camera": SceneError
   // naming camera.KEY; ArgumentError for a value that is not finite). A camera of size 0 x 0

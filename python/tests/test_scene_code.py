@@ -214,6 +214,26 @@ def test_a_pose_turns_the_mesh_as_its_matrix_says():
     assert (covered_pose != covered_numpy).sum() <= 2 * 128
 
 
+def test_triangles_are_the_built_geometry_in_world_coordinates():
+    """Scene.triangles: a posed mesh's vertices as numpy moves them, the tessellated shapes of a
+    scene file within its bounds, each triangle with its object."""
+    vertices = np.array([[0, 0, 0], [2.4, 0, 0], [0, 0.9, 0]], np.float32)
+    pose = translation(1, 2, 3)
+    pose[:3, :3] = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
+    scene = phongvk.load_scene(scene_path("scenes/paper/fig3_two_lights.json"))
+    scene.add(vertices, np.array([[0, 1, 2]]), pose=pose)
+    t = scene.triangles()
+    assert t["vertices"].dtype == np.float32 and t["normals"].shape == t["vertices"].shape
+    assert t["faces"].shape == (len(t["objects"]), 3) and t["objects"].dtype == np.int32
+    assert sorted(set(t["objects"].tolist())) == [0, 1, 2]  # sphere, ground, the added triangle
+    added = t["vertices"][t["faces"][t["objects"] == 2][0]]
+    np.testing.assert_allclose(added, vertices @ pose[:3, :3].T + pose[:3, 3], atol=1e-6)
+    np.testing.assert_allclose(np.linalg.norm(t["normals"], axis=1), 1, atol=1e-6)
+    low, high = np.array(scene.bounds)
+    assert (t["vertices"] >= low - 1e-6).all() and (t["vertices"] <= high + 1e-6).all()
+    assert np.allclose(t["vertices"].min(0), low, atol=1e-6) and np.allclose(t["vertices"].max(0), high, atol=1e-6)
+
+
 def test_added_objects_keep_their_poses_in_every_frame():
     path = scene_path("scenes/paper/fig6_orbit_red.json")
     scene = phongvk.load_scene(path)
