@@ -71,40 +71,42 @@ FN NearPolygon clipNear(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint project
   return q;
 }
 
-// Sutherland-Hodgman against one guard-band plane: poly (count n <= cap) -> poly; returns the new
-// count. Every index is a constant once the loops unroll (`cap` is a literal at each call), so a
-// SIMD device keeps the polygon in registers (indexed per lane, lavapipe put it in memory and took
-// seconds to generate the pass's code: docs/DECISIONS.md): each output, p_i where it is inside and the
-// crossing of edge i where its ends disagree, is pushed onto the front of the result, walking the
-// edges from the last, which leaves the result in Sutherland-Hodgman's order. A convex polygon
-// gains at most one vertex per plane, so the result fits cap + 1 <= MAX_CLIP_VERTICES; outputs
-// past that, which only rounding could make, are dropped from the end.
-FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int cap, int plane, float nearPlane, uint projection) {
+// Sutherland-Hodgman against one guard-band plane: poly (count n) -> poly; returns the new count.
+// Every index is a constant once the loops unroll, so a SIMD device keeps the polygon in registers
+// (indexed per lane, lavapipe put it in memory and took seconds to generate the pass's code:
+// docs/DECISIONS.md): each output, p_i where it is inside and the crossing of edge i where its ends
+// disagree, is pushed onto the front of the result, walking the edges from the last, which leaves
+// the result in Sutherland-Hodgman's order. A convex polygon gains at most one vertex per plane
+// (the near plane's has at most four, so four more planes make at most eight); outputs past
+// MAX_CLIP_VERTICES, which only rounding could make, are dropped from the end.
+FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int plane, float nearPlane, uint projection) {
+  const int last = int(MAX_CLIP_VERTICES) - 1;
   vec3 result[MAX_CLIP_VERTICES];
-  UNROLL for (int j = 0; j < int(MAX_CLIP_VERTICES); ++j) result[j] = poly[0];
+  UNROLL for (int j = 0; j <= last; ++j) result[j] = poly[0];
   int m = 0;
-  UNROLL for (int i = cap - 1; i >= 0; --i) {
+  UNROLL for (int i = last; i >= 0; --i) {
     vec3 a = poly[i];
-    vec3 b = i + 1 < n ? poly[i + 1] : poly[0];
+    vec3 b = i < last && i + 1 < n ? poly[min(i + 1, last)] : poly[0];
     float da = clipDistance(a, plane, nearPlane, projection);
     float db = clipDistance(b, plane, nearPlane, projection);
     bool edge = i < n;
     bool crosses = edge && (da >= 0.0f) != (db >= 0.0f);
     bool keeps = edge && da >= 0.0f;
     vec3 x = crosses ? edgeCrossing(a, b, da, db) : a;
-    UNROLL for (int j = cap; j > 0; --j) result[j] = crosses ? result[j - 1] : result[j];
+    UNROLL for (int j = last; j > 0; --j) result[j] = crosses ? result[j - 1] : result[j];
     result[0] = crosses ? x : result[0];
-    UNROLL for (int j = cap; j > 0; --j) result[j] = keeps ? result[j - 1] : result[j];
+    UNROLL for (int j = last; j > 0; --j) result[j] = keeps ? result[j - 1] : result[j];
     result[0] = keeps ? a : result[0];
     m += (crosses ? 1 : 0) + (keeps ? 1 : 0);
   }
-  UNROLL for (int j = 0; j <= cap; ++j) poly[j] = result[j];
-  return min(m, cap + 1);
+  UNROLL for (int j = 0; j <= last; ++j) poly[j] = result[j];
+  return min(m, last + 1);
 }
 
 // Clips triangle h0 h1 h2 to the near plane and guard band. Returns the vertex count of the
 // convex polygon left in poly (0 when nothing is in front of the near plane): the near plane's
-// polygon (clipNear), then Sutherland-Hodgman against the guard band's four planes in turn.
+// polygon (clipNear), then Sutherland-Hodgman against the guard band's four planes in turn, in a
+// loop that stays a loop (one copy of the step: a quarter of the code to generate).
 FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection, OUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES)) {
   NearPolygon q = clipNear(h0, h1, h2, nearPlane, projection);
   UNROLL for (int j = 0; j < int(MAX_CLIP_VERTICES); ++j) poly[j] = q.p0;
@@ -112,7 +114,7 @@ FN int clipTriangle(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint projection,
   poly[2] = q.p2;
   poly[3] = q.p3;
   int n = q.count;
-  UNROLL for (int plane = 1; plane < 5; ++plane) n = clipAgainstPlane(poly, n, plane + 3, plane, nearPlane, projection);
+  DONT_UNROLL for (int plane = 1; plane < 5; ++plane) n = clipAgainstPlane(poly, n, plane, nearPlane, projection);
   return n < 3 ? 0 : n;
 }
 

@@ -24,6 +24,7 @@
 #define OUT_ARRAY(T, name, n) T (&name)[n]
 #define INOUT_ARRAY(T, name, n) T (&name)[n]
 #define UNROLL
+#define DONT_UNROLL
 #define SHARED_BEGIN namespace phongvk::gpu {
 #define SHARED_END }
 namespace phongvk::gpu {
@@ -47,6 +48,7 @@ inline float intBitsToFloat(int32_t i) { return std::bit_cast<float>(i); }
 #extension GL_EXT_control_flow_attributes : require
 #define FN
 #define UNROLL [[unroll]]
+#define DONT_UNROLL [[dont_unroll]]
 #define PRECISE precise
 #define OUT(T) out T
 #define INOUT(T) inout T
