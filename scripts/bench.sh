@@ -5,8 +5,9 @@
 # median of 5 frames after a warm-up, then the peer section (bench/peers.py: phongvk against
 # moderngl from Python, docs/BENCHMARKS_PEERS.md). Run `bash scripts/setup.sh --test` first (gnuplot draws the plot).
 # Extra arguments go to phongvk_bench, e.g. `--repeat 9`, `--device 1`.
-# It takes about 2–3 minutes on the 2-core CPU-only machine (lavapipe); each backend is measured in
-# 3 interleaved rounds, so load from elsewhere on a shared machine biases no comparison.
+# On the 2-core CPU-only machine (lavapipe) the harness's first renders (every committed scene on a
+# new machine, twice) take about 2 minutes and the peer section about 4; each backend is measured in
+# interleaved rounds, so load from elsewhere on a shared machine biases no comparison.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
