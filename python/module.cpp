@@ -773,11 +773,12 @@ objects raises SceneError. A scene built in code needs no dict: Scene(width, hei
 
 backend: "gpu" (the Vulkan compute port, default), "cpu" (the reference) or "graphics" (the Vulkan
     graphics-pipeline baseline). "gpu" and "cpu" give the same bytes; pick by speed. On a
-    machine with a GPU, "gpu". On a CPU-only machine (lavapipe), "cpu" is as fast for small
-    models and single stills (a 1,280-triangle sphere at 640x480 from a Python loop: 2.4 ms a
-    frame against 2.5, a cold process 0.12 s against 0.26), "gpu" for many triangles or large
-    images (1.3M triangles at 1920x1080: 79 ms against 259; the paper's scenes at 1385x923: 7-10
-    ms against 20-32); bench/peers.py measures it on the machine at hand.
+    machine with a GPU, "gpu". On a CPU-only machine (lavapipe), "cpu" is about as fast for
+    small models (a 1,280-triangle sphere at 640x480 from a Python loop: 2.4-3.0 ms a frame
+    against 2.5-2.6 in two runs) and quicker for single stills (a cold process 0.12-0.14 s
+    against 0.26-0.28), "gpu" for many triangles or large images (1.3M triangles at 1920x1080:
+    79-89 ms against 259-287; the paper's scenes at 1385x923: 7-10 ms against 18-38);
+    bench/peers.py measures it on the machine at hand.
 device: a Vulkan device index (see devices()); None for the best usable one.
 validate: turn the Vulkan validation layers on.
 
