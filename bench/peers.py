@@ -94,9 +94,9 @@ def workloads(quick):
 
 
 def paper_workload(name):
-    scene = phongvk.load_scene(str(ROOT / "scenes" / "paper" / f"{name}.json"))
-    return {"name": f"paper: {name}", "mesh": ("scene", str(ROOT / "scenes" / "paper" / f"{name}.json")),
-            "size": (scene.width, scene.height)}
+    path = str(ROOT / "scenes" / "paper" / f"{name}.json")
+    scene = phongvk.load_scene(path)
+    return {"name": f"paper: {name}", "mesh": ("scene", path), "size": (scene.width, scene.height)}
 
 
 # What a mesh workload is drawn with, by every renderer: one material, one white light.
@@ -142,11 +142,11 @@ def orbit(mesh, frames):
     c = mesh["camera"]
     up = c["up"] / np.linalg.norm(c["up"])
     offset = c["eye"] - c["target"]
+    along = np.dot(offset, up) * up
+    across = offset - along
     out = []
     for i in range(frames):
         a = 2 * np.pi * i / max(frames, 1)
-        along = np.dot(offset, up) * up
-        across = offset - along
         out.append(c["target"] + along + np.cos(a) * across + np.sin(a) * np.cross(up, across))
     return out
 

@@ -72,10 +72,10 @@ std::string tallyText(int met, int judged) {
   return met == judged ? "**yes**, all " + std::to_string(judged) : "**no**: " + std::to_string(met) + " of " + std::to_string(judged);
 }
 
-// A target's row for runs of one kind: how many met it, and each miss with what was measured (or
-// why the run failed).
 std::string seconds(double x) { return std::isnan(x) ? "–" : number(x, 2) + " s"; }
 
+// A target's row for runs of one kind: how many met it, and each miss with what was measured
+// (`format`: a ratio by default), or why the run failed.
 template <typename Run>
 std::string runsTargetRow(const std::string& target, const std::vector<Run>& runs, bool (*met)(const Run&),
                           double (*measured)(const Run&), std::string (*format)(double) = ratio) {

@@ -14,10 +14,10 @@
 # (shaders/no_contraction.cpp: glslang's `precise` stops at function boundaries, and no optimizer
 # may rewrite an operation the reference computes as written), and the module goes through
 # spirv-opt -O unless its name is in OPT_SKIP, and is decorated again after it: the copies its loop
-# unroller makes of a loop's body can lack the decoration (setupClipped's snapping did). The optimized module is what every driver compiles:
-# lavapipe turns SPIR-V into NIR and optimizes it in every process, and inlining, scalar
-# replacement and dead-code removal done once here take much of that off each process
-# (docs/DECISIONS.md, "Shaders are optimized at build time").
+# unroller makes of a loop's body can lack the decoration (setupClipped's snapping did). The
+# optimized module is what every driver compiles: lavapipe turns SPIR-V into NIR and optimizes it
+# in every process, and inlining, scalar replacement and dead-code removal done once here take
+# much of that off each process (docs/DECISIONS.md, "Shaders are optimized at build time").
 # `target` is a custom target the users of the headers depend on.
 find_program(PHONGVK_SPIRV_OPT spirv-opt REQUIRED)  # Debian: spirv-tools
 set(PHONGVK_EMBED_SPIRV ${CMAKE_CURRENT_LIST_DIR}/embed_spirv.cmake)

@@ -268,9 +268,6 @@ TEST(Api, TriangleMeshesAreSharedAndRenderAsTheirSources) {
   std::filesystem::remove(bad);
 }
 
-// Non-square pixels and a principal point off centre, then outside the image (the frustum's side
-// planes, the guard band and the near plane's clipping about it), with 16 samples a pixel: the
-// same bytes on both backends.
 // Scene::triangles: the built geometry in world coordinates, each triangle with its object.
 TEST(Api, TrianglesAreTheBuiltGeometryInWorldCoordinates) {
   Scene scene = parseScene(R"({"camera": {"position": [0, -8, 1], "look_at": [0, 0, 0], "width": 64, "height": 48},
@@ -306,6 +303,9 @@ TEST(Api, TrianglesAreTheBuiltGeometryInWorldCoordinates) {
   EXPECT_EQ(box[1], (Vec3{11, 1, 1}));
 }
 
+// Non-square pixels and a principal point off centre, then outside the image (the frustum's side
+// planes, the guard band and the near plane's clipping about it), with 16 samples a pixel: the
+// same bytes on both backends.
 TEST(Api, IntrinsicsRenderTheSameOnBothBackends) {
   Scene scene = loadScene(source("scenes/intrinsics.json")).withImageSize(96, 72).withRender({.samples = 16});
   Renderer gpu(validatedGpu()), cpu(Backend::Cpu);

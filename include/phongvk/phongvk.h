@@ -32,14 +32,14 @@ namespace phongvk {
 PHONGVK_API const char* version();
 PHONGVK_API const char* revision();
 
-// A validated scene: camera, lights, materials, objects (docs/DESIGN.md "Scene file"). Cheap to
-// copy (copies share the validated model). Meshes are built by the renderer that first renders it.
 // Scene::triangles: the scene's built geometry in world coordinates.
 struct SceneTriangles {
   MeshArrays mesh;               // positions, normals, triangles (3 vertex indices each)
   std::vector<int32_t> objects;  // per triangle: its object's index in the scene
 };
 
+// A validated scene: camera, lights, materials, objects (docs/DESIGN.md "Scene file"). Cheap to
+// copy (copies share the validated model). Meshes are built by the renderer that first renders it.
 class PHONGVK_API Scene {
  public:
   // An empty scene to build in code, rendered at width x height pixels (1..16384 each): the
