@@ -22,7 +22,17 @@ std::string kindOf(mode_t mode) {
 
 }  // namespace
 
+std::string printablePath(const std::string& path) {
+  std::string text;
+  for (char c : path) text += c == '\0' ? std::string("\\0") : std::string(1, c);
+  return text;
+}
+
 std::optional<RegularFile> RegularFile::open(const std::string& path, std::string& why) {
+  if (path.find('\0') != std::string::npos) {  // the system would open the path up to it: another file
+    why = "the path contains a NUL character";
+    return std::nullopt;
+  }
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
   if (fd < 0) {
     why = std::strerror(errno);

@@ -12,6 +12,9 @@ namespace phongvk {
 
 // A read-only descriptor of the regular file at `path`, closed with the object. Opened with
 // O_NONBLOCK (a FIFO's open returns at once) and checked with fstat before a byte is read.
+// `path` for a message: a NUL in it written \0 (a message is read up to its first NUL).
+std::string printablePath(const std::string& path);
+
 class RegularFile {
  public:
   // The file, or std::nullopt with `why` set: the system's reason ("No such file or directory",

@@ -63,8 +63,10 @@ Scene frameAsAsked(const Scene& sequence, int index, const ViewOptions& options)
 }
 
 LoadOptions loadOptions(const ViewOptions& options) {
+  // The memory limit holds from the first file read: a scene's textures are decoded as it loads.
+  if (!options.maxMemoryGb.empty()) setMemoryLimit(memoryLimitBytes(options.maxMemoryGb, "--max-memory-gb"));
   return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up),
-          !options.projection.empty() && parseOrthographic(options.projection)};
+          options.projection.empty() ? std::nullopt : std::optional<bool>(parseOrthographic(options.projection))};
 }
 
 Scene loadEveryFrameValidated(const ViewOptions& options) {
@@ -74,8 +76,6 @@ Scene loadEveryFrameValidated(const ViewOptions& options) {
 }
 
 RendererOptions rendererOptions(const ViewOptions& options, const std::string& backend) {
-  // The scene memory limit goes with the renderer, which checks every scene against it.
-  if (!options.maxMemoryGb.empty()) setMemoryLimit(memoryLimitBytes(options.maxMemoryGb, "--max-memory-gb"));
   const Backend chosen = parseBackend(backend);
   if (chosen == Backend::Cpu && options.device >= 0)
     throw UsageError("--device " + std::to_string(options.device) + " selects a Vulkan device, and --backend cpu uses none");

@@ -32,8 +32,8 @@ struct ViewOptions {
   std::string projection;  // --projection perspective|orthographic: a model file alone's fitted camera ("": perspective)
 };
 
-// --up as the library takes it.
-LoadOptions loadOptions(const ViewOptions& options);
+// --up and --projection as the library takes them.
+LoadOptions loadOptions(const ViewOptions& options);  // and sets --max-memory-gb, before any file is read
 
 struct RenderOptions : ViewOptions {
   std::string output;

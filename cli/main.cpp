@@ -63,6 +63,11 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
       ->check(CLI::Range(phongvk::PNG_LEVEL_MIN, phongvk::PNG_LEVEL_MAX));
 }
 
+// A file or folder to write: an empty name would write nothing, or fail only after rendering.
+const CLI::Validator OUTPUT_NAME(
+    [](const std::string& text) { return text.empty() ? std::string("must name a file, got an empty name") : std::string(); },
+    "FILE");
+
 // `render` also offers the graphics-pipeline baseline ("graphics", or by its older name
 // "raster"); sequences use the other two.
 void addBackendOption(CLI::App* command, std::string& backend, bool withGraphics = false) {
@@ -100,7 +105,9 @@ int main(int argc, char** argv) {
   RenderOptions render;
   CLI::App* renderCmd = app.add_subcommand("render", "Render a scene to PNG");
   addViewOptions(renderCmd, render);
-  renderCmd->add_option("-o,--output", render.output, "Output PNG ('-': standard output, the summary then goes to standard error)")->required();
+  renderCmd->add_option("-o,--output", render.output, "Output PNG ('-': standard output, the summary then goes to standard error)")
+      ->required()
+      ->check(OUTPUT_NAME);
   addBackendOption(renderCmd, render.backend, true);
   renderCmd->add_option("--repeat", render.repeat, "Time N frames after a warm-up and print the median")
       ->check(CLI::Range(1, 100000));
@@ -112,19 +119,23 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--depth", render.depth,
                         "Also write the depth along the camera axis: FILE.png, 16-bit grey in millimetres (rounded, "
                         "0 where empty, at most 65535: the TUM/NYU RGB-D datasets' convention), or FILE.npy, float32 "
-                        "metres, +inf where empty");
+                        "metres, +inf where empty")
+      ->check(OUTPUT_NAME);
   renderCmd->add_option("--ids", render.ids,
                         "Also write each pixel's object: FILE.png, 16-bit grey, object index + 1 (0 where empty; at "
-                        "most 65534 objects), or FILE.npy, int32 index, -1 where empty");
+                        "most 65534 objects), or FILE.npy, int32 index, -1 where empty")
+      ->check(OUTPUT_NAME);
   renderCmd->add_option("--normals", render.normals,
                         "Also write each pixel's shading normal in camera space (x right, y up, z forward): "
                         "FILE.png, 8-bit RGB normal map, (n + 1) / 2 * 255 rounded (0, 0, 0 where empty), or "
-                        "FILE.npy, float32 (height, width, 3), 0, 0, 0 where empty");
+                        "FILE.npy, float32 (height, width, 3), 0, 0, 0 where empty")
+      ->check(OUTPUT_NAME);
 
   DiffOptions diff;
   CLI::App* diffCmd = app.add_subcommand("diff", "Render with both backends and compare pixel by pixel");
   addViewOptions(diffCmd, diff);
-  diffCmd->add_option("--heatmap", diff.heatmap, "Write a PNG showing where the images differ");
+  diffCmd->add_option("--heatmap", diff.heatmap, "Write a PNG showing where the images differ")
+      ->check(OUTPUT_NAME);
   diffCmd->add_option("--tolerance", diff.tolerance, "Largest allowed channel difference, in 8-bit units (default 1)")
       ->check(CLI::Validator(
           [](const std::string& text) {
@@ -138,10 +149,12 @@ int main(int argc, char** argv) {
   CLI::App* sequenceCmd = app.add_subcommand("sequence", "Render the frames of an animated scene to numbered PNGs");
   addViewOptions(sequenceCmd, sequence);
   sequenceCmd->add_option("-o,--output", sequence.outputDir, "Folder for frame_0000.png, frame_0001.png, ...")
-      ->required();
+      ->required()
+      ->check(OUTPUT_NAME);
   sequenceCmd->add_option("--frames", sequence.frames,
                           "START:END[:STEP], END excluded like a Python slice (default: every frame)");
-  sequenceCmd->add_option("--sheet", sequence.sheet, "Also write a contact sheet of the frames (PNG)");
+  sequenceCmd->add_option("--sheet", sequence.sheet, "Also write a contact sheet of the frames (PNG)")
+      ->check(OUTPUT_NAME);
   sequenceCmd->add_flag("--skip-existing", sequence.skipExisting,
                         "Keep the frames an earlier run already wrote whole, and render only the others "
                         "(a restarted or requeued job wastes no work)");

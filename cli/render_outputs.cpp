@@ -86,6 +86,26 @@ void writeNormals(const RenderOptions& options, const RenderedFrame& frame) {
   writePng(options.normals, normalMap(frame), options.pngLevel);
 }
 
+// Each file written names a file of its own: two options naming one file would leave only the
+// last written, with an exit status of 0. Names are compared as the files they reach (x.png,
+// ./x.png and a link to it are one file); standard output ('-') is no file.
+void checkDistinctFiles(const RenderOptions& options) {
+  const std::pair<const char*, const std::string*> files[] = {
+      {"-o", &options.output}, {"--depth", &options.depth}, {"--ids", &options.ids}, {"--normals", &options.normals}};
+  std::vector<std::pair<std::filesystem::path, const char*>> seen;
+  for (const auto& [option, path] : files) {
+    if (path->empty() || *path == "-") continue;
+    std::error_code error;
+    std::filesystem::path file = std::filesystem::weakly_canonical(*path, error);
+    if (error) file = std::filesystem::absolute(*path).lexically_normal();
+    for (const auto& [other, otherOption] : seen) {
+      if (other == file)
+        throw UsageError(std::string(option) + " " + *path + ": the same file as " + otherOption + "; each output needs a file of its own");
+    }
+    seen.push_back({file, option});
+  }
+}
+
 }  // namespace
 
 Outputs outputsAsked(const RenderOptions& options) {
@@ -98,6 +118,7 @@ Outputs outputsAsked(const RenderOptions& options) {
 }
 
 void checkOutputFiles(const RenderOptions& options, const Scene& scene) {
+  checkDistinctFiles(options);
   if (fileKind(options.ids, "--ids") == FileKind::Png && scene.objectCount() > MAX_PNG_OBJECTS) {
     throw UsageError("--ids " + options.ids + ": a 16-bit PNG holds at most " + std::to_string(MAX_PNG_OBJECTS) +
                      " objects' ids, the scene has " + std::to_string(scene.objectCount()) + ": write .npy instead");

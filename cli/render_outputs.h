@@ -12,7 +12,7 @@ namespace phongvk::cli {
 // --depth, --ids or --normals file that is neither .png nor .npy.
 Outputs outputsAsked(const RenderOptions& options);
 
-// Throws UsageError when --ids FILE.png cannot hold the scene's object ids in 16 bits, and
+// Throws UsageError when two of -o, --depth, --ids and --normals name one file, when --ids FILE.png cannot hold the scene's object ids in 16 bits, and
 // OutputError when a --depth, --ids or --normals file could not be written (checkWritable).
 void checkOutputFiles(const RenderOptions& options, const Scene& scene);
 

@@ -274,7 +274,7 @@ int runSequence(const SequenceOptions& options) {
     const Scene sequence = loadScene(options.scene, loadOptions(options));
     const FrameRange range = parseFrameRange(options.frames, sequence.frameCount());
     const std::vector<Scene> frames = prepareFrames(sequence, range, options);
-    const RendererOptions rendering = rendererOptions(options, options.backend);  // the memory limit too
+    const RendererOptions rendering = rendererOptions(options, options.backend);
     checkSheetMemory(options, sequence, frames);
     prepareOutputs(options, sequence.frameCount());
     Renderer renderer(rendering);

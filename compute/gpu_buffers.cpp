@@ -46,14 +46,20 @@ void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");
   checkFits(context, sizeof(IdList) + data.triangles.size() * sizeof(uint32_t), "the clip list");
   texels(data.uvs.size() * sizeof(VertexUv), "the texture coordinates");
-  texels(data.texels.size() * sizeof(uint32_t) + TEXEL_BYTES - 1, "the textures' texels");
+  texels(data.texelCount * sizeof(uint32_t) + TEXEL_BYTES - 1, "the textures' texels");
 }
 
-// The textures' texels, four to a texel (bindings.glsl poolTexel), the last texel padded.
-void createTexelPool(TexelBuffer& pool, const VulkanContext& context, const std::vector<uint32_t>& texels) {
-  const VkDeviceSize bytes = texels.size() * sizeof(uint32_t);
+// The textures' texels, four to a texel (bindings.glsl poolTexel), the last texel padded. Each
+// texture is uploaded from where it was decoded, one at a time: the host never holds a second copy
+// of them all.
+void createTexelPool(TexelBuffer& pool, const VulkanContext& context, const SceneData& data) {
+  const VkDeviceSize bytes = data.texelCount * sizeof(uint32_t);
   createTexelBuffer(pool, context, nullptr, (bytes + TEXEL_BYTES - 1) / TEXEL_BYTES * TEXEL_BYTES, 0, MemoryKind::DeviceLocal);
-  if (bytes != 0) uploadToBuffer(context, pool.buffer, texels.data(), bytes);
+  for (size_t t = 0; t < data.textureImages.size(); ++t) {
+    const Texels& texels = data.textureImages[t]->texels;
+    uploadToBuffer(context, pool.buffer, texels.data(), texels.size() * sizeof(uint32_t),
+                   VkDeviceSize(data.textures[t].offset) * sizeof(uint32_t));
+  }
 }
 
 template <typename T>
@@ -106,7 +112,7 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   textured_ = !data.uvs.empty();
   createTexelBuffer(scene_.uvs, context_, data.uvs, MemoryKind::DeviceLocal);
   createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal);
-  createTexelPool(scene_.texelPool, context_, data.texels);
+  createTexelPool(scene_.texelPool, context_, data);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
   createBuffer(scene_.clipList, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
 }

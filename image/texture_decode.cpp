@@ -1,15 +1,14 @@
-// texture_decode.cpp — see texture_decode.h. stb_image's implementation is compiled in
-// png_read.cpp (PNG and JPEG only).
+// texture_decode.cpp — see texture_decode.h. The codecs are in png_decode.cpp and jpeg_decode.cpp.
 #include "image/texture_decode.h"
 
+#include "base/memory_limit.h"
+#include "base/memory_text.h"
 #include "base/regular_file.h"
+#include "image/texture_codecs.h"
 #include "phongvk/errors.h"
 
-#include <stb_image.h>
-
 #include <climits>
-#include <cstring>
-#include <memory>
+#include <algorithm>
 #include <optional>
 #include <string_view>
 
@@ -19,33 +18,45 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what, const std::string& why) { throw SceneError(what + ": " + why); }
 
-// Encoded images over 1 GiB are refused before decoding (stb_image takes an int size).
+// Encoded images over 1 GiB are refused before decoding.
 constexpr size_t MAX_ENCODED_BYTES = size_t(1) << 30;
+
+// What the image's header says, before any pixel is decoded: a side within gpu::TEXTURE_MAX_SIDE,
+// and its texels (width x height x 4 bytes) within the memory limit beside every texture the
+// process already holds.
+void checkSize(uint32_t width, uint32_t height, const std::string& what) {
+  const uint32_t side = gpu::TEXTURE_MAX_SIDE;
+  if (width == 0 || height == 0 || width > side || height > side) {
+    fail(what, "the image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels; a texture's sides are 1 to " +
+                   std::to_string(side));
+  }
+  const uint64_t bytes = uint64_t(width) * height * 4, held = heldTexelBytes(), limit = sceneMemoryLimit();
+  if (held + bytes > limit) {
+    throw SceneError(memoryMessage(what, "a " + std::to_string(width) + "x" + std::to_string(height) + " texture", held + bytes,
+                                   limit, std::to_string(bytes) + " bytes decoded, beside " + std::to_string(held) +
+                                              " bytes of textures held already",
+                                   "smaller or fewer textures fit"));
+  }
+}
+
+// The first bytes of something that is not a PNG or JPEG, for the message.
+std::string signatureOf(std::string_view bytes) {
+  static const char* hex = "0123456789abcdef";
+  std::string text;
+  for (size_t i = 0; i < bytes.size() && i < 8; ++i) {
+    text += std::string(i ? " " : "") + hex[uint8_t(bytes[i]) >> 4] + hex[uint8_t(bytes[i]) & 15];
+  }
+  return text.empty() ? "it is empty" : "it starts " + text;
+}
 
 }  // namespace
 
 TextureImage decodeTexture(const std::string& bytes, const std::string& what) {
   if (bytes.size() > MAX_ENCODED_BYTES || bytes.size() > size_t(INT_MAX)) fail(what, "the image file is over 1 GiB");
-  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int size = int(bytes.size());
-  int width = 0, height = 0, channels = 0;
-  if (!stbi_info_from_memory(data, size, &width, &height, &channels)) {
-    fail(what, std::string("not a PNG or JPEG image (") + stbi_failure_reason() + ")");
-  }
-  const uint32_t side = gpu::TEXTURE_MAX_SIDE;
-  if (width <= 0 || height <= 0 || uint32_t(width) > side || uint32_t(height) > side) {
-    fail(what, "the image is " + std::to_string(width) + "x" + std::to_string(height) + " pixels; a texture's sides are 1 to " +
-                   std::to_string(side));
-  }
-  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load_from_memory(data, size, &width, &height, &channels, 4),
-                                                    stbi_image_free);
-  if (!pixels) fail(what, std::string("cannot decode the image (") + stbi_failure_reason() + ")");
-  TextureImage texture;
-  texture.width = uint32_t(width);
-  texture.height = uint32_t(height);
-  texture.texels.resize(size_t(width) * size_t(height));
-  std::memcpy(texture.texels.data(), pixels.get(), texture.texels.size() * 4);  // RGBA bytes: red in the low byte
-  return texture;
+  const AcceptSize accept = [&](uint32_t width, uint32_t height) { checkSize(width, height, what); };
+  if (isPng(bytes)) return decodePng(bytes, what, accept);
+  if (isJpeg(bytes)) return decodeJpeg(bytes, what, accept);
+  fail(what, "not a PNG or JPEG image (" + signatureOf(bytes) + ")");
 }
 
 namespace {
@@ -82,7 +93,7 @@ TextureImage readTextureSource(const std::string& source, const std::string& wha
 TextureImage readTextureFile(const std::string& path, const std::string& what) {
   std::string why;
   const std::optional<RegularFile> file = RegularFile::open(path, why);
-  if (!file) fail(what, "cannot open '" + path + "': " + why);
+  if (!file) fail(what, "cannot open '" + printablePath(path) + "': " + why);
   return decodeTexture(file->read(), what);
 }
 

@@ -334,12 +334,24 @@ class Reader {
     if (decoded) return decoded;
     const tinygltf::Texture& t = model_.textures[size_t(index)];
     if (t.source < 0 || size_t(t.source) >= model_.images.size()) fail(where_, path_, name + " has no image");
-    TextureImage image = decodedImage(t.source);
+    decoded = image(t.source);
     if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
-      image.wrapU = wrapMode(model_.samplers[size_t(t.sampler)].wrapS);
-      image.wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
+      const uint32_t wrapU = wrapMode(model_.samplers[size_t(t.sampler)].wrapS);
+      const uint32_t wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
+      if (wrapU != decoded->wrapU || wrapV != decoded->wrapV) {  // a copy only for a sampler that wraps otherwise
+        TextureImage wrapped = *decoded;
+        wrapped.wrapU = wrapU;
+        wrapped.wrapV = wrapV;
+        decoded = std::make_shared<const TextureImage>(std::move(wrapped));
+      }
     }
-    decoded = std::make_shared<const TextureImage>(std::move(image));
+    return decoded;
+  }
+
+  // Image `index`, decoded once however many textures use it.
+  std::shared_ptr<const TextureImage> image(int index) {
+    std::shared_ptr<const TextureImage>& decoded = images_[index];
+    if (!decoded) decoded = std::make_shared<const TextureImage>(decodedImage(index));
     return decoded;
   }
 
@@ -373,6 +385,7 @@ class Reader {
   std::vector<MeshPart> parts_;
   std::vector<bool> visited_;  // nodes reached so far
   std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by texture index, once decoded
+  std::map<int, std::shared_ptr<const TextureImage>> images_;    // by image index, once decoded
   std::vector<std::string> ignoredMaps_;  // the kinds of map seen that are not rendered
 };
 

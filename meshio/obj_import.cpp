@@ -185,48 +185,70 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   const std::string& where_;
 };
 
-// The face corner with an index outside the file's positions or normals, named by its line: the
-// first whose index, resolved as tinyobjloader resolves it (positive: 1-based; negative: back from
-// the last 'v' or 'vn' line before it), is not one of the file's. Run only once an index is known
-// to be bad, so the common case pays nothing for the line numbers.
-[[noreturn]] void failAtBadIndex(std::string_view text, size_t positionCount, size_t normalCount,
-                                 const std::string& path, const std::string& where) {
-  size_t positions = 0, normals = 0;
-  const auto bad = [](int64_t index, size_t before, size_t count) {
-    const int64_t resolved = index > 0 ? index - 1 : int64_t(before) + index;
-    return resolved < 0 || uint64_t(resolved) >= count;
+// The number of each kind of index a face corner has: position, texture coordinate, normal.
+struct IndexCounts {
+  size_t positions = 0, texcoords = 0, normals = 0;
+};
+
+// The face corner with an index outside the file's positions, texture coordinates or normals,
+// named by its line: the first whose index, resolved as tinyobjloader resolves it (positive:
+// 1-based; negative: back from the last 'v', 'vt' or 'vn' line before it), is not one of the
+// file's; empty when every index is. Run only once an index looks bad, so the common case pays
+// nothing for the line numbers.
+std::string badIndexAt(std::string_view text, const IndexCounts& count) {
+  IndexCounts before;
+  std::string found;
+  const auto bad = [](int64_t index, size_t lines, size_t total) {
+    const int64_t resolved = index > 0 ? index - 1 : int64_t(lines) + index;
+    return resolved < 0 || uint64_t(resolved) >= total;
   };
   forEachLine(text, [&](size_t lineNumber, const std::vector<std::string_view>& words) {
-    if (words[0] == "v") ++positions;
-    if (words[0] == "vn") ++normals;
+    if (!found.empty()) return;
+    if (words[0] == "v") ++before.positions;
+    if (words[0] == "vt") ++before.texcoords;
+    if (words[0] == "vn") ++before.normals;
     if (words[0] != "f") return;
-    for (size_t w = 1; w < words.size(); ++w) {
+    for (size_t w = 1; w < words.size() && found.empty(); ++w) {
       const std::string_view corner = words[w];
       const size_t slash = corner.find('/'), second = slash == std::string_view::npos ? slash : corner.find('/', slash + 1);
-      int64_t v = 0, vn = 0;
+      const size_t texEnd = std::min(second, corner.size());
+      int64_t v = 0, vt = 0, vn = 0;
       std::from_chars(corner.data(), corner.data() + std::min(slash, corner.size()), v);
+      const bool hasTexcoord = slash != std::string_view::npos && slash + 1 < texEnd;
+      if (hasTexcoord) std::from_chars(corner.data() + slash + 1, corner.data() + texEnd, vt);
       const bool hasNormal = second != std::string_view::npos && second + 1 < corner.size();
       if (hasNormal) std::from_chars(corner.data() + second + 1, corner.data() + corner.size(), vn);
       const std::string at = "line " + std::to_string(lineNumber) + ": face corner '" + std::string(corner.substr(0, 40)) + "': ";
-      if (bad(v, positions, positionCount))
-        fail(where, path, at + "vertex index " + std::to_string(v) + " is out of range (the file has " +
-                              std::to_string(positionCount) + " vertices)");
-      if (hasNormal && bad(vn, normals, normalCount))
-        fail(where, path, at + "normal index " + std::to_string(vn) + " is out of range (the file has " +
-                              std::to_string(normalCount) + " normals)");
+      if (bad(v, before.positions, count.positions))
+        found = at + "vertex index " + std::to_string(v) + " is out of range (the file has " + std::to_string(count.positions) + " vertices)";
+      else if (hasTexcoord && bad(vt, before.texcoords, count.texcoords))
+        found = at + "texture coordinate index " + std::to_string(vt) + " is out of range (the file has " +
+                std::to_string(count.texcoords) + " 'vt' lines)";
+      else if (hasNormal && bad(vn, before.normals, count.normals))
+        found = at + "normal index " + std::to_string(vn) + " is out of range (the file has " + std::to_string(count.normals) + " normals)";
     }
   });
-  fail(where, path, "a face's index is out of range (the file has " + std::to_string(positionCount) + " vertices and " +
-                        std::to_string(normalCount) + " normals)");
+  return found;
 }
 
+// Every index of every face corner is one of the file's lines. tinyobjloader leaves an index it
+// cannot resolve below 0, where -1 also means "none": a corner with -1 where the file has lines
+// of that kind is checked against the text, as is every index out of range.
 void checkIndices(const ObjData& data, std::string_view text, const std::string& path, const std::string& where) {
-  const size_t positionCount = data.positions.size() / 3, normalCount = data.normals.size() / 3;
+  const IndexCounts count{data.positions.size() / 3, data.texcoords.size() / 2, data.normals.size() / 3};
+  const auto outside = [](int index, size_t total) { return index < -1 || (index >= 0 && size_t(index) >= total); };
+  bool surely = false, maybe = false;
   for (const tinyobj::index_t& c : data.corners) {
-    if (c.vertex_index < 0 || size_t(c.vertex_index) >= positionCount ||
-        (c.normal_index >= 0 && size_t(c.normal_index) >= normalCount))
-      failAtBadIndex(text, positionCount, normalCount, path, where);
+    surely = surely || c.vertex_index < 0 || size_t(c.vertex_index) >= count.positions ||
+             outside(c.texcoord_index, count.texcoords) || outside(c.normal_index, count.normals);
+    maybe = maybe || (c.texcoord_index == -1 && count.texcoords > 0) || (c.normal_index == -1 && count.normals > 0);
   }
+  if (!surely && !maybe) return;
+  const std::string at = badIndexAt(text, count);
+  if (!at.empty()) fail(where, path, at);
+  if (surely)
+    fail(where, path, "a face's index is out of range (the file has " + std::to_string(count.positions) + " vertices, " +
+                          std::to_string(count.texcoords) + " 'vt' lines and " + std::to_string(count.normals) + " normals)");
 }
 
 // The maps of material m other than map_Kd, by their keywords, added to `names` once each.
@@ -254,8 +276,10 @@ ObjData parse(const std::string& path, const std::string& where) {
   if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &in, &libraries, false, false))
     fail(where, path, "not a valid OBJ file: " + firstLine(error));
   // tinyobjloader skips a quad with a bad index, with only this warning.
-  if (warning.find("invalid vertex index") != std::string::npos)
-    failAtBadIndex(file.bytes(), attrib.vertices.size() / 3, attrib.normals.size() / 3, path, where);
+  if (warning.find("invalid vertex index") != std::string::npos) {
+    const std::string at = badIndexAt(file.bytes(), {attrib.vertices.size() / 3, attrib.texcoords.size() / 2, attrib.normals.size() / 3});
+    fail(where, path, at.empty() ? "a face has an invalid vertex index" : at);
+  }
   ObjData data{attrib.vertices, attrib.normals, attrib.texcoords, {}, faceSizes, {}, {}};
   for (const tinyobj::material_t& m : materials) {
     data.diffuseMaps.push_back(m.diffuse_texname);
@@ -385,21 +409,11 @@ Mesh buildMesh(const ObjData& data, bool fileNormals, const std::string& path, c
   return mesh;
 }
 
-// Every texture coordinate index is one of the file's 'vt' lines.
-void checkTexcoordIndices(const ObjData& data, const std::string& path, const std::string& where) {
-  const size_t count = data.texcoords.size() / 2;
-  for (const tinyobj::index_t& c : data.corners) {
-    if (c.texcoord_index >= 0 && size_t(c.texcoord_index) >= count)
-      fail(where, path, "a face's texture coordinate index is out of range (the file has " + std::to_string(count) + " 'vt' lines)");
-  }
-}
-
 }  // namespace
 
 Mesh importObj(const std::string& path, const std::string& where) {
   ObjData data = parse(path, where);
   checkPositions(data, path, where);
-  checkTexcoordIndices(data, path, where);
   Mesh mesh = buildMesh(data, hasFileNormals(data), path, where);
   mesh.notice = ignoredMapsNotice(path, data.ignoredMaps);
   return mesh;

@@ -3,6 +3,7 @@
 // of it, the estimate and the limit, not an allocation failure (or the OOM killer) minutes later.
 #pragma once
 
+#include "base/memory_limit.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -20,18 +21,6 @@ inline constexpr uint64_t BYTES_PER_PIXEL = 32;
 // Triangles an object will have (mesh files: mesh_file.h meshFileTriangles, estimated when the
 // scene was loaded).
 uint64_t estimatedTriangles(const Object& object);
-
-// The memory a scene may use: the machine's physical memory, or PHONGVK_MAX_MEMORY_GB (a number of
-// GiB, to raise or lower it), or what setSceneMemoryLimit set (0: back to those).
-// Throws SceneError for a PHONGVK_MAX_MEMORY_GB that parseMemoryLimit refuses.
-uint64_t sceneMemoryLimit();
-// The smallest limit that can be set, in GiB (about 1 MiB): below it no scene fits.
-inline constexpr double MIN_MEMORY_GIB = 0.001;
-// A limit in GiB as text ("4", "0.5", "1e3") in bytes; a value too large for 64 bits is no limit.
-// Throws SceneError "<what> is '<text>': expected a number of GiB, at least 0.001 ..." for
-// anything else: empty, not a number, NaN, below MIN_MEMORY_GIB.
-uint64_t parseMemoryLimit(const std::string& text, const std::string& what);
-void setSceneMemoryLimit(uint64_t bytes);
 
 // Throws SceneError "<file>: the scene needs about N GiB (...), more than the M GiB limit; most
 // of it: objects[2] (... triangles), ..." when the estimate exceeds sceneMemoryLimit(). `pixels`

@@ -68,11 +68,14 @@ std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, si
 
 // Texture `image`'s index in data.textures, its texels appended to the pool the first time (each
 // texture once, however many meshes, objects or materials share it).
-uint32_t pooledTexture(SceneData& data, const TextureImage& image) {
-  const auto [it, added] = data.textureIndex.emplace(&image, uint32_t(data.textures.size()));
+uint32_t pooledTexture(SceneData& data, const std::shared_ptr<const TextureImage>& image) {
+  const auto [it, added] = data.textureIndex.emplace(image.get(), uint32_t(data.textures.size()));
   if (!added) return it->second;
-  data.textures.push_back({uint32_t(data.texels.size()), image.width, image.height, image.wrapU | image.wrapV << 8});
-  data.texels.insert(data.texels.end(), image.texels.begin(), image.texels.end());
+  if (data.texelCount + image->texels.size() > std::numeric_limits<uint32_t>::max())
+    throw SceneError("the scene's textures hold more than 2^32 texels");
+  data.textures.push_back({uint32_t(data.texelCount), image->width, image->height, image->wrapU | image->wrapV << 8});
+  data.textureImages.push_back(image);
+  data.texelCount += image->texels.size();
   return it->second;
 }
 
@@ -82,7 +85,7 @@ void appendTexturing(SceneData& data, const Mesh& mesh, const MaterialSpec& mate
   if (material.textureImage && mesh.uvs.empty())
     throw SceneError(object + ".material.texture: the object's mesh has no texture coordinates to sample it with");
   std::vector<uint32_t> index;
-  for (const auto& texture : mesh.textures) index.push_back(pooledTexture(data, *texture));
+  for (const auto& texture : mesh.textures) index.push_back(pooledTexture(data, texture));
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     const uint32_t own = mesh.textureIds.empty() ? gpu::TEXTURE_NONE : mesh.textureIds[i];
     data.uvs.push_back({mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[i], own == gpu::TEXTURE_NONE ? own : index[own], 0u});
@@ -183,7 +186,7 @@ SceneData buildSceneData(const SceneSpec& scene) {
     meshes[i] = {};  // freed as soon as copied
   }
   for (const Object& object : scene.objects) {
-    if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, *texture);
+    if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, texture);
   }
   keepShare(data, scene);
   data.lightingOrigin = meanOrigin(data.objectOrigins);
@@ -195,7 +198,7 @@ SceneData buildSceneData(const SceneSpec& scene) {
 }
 
 uint64_t textureBytes(const SceneData& data) {
-  return data.texels.size() * sizeof(uint32_t) + data.uvs.size() * sizeof(gpu::VertexUv) +
+  return data.texelCount * sizeof(uint32_t) + data.uvs.size() * sizeof(gpu::VertexUv) +
          data.textures.size() * sizeof(gpu::TextureData);
 }
 

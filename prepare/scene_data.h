@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace phongvk {
@@ -28,10 +29,12 @@ struct SceneData {
   std::vector<gpu::MaterialData> materials;
   std::vector<gpu::LightData> lights;       // positions relative to lightingOrigin
   // Textures (docs/DESIGN.md "Textures"): for a scene with any, each vertex's texture coordinate and
-  // texture, and every texture once (TextureData::offset into `texels`, RGBA8); empty otherwise.
+  // texture, and every texture once: its texels (RGBA8) held where they were decoded, not copied,
+  // TextureData::offset counting the texels of the textures before it; empty otherwise.
   std::vector<gpu::VertexUv> uvs;
   std::vector<gpu::TextureData> textures;
-  std::vector<uint32_t> texels;
+  std::vector<std::shared_ptr<const TextureImage>> textureImages;  // one per entry of `textures`
+  uint64_t texelCount = 0;  // of every texture
   uint32_t textureFilter = gpu::TEXTURE_FILTER_BILINEAR;
   std::map<const TextureImage*, uint32_t> textureIndex;  // each texture's index in `textures`
   std::vector<std::string> notices;  // the meshes' (Mesh::notice), each once
@@ -66,6 +69,11 @@ struct FrameInputs {
 // One object's mesh (object_mesh.h buildObjectMesh), its SceneError led by the scene's file; a
 // model file alone's names that file and its line only ("m.ply: line 7: ...").
 ObjectMesh buildSceneObject(const SceneSpec& scene, const Object& object);
+
+// Texel `index` of the textures' pool (TextureData::offset + the texel's index in texture `texture`).
+inline uint32_t pooledTexel(const SceneData& data, uint32_t texture, uint32_t index) {
+  return data.textureImages[texture]->texels[index - data.textures[texture].offset];
+}
 
 // The bytes a built scene's textures take: texels, texture coordinates and the texture table.
 uint64_t textureBytes(const SceneData& data);

@@ -750,18 +750,20 @@ phongvk.scene_from_dict(scene.to_dict()) renders the same bytes.)")
 
   m.def(
       "load_scene",
-      [](const std::string& path, std::optional<std::string> up, const std::string& projection) {
-        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual, parseOrthographic(projection)});
+      [](const std::string& path, std::optional<std::string> up, std::optional<std::string> projection) {
+        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual,
+                                           projection ? std::optional<bool>(parseOrthographic(*projection)) : std::nullopt});
       },
-      py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = "perspective",
+      py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = py::none(),
       R"(Reads and validates a scene file (the CLI's schema), or a model file (.obj .ply .stl .gltf
 .glb) as a scene of its own: the model in full view, lit from the camera. Raises SceneError naming
 the file and the JSON path.
 
 up: None, "y" or "z": the up axis of a model file loaded alone, for one whose exporter used the
     other convention (None: its format's usual one, y for glTF and OBJ, z for PLY and STL).
-projection: "perspective" or "orthographic": the fitted camera of a model file loaded alone (a
-    scene file's camera says its own).)");
+projection: None, "perspective" or "orthographic": the fitted camera of a model file loaded alone
+    (None: perspective); a scene file's camera says its own, and either given with one is an
+    error.)");
   m.def("scene_from_dict", &sceneFromDict, py::arg("d"), py::arg("base_dir") = py::none(),
         R"(A scene from a dict with the scene file's schema, validated the same way.
 

@@ -81,7 +81,8 @@ uint32_t pixelTexel(const SceneData& data, const FrameInputs& in, glm::uvec4 tri
   const uint32_t texture = textureOf(in.materials[in.objects[tri.w].material], a);
   if (texture == TEXTURE_NONE) return VERTEX_WHITE;
   const TextureTaps k = textureTaps(data.textures[texture], interpolateUv(a.uv, b.uv, c.uv, bary), in.frame.textureFilter);
-  return blendTaps(data.texels[k.i00], data.texels[k.i10], data.texels[k.i01], data.texels[k.i11], k);
+  return blendTaps(pooledTexel(data, texture, k.i00), pooledTexel(data, texture, k.i10), pooledTexel(data, texture, k.i01),
+                   pooledTexel(data, texture, k.i11), k);
 }
 
 // Flat or Phong shading, or any shading in a scene with textures: triangle `tri`'s colour at pixel

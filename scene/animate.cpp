@@ -181,7 +181,7 @@ SceneSequence SceneSequence::load(const std::string& path, const ModelView& mode
     throw ArgumentError(path + ": an up axis applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "
                         "in a scene file each mesh object has its own \"up\"");
   }
-  if (modelView.orthographic) {
+  if (modelView.orthographic.has_value()) {
     throw ArgumentError(path + ": a projection applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "
                         "a scene file's camera has its own \"projection\"");
   }

@@ -20,7 +20,7 @@ scenejson::Json modelScene(const std::string& path, const ModelView& view) {
   const std::string file = std::filesystem::absolute(path).string();
   const glm::vec3 noFallOff = noFallOffMaterial().attenuation;
   scenejson::Json camera = {{"fit", true}, {"width", 960}, {"height", 720}};
-  if (view.orthographic) {
+  if (view.orthographic.value_or(false)) {
     camera["projection"] = "orthographic";
   } else {
     camera["fov"] = 40;

@@ -17,7 +17,7 @@ bool isModelFile(const std::string& path);
 // it, mesh_file.h usuallyYUp) and an orthographic camera instead of the perspective one.
 struct ModelView {
   std::optional<UpAxis> up;
-  bool orthographic = false;
+  std::optional<bool> orthographic;  // given: whether the fitted camera is orthographic (else perspective)
 };
 
 // The scene for a model alone: the mesh (standing up along view.up; back faces drawn), a camera

@@ -275,7 +275,7 @@ TEST(HostileFrames, ADamagedFrameIsNotKept) {
 // ---- the memory limit ----
 
 TEST(HostileMemoryLimit, OnlyANumberOfGibSetsIt) {
-  for (const char* bad : {"abc", "-1", "nan", "0", "", "1e-12", "0.0001", "4GB", " "}) {
+  for (const char* bad : {"abc", "-1", "nan", "0", "", "1e-12", "0.0001", "4GB", " ", "inf", "1e400", "-inf"}) {
     EXPECT_EQ(test::thrownMessage<SceneError>([&] { parseMemoryLimit(bad, "PHONGVK_MAX_MEMORY_GB"); }),
               std::string("PHONGVK_MAX_MEMORY_GB is '") + bad + "': expected a number of GiB, at least 0.001 (e.g. 4 or 0.5)")
         << bad;

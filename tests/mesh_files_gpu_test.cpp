@@ -420,6 +420,12 @@ TEST(MeshFiles, OrthographicViewOfAModelAlone) {
   EXPECT_EQ(withScene.exitCode, 2) << withScene.output;
   EXPECT_NE(withScene.output.find("basic.json: a projection applies to a model file rendered alone"), std::string::npos)
       << withScene.output;
+  // perspective too: a scene file's camera says its own projection, whichever is asked.
+  const CommandResult perspective =
+      runCli("render " + test::sourcePath("scenes/orthographic.json") + " --projection perspective -o '" + dir + "/s.png'");
+  EXPECT_EQ(perspective.exitCode, 2) << perspective.output;
+  EXPECT_NE(perspective.output.find("orthographic.json: a projection applies to a model file rendered alone"), std::string::npos)
+      << perspective.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/s.png"));
 }
 

@@ -80,6 +80,14 @@ TEST(ObjMesh, BadFilesNameTheJsonPathAndTheFile) {
                  "line 4: face corner '-7': vertex index -7 is out of range (the file has 3 vertices)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 9\n",
                  "line 5: face corner '9': vertex index 9 is out of range (the file has 4 vertices)");
+  // A texture coordinate index out of range, positive or negative (tinyobjloader leaves a bad
+  // negative one as "none").
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/-100 2/2 3/3\n",
+                 "line 7: face corner '1/-100': texture coordinate index -100 is out of range (the file has 3 'vt' lines)");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/-4 2/2 3/3\n",
+                 "line 7: face corner '1/-4': texture coordinate index -4 is out of range (the file has 3 'vt' lines)");
+  expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//-2 2//1 3//1\n",
+                 "line 5: face corner '1//-2': normal index -2 is out of range (the file has 1 normals)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 1 1 2\n",
                  "every triangle is degenerate (zero area)");
   // tinyobjloader reads these as 0; they must not become a vertex at the origin.

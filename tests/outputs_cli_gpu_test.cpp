@@ -170,6 +170,13 @@ TEST_F(OutputsCli, RefusalsComeBeforeAnyFileIsWritten) {
                 "--normals " + out + "/n.jpg: the file must end in .png (8-bit RGB) or .npy (NumPy)", out);
   expectRefused(render("--backend graphics -o " + out + "/c.png --rgba"), "the graphics backend has no visibility keys",
                 out);
+  // Two outputs in one file (as named, or through another spelling of its path), or an empty name.
+  expectRefused(render("-o " + out + "/x.png --depth " + out + "/x.png"),
+                "--depth " + out + "/x.png: the same file as -o; each output needs a file of its own", out);
+  expectRefused(render("-o " + out + "/c.png --depth " + out + "/a.npy --ids " + out + "/../out/a.npy"),
+                "--ids " + out + "/../out/a.npy: the same file as --depth; each output needs a file of its own", out);
+  expectRefused(render("-o " + out + "/c.png --depth ''"), "--depth: must name a file, got an empty name", out);
+  expectRefused(render("-o ''"), "--output: must name a file, got an empty name", out);
   // With --mpi (which otherwise gives these files too: tests/mpi_render_test.sh), before MPI starts.
   expectRefused(render("--mpi -o " + out + "/c.png --normals " + out + "/n.exr"),
                 "--normals " + out + "/n.exr: the file must end in .png (8-bit RGB) or .npy (NumPy)", out);

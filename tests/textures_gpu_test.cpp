@@ -217,7 +217,10 @@ TEST(Textures, BadTexturesNameTheSceneTheObjectTheModelAndTheImage) {
       << message;
   writeFile(dir + "/checker.png", "\x89PNG\r\n\x1a\n not really");
   message = thrownMessage<SceneError>([&] { Renderer(Backend::Cpu).render(loadScene(scene)); });
-  EXPECT_NE(message.find("map_Kd 'checker.png': not a PNG or JPEG image"), std::string::npos) << message;
+  EXPECT_NE(message.find("map_Kd 'checker.png': PNG: cannot read its header: [20]rea: invalid chunk type"), std::string::npos) << message;
+  writeFile(dir + "/checker.png", "GIF89a not a texture");
+  message = thrownMessage<SceneError>([&] { Renderer(Backend::Cpu).render(loadScene(scene)); });
+  EXPECT_NE(message.find("map_Kd 'checker.png': not a PNG or JPEG image (it starts 47 49 46 38 39 61 20 6e)"), std::string::npos) << message;
   Image huge;
   huge.width = int(TEXTURE_MAX_SIDE) + 1;
   huge.height = 1;

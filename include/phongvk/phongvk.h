@@ -164,9 +164,10 @@ PHONGVK_API bool parseOrthographic(const std::string& projection);
 
 struct LoadOptions {
   ModelUp up = ModelUp::Usual;  // only for a model file alone: a scene file names each object's "up"
-  // Only for a model file alone: a fitted orthographic camera (its view spanning the model with a
-  // margin) instead of the perspective one; a scene file's camera says its own "projection".
-  bool orthographic = false;
+  // Only for a model file alone: true, a fitted orthographic camera (its view spanning the model
+  // with a margin); false, the perspective one (as when not given). A scene file's camera says its
+  // own "projection", and either given with one is an error.
+  std::optional<bool> orthographic;
 };
 
 // Reads and validates a scene file, or a model file (.obj .ply .stl .gltf .glb) as a scene of its

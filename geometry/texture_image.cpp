@@ -1,0 +1,17 @@
+// texture_image.cpp — see texture_image.h.
+#include "geometry/texture_image.h"
+
+#include <algorithm>
+
+namespace phongvk {
+namespace {
+
+std::atomic<int64_t> held{0};
+
+}  // namespace
+
+uint64_t heldTexelBytes() { return uint64_t(std::max<int64_t>(held.load(), 0)); }
+
+void addHeldTexelBytes(int64_t bytes) { held += bytes; }
+
+}  // namespace phongvk
