@@ -100,6 +100,8 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"phongvk: Phong illumination per vertex, Gouraud interpolation, on Vulkan compute or the CPU reference"};
   app.require_subcommand(1);
+  // Usage errors read as every other error of the command: "error: ..." (a validator's message too).
+  app.failure_message([](const CLI::App* failed, const CLI::Error& e) { return "error: " + CLI::FailureMessage::simple(failed, e); });
   app.set_version_flag("--version", std::string("phongvk ") + phongvk::version() + " (" + phongvk::revision() + ")");
 
   RenderOptions render;

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes the scene loader, the mesh file importers, the glTF importer with its external buffers and
+# Fuzzes the scene loader, the mesh file importers, the glTF importer with its external buffers, the
+# PNG and JPEG texture decoder (fuzz/texture_fuzzer.cpp, seeds fuzz/texture_corpus) and
 # scene_from_dict's path from Python values, each for a bounded time (default 60 s a target;
 # FUZZ_SECONDS overrides), with libFuzzer, ASan and UBSan (fuzz/scene_fuzzer.cpp,
 # fuzz/mesh_fuzzer.cpp, fuzz/gltf_fuzzer.cpp, fuzz/dict_fuzzer.cpp). Seeds: fuzz/corpus (small bad
@@ -42,6 +43,7 @@ run() {
 run scene fuzz/corpus scenes
 run mesh fuzz/mesh_corpus
 run gltf fuzz/gltf_corpus
+run texture fuzz/texture_corpus
 # -detect_leaks=0: CPython keeps freed objects on free lists and cyclic garbage until its collector
 # runs, so nearly every input ends with more mallocs than frees, and libFuzzer would then run a
 # leak check after each one (about 30 inputs a second instead of 1,800). LSan's check at exit still

@@ -224,6 +224,25 @@ TEST(SequenceCli, SceneErrorInALaterFrameWritesNothing) {
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
+// --max-memory-gb holds from the first frame checked: a samples track that takes frame 1 past it
+// fails before frame 0 is written, naming frame 1.
+TEST(SequenceCli, AFrameThatGrowsPastTheMemoryLimitWritesNothing) {
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/grows.json", R"({
+    "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 1000, "height": 1000},
+    "objects": [{"shape": "sphere"}],
+    "render": {"samples": 1},
+    "animate": {"frames": 2, "tracks": [{"path": "render.samples", "values": [1, 16]}]}
+  })");
+  const test::CommandResult result = sequenceCli(dir + "/grows.json", dir + "/out", "--max-memory-gb 0.3");
+  EXPECT_EQ(result.exitCode, 2) << result.output;
+  EXPECT_NE(result.output.find("grows.json: frame 1: the scene needs about 0.48 GiB (960 triangles, 16000000 pixels), "
+                               "more than the 0.30 GiB limit"),
+            std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
 // SIGINT (or SIGTERM) stops a long sequence after the frame in flight: exit 128 + the signal, a
 // message saying how far it got, every frame file whole, no temporary file and no sheet; the same
 // command again completes the set.
