@@ -341,4 +341,10 @@ PHONGVK_API uint64_t memoryLimitBytes(const std::string& gib, const std::string&
 // they are built), needs more than the memory limit: the check every renderer makes before it
 // builds, for a caller that wants it before rendering anything (every frame of a sequence first).
 PHONGVK_API void checkSceneMemory(const Scene& scene);
+// The most texels a texture may have across or down (docs/DESIGN.md "Textures").
+inline constexpr int64_t MAX_TEXTURE_SIDE = 16384;
+// Throws for a texture of width x height texels that no scene can hold, for a caller to ask before
+// it copies or encodes one: ArgumentError "<what>: ..." for a side outside 1..MAX_TEXTURE_SIDE,
+// SceneError naming <what> when its texels (4 bytes each) need more than the memory limit.
+PHONGVK_API void checkTextureSize(int64_t width, int64_t height, const std::string& what);
 }  // namespace phongvk
