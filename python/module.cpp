@@ -749,10 +749,12 @@ and holds it once), one object with .vertices and .faces arrays (a trimesh.Trime
 vertices with faces; material and closed as in add_mesh.)")
       .def(
           "set_pose", [](Scene& s, unsigned long long id, const py::object& pose) { s.setPose(ObjectId{id}, matrix4(pose, "pose")); },
-          py::arg("object"), py::arg("pose"), "Moves an object added with add() (IndexError for an unknown handle).")
+          py::arg("object"), py::arg("pose"),
+          "Moves an object added with add(). IndexError for a handle this scene does not hold: one removed, or "
+          "one another scene gave (handles are unique to the scene that gave them).")
       .def(
           "remove", [](Scene& s, unsigned long long id) { s.remove(ObjectId{id}); }, py::arg("object"),
-          "Takes out an object added with add() (IndexError for an unknown handle).")
+          "Takes out an object added with add() (IndexError for a handle this scene does not hold, as set_pose).")
       .def_property_readonly("bounds", &Scene::bounds,
                              "The world box around every object's vertices, as built: (min, max), each (x, y, z). "
                              "Builds the meshes to know.")

@@ -97,7 +97,10 @@ class PHONGVK_API Scene {
   ObjectId add(const TriangleMesh& mesh, const Matrix4& pose = IDENTITY_POSE,
                const std::optional<Material>& material = std::nullopt, bool closed = false);
   ObjectId add(const TriangleMesh& mesh, const Matrix4& pose, const std::string& materialName, bool closed = false);
-  // Moves an object added with add; RangeError for a handle this scene does not hold.
+  // Moves an object added with add, or takes it out. A handle names one object of the scene that
+  // gave it for that scene's life (a copy that changes is another scene, whose new handles are its
+  // own); RangeError for one this scene does not hold, saying whether it was removed or belongs to
+  // another scene.
   void setPose(ObjectId object, const Matrix4& pose);
   void remove(ObjectId object);
 
@@ -148,8 +151,8 @@ class PHONGVK_API Scene {
 
  private:
   struct State;  // the validated model and the sequence frame() comes from (api/scene.cpp)
-  explicit Scene(std::shared_ptr<const State> state);
-  std::shared_ptr<const State> state_;
+  explicit Scene(std::shared_ptr<State> state);
+  std::shared_ptr<State> state_;  // shared by copies; a change copies it unless this scene holds it alone
   friend struct SceneAccess;  // the library's own way in (api/scene_access.h)
 };
 
