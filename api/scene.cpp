@@ -5,6 +5,7 @@
 #include "api/scene_access.h"
 #include "api/triangle_mesh_access.h"
 #include "api/scene_parts.h"
+#include "prepare/memory_estimate.h"
 #include "prepare/scene_data.h"
 
 #include "scene/animate.h"
@@ -199,13 +200,41 @@ void Scene::remove(ObjectId object) {
   state.added.erase(state.added.begin() + ptrdiff_t(i));
 }
 
+namespace {
+
+// The meshes of `spec` built as a renderer builds them, after the renderer's memory check (a frame of
+// no pixels: nothing is rendered).
+SceneData builtMeshes(const SceneSpec& spec) {
+  checkSceneMemory(spec, 0);
+  return buildSceneData(spec);
+}
+
+// What triangles() returns beside the built scene: positions and normals (3 floats each) a vertex,
+// three int64 indices and an int32 object a triangle.
+constexpr uint64_t RETURNED_BYTES_PER_VERTEX = 24;
+constexpr uint64_t RETURNED_BYTES_PER_TRIANGLE = 28;
+
+// Throws SceneError when the built scene `data` and the arrays triangles() makes of it need more
+// than the memory limit, before they are made.
+void checkTrianglesMemory(const SceneSpec& spec, const SceneData& data) {
+  const uint64_t vertices = data.vertices.size(), triangles = data.triangles.size();
+  checkMemory(spec.path, "Scene::triangles", triangles * (BYTES_PER_TRIANGLE + RETURNED_BYTES_PER_TRIANGLE) +
+                                                 vertices * RETURNED_BYTES_PER_VERTEX,
+              std::to_string(triangles) + " triangles and " + std::to_string(vertices) +
+                  " vertices as built, and the arrays of them it returns",
+              "simpler meshes fit");
+}
+
+}  // namespace
+
 std::array<Vec3, 2> Scene::bounds() const {
-  const SceneData data = buildSceneData(*state_->spec);
+  const SceneData data = builtMeshes(*state_->spec);
   return {Vec3{data.boundsMin.x, data.boundsMin.y, data.boundsMin.z}, Vec3{data.boundsMax.x, data.boundsMax.y, data.boundsMax.z}};
 }
 
 SceneTriangles Scene::triangles() const {
-  const SceneData data = buildSceneData(*state_->spec);
+  const SceneData data = builtMeshes(*state_->spec);
+  checkTrianglesMemory(*state_->spec, data);
   SceneTriangles out;
   out.mesh.positions.reserve(data.vertices.size() * 3);
   out.mesh.normals.reserve(data.vertices.size() * 3);

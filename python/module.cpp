@@ -757,7 +757,7 @@ vertices with faces; material and closed as in add_mesh.)")
           "Takes out an object added with add() (IndexError for a handle this scene does not hold, as set_pose).")
       .def_property_readonly("bounds", &Scene::bounds,
                              "The world box around every object's vertices, as built: (min, max), each (x, y, z). "
-                             "Builds the meshes to know.")
+                             "Builds the meshes to know; SceneError first for a scene beyond the memory limit, as rendering it.")
       .def(
           "triangles",
           [](const Scene& s) {
@@ -774,7 +774,8 @@ vertices with faces; material and closed as in add_mesh.)")
           "poses applied), in world coordinates: a dict of numpy arrays, vertices (N, 3) float32, normals "
           "(N, 3) float32 (unit), faces (M, 3) int64 (vertex indices) and objects (M,) int32 (each "
           "triangle's object, its index in the scene's objects). For drawing the same geometry with another "
-          "renderer, or exporting it. Builds the meshes, as bounds does.")
+          "renderer, or exporting it. Builds the meshes, as bounds does; SceneError for a scene whose meshes, "
+          "or the arrays of them, need more than the memory limit.")
       .def_property("camera", &Scene::camera, &Scene::setCamera,
                     "The camera (a phongvk.Camera); assigning one checks it like a scene file's \"camera\".")
       .def_property("lights", &Scene::lights, &Scene::setLights,

@@ -106,13 +106,16 @@ class PHONGVK_API Scene {
 
   // The world box around every object's vertices, as built: {min, max}. Builds the meshes to know
   // (a renderer builds its own again), so a program placing cameras about a model asks once.
+  // Throws SceneError, before building, for a scene whose meshes need more than the memory limit
+  // (checkSceneMemory's check, for a frame of no pixels).
   std::array<Vec3, 2> bounds() const;
 
   // Every triangle as both renderers draw it (shapes tessellated, meshes subdivided, transforms and
   // poses applied), in world coordinates: positions, unit vertex normals and vertex indices in
   // `mesh` (no uvs), and each triangle's object (its index in the scene's objects) in `objects`.
   // For drawing the same geometry with another renderer, or exporting it. Builds the meshes, as
-  // bounds() does.
+  // bounds() does, and checks the memory limit as it does, then again with what it returns (24
+  // bytes a vertex, 28 a triangle) before it makes it.
   SceneTriangles triangles() const;
 
   // The camera as a value, and a new one (checked like a scene file's "camera": SceneError

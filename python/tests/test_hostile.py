@@ -230,3 +230,27 @@ def test_a_texture_arrays_errors_name_texture():
         phongvk.Material(texture=np.zeros((0, 4, 3), np.uint8))
     with pytest.raises(ValueError, match=r"^texture: expected a uint8 array .* got dict of dtype object"):
         phongvk.Material(texture={"pixels": 1})
+
+
+ICOSPHERE = ("scene = phongvk.scene_from_dict({'camera': {'position': [0, -3, 0], 'look_at': [0, 0, 0], 'width': 64, "
+             "'height': 48}, 'objects': [{'shape': 'icosphere', 'subdivide': %d}]})\n")
+
+
+@pytest.mark.parametrize("call", ["scene.triangles()", "scene.bounds"])
+def test_triangles_and_bounds_check_the_memory_limit_before_they_build(call):
+    """A scene a renderer refuses (21M triangles, about 2.2 GiB, under a 1 GiB limit) is refused by
+    triangles() and bounds too, before anything is built (they took 1.5 GiB and 1.2 GiB)."""
+    code, out, peak = run_child(ICOSPHERE % 10 + call, limit_gib=1)
+    assert code == 0 and out.startswith("SceneError: the scene needs about 2.2 GiB (20971520 triangles, 0 pixels), "
+                                        "more than the 1.0 GiB limit"), out
+    assert peak < 0.25 * (1 << 30)
+
+
+def test_triangles_count_the_arrays_they_return():
+    """5.2M triangles take 0.55 GiB to build, under a 0.6 GiB limit, but with the arrays triangles()
+    returns (0.2 GiB more) they do not fit: refused once built, before the arrays are made."""
+    code, out, peak = run_child(ICOSPHERE % 9 + "scene.triangles()", limit_gib=0.6)
+    assert code == 0 and out.startswith("SceneError: Scene::triangles needs about 0.7"), out
+    assert peak < 1.25 * 0.6 * (1 << 30)
+    code, out, _ = run_child(ICOSPHERE % 9 + "print(len(scene.triangles()['faces']))", limit_gib=0.8)
+    assert out.startswith("5242880"), out
