@@ -5,6 +5,7 @@
 #include "api/scene_access.h"
 #include "api/triangle_mesh_access.h"
 #include "api/scene_parts.h"
+#include "prepare/memory_estimate.h"
 #include "prepare/scene_data.h"
 
 #include "scene/animate.h"
@@ -13,6 +14,7 @@
 #include "scene/scene.h"
 #include "scene/scene_write.h"
 
+#include <atomic>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -33,68 +35,92 @@ struct AddedMesh {
   Matrix4 pose = IDENTITY_POSE;
 };
 
-// Appends `added` to `spec` as a mesh object at its pose.
+// Appends `added` to `spec` as a mesh object at its pose; `spec` is unchanged where it throws.
 void appendAdded(SceneSpec& spec, const AddedMesh& added) {
+  Object check;
+  placeObject(check, added.pose);  // a bad pose throws before the scene changes
   addMeshObject(spec, added.mesh, added.material, added.closed);
   placeObject(spec.objects.back(), added.pose);
 }
 
+// Every scene's handles carry its serial, so that a handle one scene gave names nothing in another.
+std::atomic<uint64_t> nextSerial{1};
+
 }  // namespace
 
+// A scene changes in place where no other scene shares its state (n adds take linear time); a
+// scene that shares it (a copy, a derived scene) changes a copy of its own, and is another scene
+// from then on, with a serial of its own.
 struct Scene::State {
-  std::shared_ptr<const SceneSpec> spec;
+  std::shared_ptr<SceneSpec> spec;                // shared with other states until one changes it
   std::shared_ptr<const SceneSequence> sequence;  // where frame() comes from; none for one frame
   std::vector<AddedMesh> added;                   // in the order they were added: the spec's last objects
-  unsigned long long nextId = 1;
+  uint64_t serial = nextSerial++;                 // a handle's upper 32 bits
+  uint64_t nextObject = 1;                        // its lower 32 bits: each object's number in this scene
 
-  // Where `id` is in `added`; RangeError for a handle this scene does not hold.
-  size_t position(ObjectId id, const std::string& path) const {
+  // `state` made its scene's own to change: as it is where no other scene shares it, else a copy
+  // with a serial of its own.
+  static State& own(std::shared_ptr<State>& state) {
+    if (state.use_count() != 1) {
+      state = std::make_shared<State>(*state);
+      state->serial = nextSerial++;
+    }
+    return *state;
+  }
+  // `state`'s model replaced by `spec`: the same scene, its handles kept.
+  static void replaceSpec(std::shared_ptr<State>& state, SceneSpec spec) {
+    own(state).spec = std::make_shared<SceneSpec>(std::move(spec));
+  }
+  // The model, likewise this state's own to change.
+  SceneSpec& ownSpec() {
+    if (spec.use_count() != 1) spec = std::make_shared<SceneSpec>(*spec);
+    return *spec;
+  }
+
+  // Where `id` is in `added`; RangeError for a handle this scene does not hold, saying whether it
+  // was removed or belongs to another scene.
+  size_t position(ObjectId id) const {
     for (size_t i = 0; i < added.size(); ++i) {
       if (added[i].id == id) return i;
     }
-    throw RangeError((path.empty() ? "" : path + ": ") + "no object " + std::to_string(id.value) +
-                     " (removed, or added to another scene)");
+    const std::string at = spec->path.empty() ? "" : spec->path + ": ";
+    if (id.value >> 32 == serial)
+      throw RangeError(at + "object " + std::to_string(id.value) + " was removed from this scene");
+    throw RangeError(at + "object " + std::to_string(id.value) +
+                     " belongs to another scene (or was removed before this scene was copied)");
   }
   // The index in spec->objects of added[i].
   size_t objectIndex(size_t i) const { return spec->objects.size() - added.size() + i; }
 
-  // Adds `mesh` to `scene` (whose state this is) with `material` as a scene file's "material".
-  ObjectId add(Scene& scene, std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::Json material,
-               bool closed) const {
-    const ObjectId id{nextId};
-    const AddedMesh added{id, std::move(mesh), std::move(material), closed, pose};
-    scene = changed([&](SceneSpec& spec, State& state) {
-      appendAdded(spec, added);
-      state.added.push_back(added);
-      ++state.nextId;
-    });
+  // Adds `mesh` with `material` as a scene file's "material"; unchanged where it throws.
+  ObjectId add(std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::Json material, bool closed) {
+    if (nextObject >> 32) throw ArgumentError("a scene gives at most 2^32 - 1 handles");
+    const ObjectId id{serial << 32 | nextObject};
+    AddedMesh placed{id, std::move(mesh), std::move(material), closed, pose};
+    appendAdded(ownSpec(), placed);
+    added.push_back(std::move(placed));
+    ++nextObject;
     return id;
   }
 
   // This scene with another model: the sequence and the added meshes stay.
-  Scene with(std::shared_ptr<const SceneSpec> other) const {
-    return Scene(std::make_shared<const State>(State{std::move(other), sequence, added, nextId}));
-  }
-  // This scene with a copy of its model and of this state changed by change(spec, state).
-  template <typename Change>
-  Scene changed(Change change) const {
-    auto copy = std::make_shared<SceneSpec>(*spec);
-    State next = *this;
-    change(*copy, next);
-    next.spec = std::move(copy);
-    return Scene(std::make_shared<const State>(std::move(next)));
+  Scene with(std::shared_ptr<SceneSpec> other) const {
+    auto state = std::make_shared<State>(*this);
+    state->spec = std::move(other);
+    state->serial = nextSerial++;
+    return Scene(std::move(state));
   }
 };
 
-Scene::Scene(std::shared_ptr<const State> state) : state_(std::move(state)) {}
+Scene::Scene(std::shared_ptr<State> state) : state_(std::move(state)) {}
 
 Scene::Scene(int width, int height)
-    : state_(std::make_shared<const State>(State{std::make_shared<const SceneSpec>(sceneInCode(width, height))})) {}
+    : state_(std::make_shared<State>(State{std::make_shared<SceneSpec>(sceneInCode(width, height))})) {}
 
 const SceneSpec& SceneAccess::spec(const Scene& scene) { return *scene.state_->spec; }
 
-Scene SceneAccess::make(std::shared_ptr<const SceneSpec> spec, std::shared_ptr<const SceneSequence> sequence) {
-  return Scene(std::make_shared<const Scene::State>(Scene::State{std::move(spec), std::move(sequence)}));
+Scene SceneAccess::make(std::shared_ptr<SceneSpec> spec, std::shared_ptr<const SceneSequence> sequence) {
+  return Scene(std::make_shared<Scene::State>(Scene::State{std::move(spec), std::move(sequence)}));
 }
 
 const std::string& Scene::path() const { return state_->spec->path; }
@@ -111,12 +137,14 @@ Scene Scene::withImageSize(int width, int height) const {
 }
 
 Scene Scene::withRender(const RenderSettings& settings) const {
-  return state_->with(std::make_shared<const SceneSpec>(withRenderSettings(*state_->spec, settings)));
+  return state_->with(std::make_shared<SceneSpec>(withRenderSettings(*state_->spec, settings)));
 }
 
 RenderSettings Scene::renderSettings() const { return renderSettingsOf(*state_->spec); }
 
-void Scene::setRenderSettings(const RenderSettings& settings) { *this = withRender(settings); }
+void Scene::setRenderSettings(const RenderSettings& settings) {
+  State::replaceSpec(state_, withRenderSettings(*state_->spec, settings));
+}
 
 Scene Scene::share(int part, int parts) const {
   if (parts < 1 || part < 0 || part >= parts) {
@@ -147,39 +175,66 @@ ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::stri
 
 ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::optional<Material>& material,
                     bool closed) {
-  return state_->add(*this, TriangleMeshAccess::mesh(mesh), pose, material ? materialJson(*material) : scenejson::Json(),
-                     closed);
+  const scenejson::Json json = material ? materialJson(*material) : scenejson::Json();
+  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, json, closed);
 }
 
 ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::string& materialName, bool closed) {
-  return state_->add(*this, TriangleMeshAccess::mesh(mesh), pose, scenejson::Json(materialName), closed);
+  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, scenejson::Json(materialName), closed);
 }
 
 void Scene::setPose(ObjectId object, const Matrix4& pose) {
-  const size_t i = state_->position(object, path());
-  *this = state_->changed([&](SceneSpec& spec, State& state) {
-    placeObject(spec.objects[state.objectIndex(i)], pose);
-    state.added[i].pose = pose;
-  });
+  const size_t i = state_->position(object);
+  State& state = State::own(state_);
+  placeObject(state.ownSpec().objects[state.objectIndex(i)], pose);  // unchanged where it throws
+  state.added[i].pose = pose;
 }
 
 void Scene::remove(ObjectId object) {
-  const size_t i = state_->position(object, path());
-  *this = state_->changed([&](SceneSpec& spec, State& state) {
-    const size_t index = state.objectIndex(i);
-    spec.objects.erase(spec.objects.begin() + ptrdiff_t(index));
-    for (size_t k = index; k < spec.objects.size(); ++k) spec.objects[k].jsonPath = "objects[" + std::to_string(k) + "]";
-    state.added.erase(state.added.begin() + ptrdiff_t(i));
-  });
+  const size_t i = state_->position(object);
+  State& state = State::own(state_);
+  SceneSpec& spec = state.ownSpec();
+  const size_t index = state.objectIndex(i);
+  spec.objects.erase(spec.objects.begin() + ptrdiff_t(index));
+  for (size_t k = index; k < spec.objects.size(); ++k) spec.objects[k].jsonPath = "objects[" + std::to_string(k) + "]";
+  state.added.erase(state.added.begin() + ptrdiff_t(i));
 }
 
+namespace {
+
+// The meshes of `spec` built as a renderer builds them, after the renderer's memory check (a frame of
+// no pixels: nothing is rendered).
+SceneData builtMeshes(const SceneSpec& spec) {
+  checkSceneMemory(spec, 0);
+  return buildSceneData(spec);
+}
+
+// What triangles() returns beside the built scene: positions and normals (3 floats each) a vertex,
+// three int64 indices and an int32 object a triangle.
+constexpr uint64_t RETURNED_BYTES_PER_VERTEX = 24;
+constexpr uint64_t RETURNED_BYTES_PER_TRIANGLE = 28;
+
+// Throws SceneError when the built scene `data` and the arrays triangles() makes of it need more
+// than the memory limit, before they are made.
+void checkTrianglesMemory(const SceneSpec& spec, const SceneData& data) {
+  const uint64_t vertices = data.vertices.size(), triangles = data.triangles.size();
+  checkMemory(spec.path, "Scene::triangles", triangles * (BYTES_PER_TRIANGLE + RETURNED_BYTES_PER_TRIANGLE) +
+                                                 vertices * RETURNED_BYTES_PER_VERTEX,
+              std::to_string(triangles) + " triangles and " + std::to_string(vertices) +
+                  " vertices as built, and the arrays of them it returns",
+              "simpler meshes fit");
+}
+
+}  // namespace
+
 std::array<Vec3, 2> Scene::bounds() const {
-  const SceneData data = buildSceneData(*state_->spec);
+  const SceneData data = builtMeshes(*state_->spec);
   return {Vec3{data.boundsMin.x, data.boundsMin.y, data.boundsMin.z}, Vec3{data.boundsMax.x, data.boundsMax.y, data.boundsMax.z}};
 }
 
 SceneTriangles Scene::triangles() const {
-  const SceneData data = buildSceneData(*state_->spec);
+  const SceneData data = builtMeshes(*state_->spec);
+  checkTrianglesMemory(*state_->spec, data);
   SceneTriangles out;
   out.mesh.positions.reserve(data.vertices.size() * 3);
   out.mesh.normals.reserve(data.vertices.size() * 3);
@@ -200,19 +255,19 @@ SceneTriangles Scene::triangles() const {
 Camera Scene::camera() const { return cameraOf(*state_->spec); }
 
 void Scene::setCamera(const Camera& camera) {
-  *this = state_->with(std::make_shared<const SceneSpec>(withCamera(*state_->spec, camera)));
+  State::replaceSpec(state_, withCamera(*state_->spec, camera));
 }
 
 std::vector<Light> Scene::lights() const { return lightsOf(*state_->spec); }
 
 void Scene::setLights(const std::vector<Light>& lights) {
-  *this = state_->with(std::make_shared<const SceneSpec>(withLights(*state_->spec, lights)));
+  State::replaceSpec(state_, withLights(*state_->spec, lights));
 }
 
 Vec3 Scene::ambient() const { return ambientOf(*state_->spec); }
 
 void Scene::setAmbient(const Vec3& ambient) {
-  *this = state_->with(std::make_shared<const SceneSpec>(withAmbient(*state_->spec, ambient)));
+  State::replaceSpec(state_, withAmbient(*state_->spec, ambient));
 }
 
 std::string Scene::toJson() const { return sceneJson(*state_->spec).dump(2); }
@@ -234,7 +289,7 @@ namespace {
 
 // A scene file or text as its sequence (one frame without an "animate" block) and frame 0.
 Scene firstFrame(std::shared_ptr<const SceneSequence> sequence) {
-  auto spec = std::make_shared<const SceneSpec>(sequence->frame(0));
+  auto spec = std::make_shared<SceneSpec>(sequence->frame(0));
   return SceneAccess::make(std::move(spec), std::move(sequence));
 }
 

@@ -12,7 +12,7 @@ namespace phongvk {
 
 struct SceneAccess {
   static const SceneSpec& spec(const Scene& scene);
-  static Scene make(std::shared_ptr<const SceneSpec> spec, std::shared_ptr<const SceneSequence> sequence = nullptr);
+  static Scene make(std::shared_ptr<SceneSpec> spec, std::shared_ptr<const SceneSequence> sequence = nullptr);
 };
 
 }  // namespace phongvk

@@ -58,6 +58,47 @@ std::string shapeText(const py::array& a) {
   return text + (a.ndim() == 1 ? ",)" : ")");
 }
 
+std::string typeName(const py::handle& value) { return py::str(py::type::of(value).attr("__name__")); }
+
+// `value` as a numpy array of numbers (integers or floating point) for the argument `name`, whose
+// form `expected` describes: an array as it is, anything else (nested lists or tuples, an
+// array-like) through numpy.asarray. ValueError naming `name` for anything else: ragged rows,
+// strings, objects, a dict, booleans, complex numbers (a cast would drop their imaginary part).
+py::array numberArray(const py::handle& value, const char* name, const std::string& expected) {
+  py::array a;
+  if (py::isinstance<py::array>(value)) {
+    a = py::reinterpret_borrow<py::array>(value);
+  } else {
+    try {
+      a = py::module_::import("numpy").attr("asarray")(value);
+    } catch (py::error_already_set& e) {
+      if (e.matches(PyExc_MemoryError)) throw;
+      throw py::value_error(std::string(name) + ": expected " + expected + ", got " + typeName(value) + " (" +
+                            e.what() + ")");
+    }
+  }
+  const char kind = a.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u') {
+    throw py::value_error(std::string(name) + ": expected " + expected + ", got " + typeName(value) + " of dtype " +
+                          std::string(py::str(a.dtype())));
+  }
+  return a;
+}
+
+// The values of `a` (numbers: numberArray) converted to T, row-major, in a vector of their own:
+// numpy copies them once, whatever their strides, straight into it (MemoryError where there is no
+// room, never a half-made copy read).
+template <typename T>
+std::vector<T> valuesOf(const py::array& a) {
+  std::vector<T> values(size_t(a.size()));
+  if (values.empty()) return values;
+  // A writable view of the vector (the capsule, owning nothing, tells numpy not to copy).
+  const py::array_t<T> view(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()), values.data(),
+                            py::capsule(values.data(), [](void*) {}));
+  py::module_::import("numpy").attr("copyto")(view, a, py::arg("casting") = "unsafe");
+  return values;
+}
+
 // What the PNG coder takes from Python: an (H, W, 3) or (H, W, 4) uint8 array (RGB, RGBA) or an
 // (H, W) uint16 array (16-bit grey), copied.
 using PngImage = std::variant<Image, ImageRGBA, ImageGrey16>;
@@ -65,30 +106,36 @@ using PngImage = std::variant<Image, ImageRGBA, ImageGrey16>;
 constexpr const char* PNG_ARRAYS = "a uint8 array of shape (height, width, 3) or (height, width, 4), or a uint16 array "
                                    "of shape (height, width)";
 
-template <typename T>
-std::vector<T> samplesOf(const py::array& array) {
-  const auto contiguous = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(array);
-  return std::vector<T>(contiguous.data(), contiguous.data() + contiguous.size());
-}
-
-PngImage pngImageFromArray(const py::array& array) {
+// ValueError naming `name` for an array that is not an image PNG_ARRAYS describes, or is empty.
+void checkPngArray(const py::array& array, const char* name) {
   const std::string shape = shapeText(array);
   const bool bytes = py::isinstance<py::array_t<uint8_t>>(array), words = py::isinstance<py::array_t<uint16_t>>(array);
   const py::ssize_t channels = array.ndim() == 3 ? array.shape(2) : 0;
-  const bool colour = bytes && (channels == 3 || channels == 4), grey = words && array.ndim() == 2;
-  if (!colour && !grey) {
-    throw py::value_error(std::string("image: expected ") + PNG_ARRAYS + ", got " + std::string(py::str(array.dtype())) +
-                          " of shape " + shape);
+  if (!(bytes && (channels == 3 || channels == 4)) && !(words && array.ndim() == 2)) {
+    throw py::value_error(std::string(name) + ": expected " + PNG_ARRAYS + ", got " +
+                          std::string(py::str(array.dtype())) + " of shape " + shape);
   }
   if (array.shape(0) == 0 || array.shape(1) == 0) {
-    throw py::value_error(std::string("image: expected a non-empty array, got shape ") + shape);
+    throw py::value_error(std::string(name) + ": expected a non-empty array, got shape " + shape);
   }
+}
+
+// The image a checked array (checkPngArray) holds.
+PngImage pngImageOf(const py::array& array) {
   const int w = int(array.shape(1)), h = int(array.shape(0));
-  if (grey) return ImageGrey16{w, h, samplesOf<uint16_t>(array)};
-  if (channels == 4) return ImageRGBA{w, h, samplesOf<uint8_t>(array)};
-  Image image(w, h);
-  image.rgb = samplesOf<uint8_t>(array);
+  if (array.ndim() == 2) return ImageGrey16{w, h, valuesOf<uint16_t>(array)};
+  if (array.shape(2) == 4) return ImageRGBA{w, h, valuesOf<uint8_t>(array)};
+  Image image;
+  image.width = w;
+  image.height = h;
+  image.rgb = valuesOf<uint8_t>(array);
   return image;
+}
+
+// `array`, the argument `name`, as the image it holds.
+PngImage pngImageFromArray(const py::array& array, const char* name) {
+  checkPngArray(array, name);
+  return pngImageOf(array);
 }
 
 // `name` as an (N, 3) array of `kind` ('f': floating point, 'i': integer), flattened row-major.
@@ -103,8 +150,7 @@ std::vector<T> rowsOf3(const py::array& a, const char* name, char kind) {
   if (a.ndim() != 2 || a.shape(1) != 3) {
     throw py::value_error(std::string(name) + ": expected shape (N, 3), got " + shapeText(a));
   }
-  const auto values = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
-  return std::vector<T>(values.data(), values.data() + values.size());
+  return valuesOf<T>(a);
 }
 
 // ---- scenes ----
@@ -114,25 +160,19 @@ Scene sceneFromDict(const py::dict& d, std::optional<std::string> baseDir) {
   return parseScene(json, "", baseDir.value_or("."), true);
 }
 
-// `value` as a numpy array: an array as it is (rowsOf3 checks its dtype), anything else (nested
-// lists or tuples, an array-like) through numpy.asarray, as float64 where `floats`.
+// `value` (the argument `name`) as rows of 3 numbers: an array as it is (rowsOf3 checks its dtype),
+// anything else (nested lists or tuples, an array-like) as float64 where `floats`.
 py::array asArray(const py::handle& value, const char* name, bool floats) {
-  if (py::isinstance<py::array>(value)) return py::reinterpret_borrow<py::array>(value);
-  const py::object asarray = py::module_::import("numpy").attr("asarray");
-  try {
-    return floats ? asarray(value, py::arg("dtype") = "float64") : asarray(value);
-  } catch (py::error_already_set& e) {
-    throw py::value_error(std::string(name) + ": expected an array of shape (N, 3) or rows of 3 numbers, got " +
-                          std::string(py::str(py::type::of(value).attr("__name__"))) + " (" + e.what() + ")");
-  }
+  const py::array a = numberArray(value, name, "an array of shape (N, 3) or rows of 3 numbers");
+  if (!floats || py::isinstance<py::array>(value)) return a;
+  return a.attr("astype")("float64");
 }
 
 // Texture coordinates: an (N, 2) array (or rows of 2 numbers), as floats, flattened.
 std::vector<float> uvRows(const py::object& uvs) {
-  const py::array a = py::module_::import("numpy").attr("asarray")(uvs, py::arg("dtype") = "float64");
+  const py::array a = numberArray(uvs, "uvs", "an array of shape (N, 2) or rows of 2 numbers");
   if (a.ndim() != 2 || a.shape(1) != 2) throw py::value_error("uvs: expected shape (N, 2), got " + shapeText(a));
-  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
-  return std::vector<float>(values.data(), values.data() + values.size());
+  return valuesOf<float>(a);
 }
 
 // The arrays of a mesh: vertices and faces, or (faces None) one object with .vertices and .faces
@@ -166,13 +206,13 @@ MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const
 // A (4, 4) array (or rows of 4 numbers) as a row-major Matrix4; None is the identity.
 Matrix4 matrix4(const py::object& value, const char* name) {
   if (value.is_none()) return IDENTITY_POSE;
-  const py::array a = asArray(value, name, true);
+  const py::array a = numberArray(value, name, "a 4x4 matrix of numbers");
   if (a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
     throw py::value_error(std::string(name) + ": expected a 4x4 matrix, got shape " + shapeText(a));
   }
-  const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
-  Matrix4 m;
-  std::memcpy(m.data(), values.data(), sizeof m);
+  const std::vector<double> values = valuesOf<double>(a);
+  Matrix4 m{};
+  std::copy(values.begin(), values.end(), m.begin());
   return m;
 }
 
@@ -215,21 +255,25 @@ void setFields(py::object& value, const py::dict& fields, const std::string& wha
   }
 }
 
-// A material given to add or add_mesh: a phongvk.Material, a dict of its fields, or None (the
-// scene's default material).
 // A material's texture as Material.texture holds it: None as "", a path as text, an image array
-// ((height, width, 3 or 4) uint8) as a data URI of its PNG.
+// ((height, width, 3 or 4) uint8) as a data URI of its PNG. The array's size is checked against
+// what a texture may be before anything is copied or encoded.
 std::string textureSource(const py::object& texture) {
   if (texture.is_none()) return "";
   if (py::isinstance<py::str>(texture) || py::hasattr(texture, "__fspath__"))
     return py::str(py::module_::import("os").attr("fspath")(texture));
-  const PngImage pixels = pngImageFromArray(py::array::ensure(texture));
+  const py::array array = numberArray(texture, "texture", PNG_ARRAYS);
+  checkPngArray(array, "texture");
+  checkTextureSize(array.shape(1), array.shape(0), "texture");
+  const PngImage pixels = pngImageOf(array);
   const std::vector<uint8_t> png = std::visit([](const auto& any) { return encodePng(any, PNG_LEVEL_DEFAULT); }, pixels);
   const py::object encoded = py::module_::import("base64").attr("b64encode")(
       py::bytes(reinterpret_cast<const char*>(png.data()), png.size()));
   return "data:image/png;base64," + py::str(encoded.attr("decode")("ascii")).cast<std::string>();
 }
 
+// A material given to add or add_mesh: a phongvk.Material, a dict of its fields, or None (the
+// scene's default material).
 std::optional<Material> materialOf(const py::object& material) {
   if (material.is_none()) return std::nullopt;
   if (py::isinstance<Material>(material)) return material.cast<Material>();
@@ -315,9 +359,14 @@ RenderedFrame renderedFrame(Renderer& renderer, const Scene& scene, std::optiona
   return renderer.renderOutputs(s, outputs);
 }
 
-// The output names render(outputs=...) takes, as the library's Outputs.
+// The output names render(outputs=...) takes, as the library's Outputs. Each name once: the dict
+// has one array a name, and outputsDict moves each output out of the frame once.
 Outputs outputsNamed(const std::vector<std::string>& names) {
   Outputs outputs;
+  for (auto name = names.begin(); name != names.end(); ++name) {
+    if (std::find(names.begin(), name, *name) != name)
+      throw ArgumentError("outputs: '" + *name + "' is asked for more than once");
+  }
   for (const std::string& name : names) {
     if (name == "alpha" || name == "rgba") outputs.alpha = true;
     else if (name == "depth") outputs.depth = true;
@@ -700,13 +749,15 @@ and holds it once), one object with .vertices and .faces arrays (a trimesh.Trime
 vertices with faces; material and closed as in add_mesh.)")
       .def(
           "set_pose", [](Scene& s, unsigned long long id, const py::object& pose) { s.setPose(ObjectId{id}, matrix4(pose, "pose")); },
-          py::arg("object"), py::arg("pose"), "Moves an object added with add() (IndexError for an unknown handle).")
+          py::arg("object"), py::arg("pose"),
+          "Moves an object added with add(). IndexError for a handle this scene does not hold: one removed, or "
+          "one another scene gave (handles are unique to the scene that gave them).")
       .def(
           "remove", [](Scene& s, unsigned long long id) { s.remove(ObjectId{id}); }, py::arg("object"),
-          "Takes out an object added with add() (IndexError for an unknown handle).")
+          "Takes out an object added with add() (IndexError for a handle this scene does not hold, as set_pose).")
       .def_property_readonly("bounds", &Scene::bounds,
                              "The world box around every object's vertices, as built: (min, max), each (x, y, z). "
-                             "Builds the meshes to know.")
+                             "Builds the meshes to know; SceneError first for a scene beyond the memory limit, as rendering it.")
       .def(
           "triangles",
           [](const Scene& s) {
@@ -723,7 +774,8 @@ vertices with faces; material and closed as in add_mesh.)")
           "poses applied), in world coordinates: a dict of numpy arrays, vertices (N, 3) float32, normals "
           "(N, 3) float32 (unit), faces (M, 3) int64 (vertex indices) and objects (M,) int32 (each "
           "triangle's object, its index in the scene's objects). For drawing the same geometry with another "
-          "renderer, or exporting it. Builds the meshes, as bounds does.")
+          "renderer, or exporting it. Builds the meshes, as bounds does; SceneError for a scene whose meshes, "
+          "or the arrays of them, need more than the memory limit.")
       .def_property("camera", &Scene::camera, &Scene::setCamera,
                     "The camera (a phongvk.Camera); assigning one checks it like a scene file's \"camera\".")
       .def_property("lights", &Scene::lights, &Scene::setLights,
@@ -876,7 +928,7 @@ by key: the numbers `phongvk diff` prints, as a dict (width, height, pixels, dif
 mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as "report".)");
 
   m.def("write_png", [](const std::string& path, const py::array& image, int level) {
-    const PngImage pixels = pngImageFromArray(image);
+    const PngImage pixels = pngImageFromArray(image, "image");
     const py::gil_scoped_release release;
     std::visit([&](const auto& any) { writePng(path, any, level); }, pixels);
   }, py::arg("path"), py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
@@ -889,7 +941,7 @@ mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as 
         "uint8 (alpha 255 where the file has none), \"grey16\" (height, width) uint16 (a depth PNG's "
         "millimetres, an ids PNG's index + 1; 8-bit samples scaled by 257).");
   m.def("encode_png", [](const py::array& image, int level) {
-    const PngImage pixels = pngImageFromArray(image);
+    const PngImage pixels = pngImageFromArray(image, "image");
     std::vector<uint8_t> png;
     {
       const py::gil_scoped_release release;

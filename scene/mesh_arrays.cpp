@@ -113,13 +113,21 @@ void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const sce
   object.jsonPath = "objects[" + std::to_string(scene.objects.size()) + "]";
   object.closed = closed;
   object.arrays = std::move(mesh);
-  SceneSpec changed = scene;  // the material may add an entry; nothing changes if it fails
-  scenejson::MaterialTable table(changed, "");
+  // The material may add an entry before it fails: taken back then, so the scene is as it was
+  // (without a copy of the scene, which would make n adds take n^2 time).
+  const size_t materials = scene.materials.size();
+  const std::optional<int> defaultMaterial = scene.defaultMaterial;
+  scenejson::MaterialTable table(scene, "");
   std::optional<scenejson::Node> node;
   if (!material.is_null()) node.emplace(material, object.jsonPath + ".material", scene.path);
-  object.material = table.forObject(node);
-  changed.objects.push_back(std::move(object));
-  scene = std::move(changed);
+  try {
+    object.material = table.forObject(node);
+  } catch (...) {
+    scene.materials.erase(scene.materials.begin() + ptrdiff_t(materials), scene.materials.end());
+    scene.defaultMaterial = defaultMaterial;
+    throw;
+  }
+  scene.objects.push_back(std::move(object));
 }
 
 namespace scenejson {

@@ -97,19 +97,25 @@ class PHONGVK_API Scene {
   ObjectId add(const TriangleMesh& mesh, const Matrix4& pose = IDENTITY_POSE,
                const std::optional<Material>& material = std::nullopt, bool closed = false);
   ObjectId add(const TriangleMesh& mesh, const Matrix4& pose, const std::string& materialName, bool closed = false);
-  // Moves an object added with add; RangeError for a handle this scene does not hold.
+  // Moves an object added with add, or takes it out. A handle names one object of the scene that
+  // gave it for that scene's life (a copy that changes is another scene, whose new handles are its
+  // own); RangeError for one this scene does not hold, saying whether it was removed or belongs to
+  // another scene.
   void setPose(ObjectId object, const Matrix4& pose);
   void remove(ObjectId object);
 
   // The world box around every object's vertices, as built: {min, max}. Builds the meshes to know
   // (a renderer builds its own again), so a program placing cameras about a model asks once.
+  // Throws SceneError, before building, for a scene whose meshes need more than the memory limit
+  // (checkSceneMemory's check, for a frame of no pixels).
   std::array<Vec3, 2> bounds() const;
 
   // Every triangle as both renderers draw it (shapes tessellated, meshes subdivided, transforms and
   // poses applied), in world coordinates: positions, unit vertex normals and vertex indices in
   // `mesh` (no uvs), and each triangle's object (its index in the scene's objects) in `objects`.
   // For drawing the same geometry with another renderer, or exporting it. Builds the meshes, as
-  // bounds() does.
+  // bounds() does, and checks the memory limit as it does, then again with what it returns (24
+  // bytes a vertex, 28 a triangle) before it makes it.
   SceneTriangles triangles() const;
 
   // The camera as a value, and a new one (checked like a scene file's "camera": SceneError
@@ -148,8 +154,8 @@ class PHONGVK_API Scene {
 
  private:
   struct State;  // the validated model and the sequence frame() comes from (api/scene.cpp)
-  explicit Scene(std::shared_ptr<const State> state);
-  std::shared_ptr<const State> state_;
+  explicit Scene(std::shared_ptr<State> state);
+  std::shared_ptr<State> state_;  // shared by copies; a change copies it unless this scene holds it alone
   friend struct SceneAccess;  // the library's own way in (api/scene_access.h)
 };
 
@@ -342,4 +348,10 @@ PHONGVK_API uint64_t memoryLimitBytes(const std::string& gib, const std::string&
 // they are built), needs more than the memory limit: the check every renderer makes before it
 // builds, for a caller that wants it before rendering anything (every frame of a sequence first).
 PHONGVK_API void checkSceneMemory(const Scene& scene);
+// The most texels a texture may have across or down (docs/DESIGN.md "Textures").
+inline constexpr int64_t MAX_TEXTURE_SIDE = 16384;
+// Throws for a texture of width x height texels that no scene can hold, for a caller to ask before
+// it copies or encodes one: ArgumentError "<what>: ..." for a side outside 1..MAX_TEXTURE_SIDE,
+// SceneError naming <what> when its texels (4 bytes each) need more than the memory limit.
+PHONGVK_API void checkTextureSize(int64_t width, int64_t height, const std::string& what);
 }  // namespace phongvk

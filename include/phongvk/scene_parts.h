@@ -141,7 +141,8 @@ PHONGVK_API Interpolation parseInterpolation(const std::string& name);
 PHONGVK_API const char* textureFilterName(TextureFilter filter);
 PHONGVK_API TextureFilter parseTextureFilter(const std::string& name);
 
-// An object added in code: its handle for setPose and remove (Scene::add).
+// An object added in code: its handle for setPose and remove (Scene::add), unique to the scene
+// that gave it.
 struct ObjectId {
   unsigned long long value = 0;
   bool operator==(const ObjectId&) const = default;

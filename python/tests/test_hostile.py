@@ -3,6 +3,7 @@
 larger frame than the limit allows. Each gets an exception that names the argument, never a crash."""
 
 import os
+import subprocess
 import sys
 import threading
 
@@ -10,7 +11,7 @@ import numpy as np
 import pytest
 
 import phongvk
-from conftest import scene_path
+from conftest import child_environment, scene_path
 
 CAMERA = {"position": [3, -2, 1.5], "look_at": [0, 0, 0], "width": 96, "height": 64}
 
@@ -135,3 +136,121 @@ def test_every_error_is_a_phongvk_error_and_the_python_kind_it_names():
         phongvk.Renderer("opengl")
     with pytest.raises(phongvk.Error):
         phongvk.read_png(scene_path("scenes/basic.json"))
+
+
+def run_child(code, limit_gib=None, address_space=None):
+    """`code` run by a child interpreter (with PHONGVK_MAX_MEMORY_GB=limit_gib, under an address-space
+    limit of `address_space` bytes): its return code, what it printed, and its peak resident memory
+    in bytes (the child's own ru_maxrss, which it prints last)."""
+    env = child_environment()
+    env.pop("PHONGVK_MAX_MEMORY_GB", None)
+    if limit_gib is not None:
+        env["PHONGVK_MAX_MEMORY_GB"] = str(limit_gib)
+    prologue = "import resource, numpy as np, phongvk\n"
+    if address_space is not None:
+        prologue += "resource.setrlimit(resource.RLIMIT_AS, (%d, %d))\n" % (address_space, address_space)
+    body = "try:\n" + "".join("    " + line + "\n" for line in code.splitlines()) + \
+           "except Exception as e:\n    print(type(e).__name__ + ': ' + str(e))\n"
+    epilogue = "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024)\n"
+    done = subprocess.run([sys.executable, "-c", prologue + body + epilogue], env=env, capture_output=True, text=True,
+                          timeout=120)
+    lines = done.stdout.splitlines()
+    return done.returncode, "\n".join(lines[:-1]) + done.stderr, int(lines[-1]) if lines else 0
+
+
+BROADCAST = "np.broadcast_to(np.zeros((1, 1, 3), np.uint8), (%d, %d, 3))"
+
+
+def test_a_texture_array_too_large_is_refused_before_it_is_copied():
+    gib = 1 << 30
+    code, out, peak = run_child("phongvk.Material(texture=%s)" % (BROADCAST % (30000, 30000)), limit_gib=1)
+    assert code == 0 and out.startswith("ArgumentError: texture: a texture is 1 to 16384 texels a side, got 30000 x 30000")
+    assert peak < 1.25 * gib
+    # 12000 x 12000 fits a texture's sides, but not its 0.54 GiB of texels in a 0.25 GiB limit.
+    code, out, peak = run_child("phongvk.Material(texture=%s)" % (BROADCAST % (12000, 12000)), limit_gib=0.25)
+    assert code == 0 and out.startswith("SceneError: texture needs about 0.54 GiB (12000 x 12000 texels")
+    assert peak < 1.25 * gib / 4
+
+
+@pytest.mark.parametrize("call", ["phongvk.encode_png(%s)", "phongvk.write_png('/dev/null', %s)",
+                                  "phongvk.Material(texture=%s)"])
+def test_an_image_copy_that_finds_no_memory_raises_not_crashes(call):
+    """Under a 1.9 GB address space a copy of a 1.2 GB broadcast image cannot be made (nor a 0.77 GB
+    texture's copy and PNG under 1.3 GB: a texture's sides stop at 16384): MemoryError (or
+    phongvk's error, a write's), never a segfault of the interpreter."""
+    side, address_space = (16000, 1_300_000_000) if "Material" in call else (20000, 1_900_000_000)
+    code, out, _ = run_child(call % (BROADCAST % (side, side)), address_space=address_space)
+    assert code == 0, out
+    assert out.startswith(("MemoryError", "OutputError", "SceneError")), out
+
+
+@pytest.mark.parametrize("backend", ["cpu", "gpu"])
+@pytest.mark.parametrize("output", ["depth", "normal", "object_id", "triangle_id", "alpha", "rgba", "color"])
+def test_an_output_asked_for_twice_is_refused(backend, output):
+    scene = phongvk.scene_from_dict(scene_dict())
+    with pytest.raises(phongvk.ArgumentError, match=r"^outputs: '%s' is asked for more than once$" % output):
+        phongvk.Renderer(backend).render(scene, outputs=[output, "color", output])
+
+
+TRIANGLE = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], np.float32)
+FACE = np.array([[0, 1, 2]])
+
+
+@pytest.mark.parametrize("argument", ["vertices", "faces", "normals", "uvs"])
+@pytest.mark.parametrize("value, got", [
+    ("strings", r"got list of dtype <U"), ("dict", r"got dict of dtype object"),
+    ("ragged", r"got list \(ValueError: setting an array element with a sequence"),
+    ("complex", r"got ndarray of dtype complex128"), ("objects", r"got ndarray of dtype object"),
+    ("booleans", r"got ndarray of dtype bool")])
+def test_every_array_argument_refuses_what_is_not_numbers_by_name(argument, value, got):
+    arrays = {"vertices": TRIANGLE, "faces": FACE, "normals": np.float32([[0, 0, 1]] * 3),
+              "uvs": np.float32([[0, 0], [1, 0], [0, 1]])}
+    columns = arrays[argument].shape[1]
+    arrays[argument] = {"strings": [["a"] * columns] * 3, "dict": {"a": 1}, "ragged": [[0] * columns, [0]],
+                        "complex": np.ones((3, columns), complex), "objects": np.array([[None] * columns] * 3),
+                        "booleans": np.ones((3, columns), bool)}[value]
+    with pytest.raises(ValueError, match=r"^%s: expected .*, %s" % (argument, got)):
+        phongvk.Mesh(**arrays)
+    if argument != "uvs":
+        with pytest.raises(ValueError, match=r"^%s: expected .*, %s" % (argument, got)):
+            phongvk.Scene(8, 8).add_mesh(arrays["vertices"], arrays["faces"], arrays["normals"])
+
+
+def test_a_pose_refuses_what_is_not_numbers_by_name():
+    with pytest.raises(ValueError, match=r"^pose: expected a 4x4 matrix of numbers, got ndarray of dtype complex128"):
+        phongvk.Scene(8, 8).add(phongvk.Mesh(TRIANGLE, FACE), pose=np.eye(4, dtype=complex))
+    with pytest.raises(ValueError, match=r"^pose: expected a 4x4 matrix of numbers, got list of dtype <U"):
+        phongvk.Scene(8, 8).add(phongvk.Mesh(TRIANGLE, FACE), pose=[["1"] * 4] * 4)
+
+
+def test_a_texture_arrays_errors_name_texture():
+    with pytest.raises(ValueError, match=r"^texture: expected a uint8 array .* got float32 of shape \(2, 2\)"):
+        phongvk.Material(texture=np.zeros((2, 2), np.float32))
+    with pytest.raises(ValueError, match=r"^texture: expected a non-empty array, got shape \(0, 4, 3\)"):
+        phongvk.Material(texture=np.zeros((0, 4, 3), np.uint8))
+    with pytest.raises(ValueError, match=r"^texture: expected a uint8 array .* got dict of dtype object"):
+        phongvk.Material(texture={"pixels": 1})
+
+
+ICOSPHERE = ("scene = phongvk.scene_from_dict({'camera': {'position': [0, -3, 0], 'look_at': [0, 0, 0], 'width': 64, "
+             "'height': 48}, 'objects': [{'shape': 'icosphere', 'subdivide': %d}]})\n")
+
+
+@pytest.mark.parametrize("call", ["scene.triangles()", "scene.bounds"])
+def test_triangles_and_bounds_check_the_memory_limit_before_they_build(call):
+    """A scene a renderer refuses (21M triangles, about 2.2 GiB, under a 1 GiB limit) is refused by
+    triangles() and bounds too, before anything is built (they took 1.5 GiB and 1.2 GiB)."""
+    code, out, peak = run_child(ICOSPHERE % 10 + call, limit_gib=1)
+    assert code == 0 and out.startswith("SceneError: the scene needs about 2.2 GiB (20971520 triangles, 0 pixels), "
+                                        "more than the 1.0 GiB limit"), out
+    assert peak < 0.25 * (1 << 30)
+
+
+def test_triangles_count_the_arrays_they_return():
+    """5.2M triangles take 0.55 GiB to build, under a 0.6 GiB limit, but with the arrays triangles()
+    returns (0.2 GiB more) they do not fit: refused once built, before the arrays are made."""
+    code, out, peak = run_child(ICOSPHERE % 9 + "scene.triangles()", limit_gib=0.6)
+    assert code == 0 and out.startswith("SceneError: Scene::triangles needs about 0.7"), out
+    assert peak < 1.25 * 0.6 * (1 << 30)
+    code, out, _ = run_child(ICOSPHERE % 9 + "print(len(scene.triangles()['faces']))", limit_gib=0.8)
+    assert out.startswith("5242880"), out
