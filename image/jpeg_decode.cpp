@@ -7,11 +7,12 @@
 
 #include "phongvk/errors.h"
 
-#include <cstdio>  // jpeglib.h needs FILE and size_t first
+#include <cstdio>  // libjpeg's header needs FILE and size_t first
 #include <jpeglib.h>
-#include <jerror.h>  // after jpeglib.h: the message codes (JWRN_*)
+#include <jerror.h>  // after libjpeg's header: the message codes (JWRN_*)
 
 #include <csetjmp>
+#include <utility>
 #include <vector>
 
 namespace phongvk {
@@ -97,15 +98,10 @@ TextureImage decodeJpeg(std::string_view bytes, const std::string& what, const A
   if (!startDecoding(reader.info, error, bytes, cmyk)) fail("cannot read its header");
   const uint32_t width = reader.info.output_width, height = reader.info.output_height;
   accept(width, height);
-  TextureImage texture;
-  texture.width = width;
-  texture.height = height;
-  texture.texels.resize(size_t(width) * height);
-  std::vector<JSAMPROW> rows(height);
-  for (uint32_t y = 0; y < height; ++y) rows[y] = reinterpret_cast<JSAMPROW>(texture.texels.data() + size_t(y) * width);
-  if (!decodeRows(reader.info, error, rows.data())) fail("cannot decode its pixels");
-  if (cmyk) cmykToRgba(texture.texels);
-  return texture;
+  TextureRows out = textureRows(width, height);
+  if (!decodeRows(reader.info, error, out.rows.data())) fail("cannot decode its pixels");
+  if (cmyk) cmykToRgba(out.texture.texels);
+  return std::move(out.texture);
 }
 
 }  // namespace phongvk

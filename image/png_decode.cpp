@@ -10,6 +10,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 namespace phongvk {
@@ -101,14 +102,9 @@ TextureImage decodePng(std::string_view bytes, const std::string& what, const Ac
   accept(width, height);
   if (!convertToRgba8(reader.png, reader.info)) fail("cannot read its header");
   if (png_get_rowbytes(reader.png, reader.info) != size_t(width) * 4) throw SceneError(what + ": PNG: cannot convert its pixels to RGBA");
-  TextureImage texture;
-  texture.width = width;
-  texture.height = height;
-  texture.texels.resize(size_t(width) * height);
-  std::vector<png_bytep> rows(height);
-  for (png_uint_32 y = 0; y < height; ++y) rows[y] = reinterpret_cast<png_bytep>(texture.texels.data() + size_t(y) * width);
-  if (!readPixels(reader.png, reader.info, rows.data())) fail("cannot decode its pixels");
-  return texture;
+  TextureRows out = textureRows(width, height);
+  if (!readPixels(reader.png, reader.info, out.rows.data())) fail("cannot decode its pixels");
+  return std::move(out.texture);
 }
 
 }  // namespace phongvk

@@ -10,11 +10,20 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace phongvk {
 
 // Called with the image's size from its header, before any pixel is decoded; throws to refuse it.
 using AcceptSize = std::function<void(uint32_t width, uint32_t height)>;
+
+// A texture of `width` x `height` texels not yet written, and where each of its rows starts, for
+// a codec to decode into.
+struct TextureRows {
+  TextureImage texture;
+  std::vector<unsigned char*> rows;
+};
+TextureRows textureRows(uint32_t width, uint32_t height);
 
 // Whether `bytes` start with the format's signature.
 bool isPng(std::string_view bytes);

@@ -51,6 +51,16 @@ std::string signatureOf(std::string_view bytes) {
 
 }  // namespace
 
+TextureRows textureRows(uint32_t width, uint32_t height) {
+  TextureRows out;
+  out.texture.width = width;
+  out.texture.height = height;
+  out.texture.texels.resize(size_t(width) * height);  // not zero-filled (texture_image.h)
+  out.rows.resize(height);
+  for (uint32_t y = 0; y < height; ++y) out.rows[y] = reinterpret_cast<unsigned char*>(out.texture.texels.data() + size_t(y) * width);
+  return out;
+}
+
 TextureImage decodeTexture(const std::string& bytes, const std::string& what) {
   if (bytes.size() > MAX_ENCODED_BYTES || bytes.size() > size_t(INT_MAX)) fail(what, "the image file is over 1 GiB");
   const AcceptSize accept = [&](uint32_t width, uint32_t height) { checkSize(width, height, what); };
