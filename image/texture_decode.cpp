@@ -1,6 +1,7 @@
 // texture_decode.cpp — see texture_decode.h. The codecs are in png_decode.cpp and jpeg_decode.cpp.
 #include "image/texture_decode.h"
 
+#include "base/base64.h"
 #include "base/memory_limit.h"
 #include "base/memory_text.h"
 #include "base/regular_file.h"
@@ -68,26 +69,6 @@ TextureImage decodeTexture(const std::string& bytes, const std::string& what) {
   if (isJpeg(bytes)) return decodeJpeg(bytes, what, accept);
   fail(what, "not a PNG or JPEG image (" + signatureOf(bytes) + ")");
 }
-
-namespace {
-
-// RFC 4648 base64 (padding optional, no line breaks), or nothing for a character outside it.
-std::optional<std::string> base64Decoded(std::string_view text) {
-  std::string out;
-  uint32_t bits = 0;
-  int count = 0;
-  for (char c : text) {
-    int value = c >= 'A' && c <= 'Z' ? c - 'A' : c >= 'a' && c <= 'z' ? c - 'a' + 26 : c >= '0' && c <= '9' ? c - '0' + 52
-              : c == '+' ? 62 : c == '/' ? 63 : c == '=' ? -2 : -1;
-    if (value == -1) return std::nullopt;
-    if (value == -2) break;
-    bits = bits << 6 | uint32_t(value);
-    if ((count += 6) >= 8) out += char((bits >> (count -= 8)) & 0xFF);
-  }
-  return out;
-}
-
-}  // namespace
 
 TextureImage readTextureSource(const std::string& source, const std::string& what) {
   if (source.rfind("data:", 0) != 0) return readTextureFile(source, what);

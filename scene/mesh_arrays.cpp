@@ -3,6 +3,7 @@
 #include "geometry/normals.h"
 #include "scene/scene_json.h"
 #include "scene/scene_sections.h"
+#include "scene/scene_textures.h"
 
 #include <cfloat>
 #include <cmath>
@@ -187,9 +188,72 @@ std::vector<uint32_t> colorRows(const Node& node, size_t vertices) {
   return colors;
 }
 
+const Keys kMeshTextureKeys = {"image", "wrap"};
+
+// One of an inline mesh's own textures: {"image": a PNG or JPEG file or a data URI of one,
+// "wrap": [u, v] (default ["repeat", "repeat"])}.
+std::shared_ptr<const TextureImage> meshTexture(const Node& node, const std::string& baseDir) {
+  requireObject(node);
+  checkKeys(node, kMeshTextureKeys);
+  const Node image = node.require("image");
+  const std::string source = string(image);
+  std::shared_ptr<const TextureImage> texture;
+  try {
+    texture = sceneTexture(source, baseDir, source.rfind("data:", 0) == 0 ? "the data URI" : "'" + source + "'");
+  } catch (const SceneError& error) {
+    image.fail(error.what());
+  }
+  const std::optional<Node> wrap = node.find("wrap");
+  if (!wrap) return texture;
+  requireArray(*wrap);
+  if (wrap->json().size() != 2) wrap->fail("must be [u, v], two wrap modes, got " + std::to_string(wrap->json().size()));
+  const uint32_t u = choice<uint32_t>(wrap->element(0), TEXTURE_WRAP_NAMES);
+  const uint32_t v = choice<uint32_t>(wrap->element(1), TEXTURE_WRAP_NAMES);
+  if (u == texture->wrapU && v == texture->wrapV) return texture;
+  auto wrapped = std::make_shared<TextureImage>(*texture);  // a copy only where it wraps otherwise
+  wrapped->wrapU = u;
+  wrapped->wrapV = v;
+  return wrapped;
+}
+
+// Which of the mesh's textures each vertex samples: one integer per vertex, -1 (none) up to the
+// last texture, the same at a triangle's three vertices (a triangle samples one texture).
+std::vector<uint32_t> textureIdRows(const Node& node, const Mesh& mesh, size_t textures) {
+  requireArray(node);
+  const size_t vertices = mesh.positions.size();
+  if (node.json().size() != vertices) {
+    node.fail("expected one texture index per vertex (" + std::to_string(vertices) + "), got " + std::to_string(node.json().size()));
+  }
+  std::vector<uint32_t> ids(vertices);
+  for (size_t i = 0; i < vertices; ++i) {
+    const int id = integer(node.element(i), -1, int(textures) - 1);
+    ids[i] = id < 0 ? gpu::TEXTURE_NONE : uint32_t(id);
+  }
+  for (const glm::uvec3& t : mesh.triangles) {
+    if (ids[t.x] != ids[t.y] || ids[t.x] != ids[t.z]) {
+      node.fail("vertices " + std::to_string(t.x) + ", " + std::to_string(t.y) + " and " + std::to_string(t.z) +
+                " make a triangle but sample different textures");
+    }
+  }
+  return ids;
+}
+
+// The mesh's own textures ("textures" and "texture_ids", given together, with "uvs").
+void readMeshTextures(const Node& object, const std::string& baseDir, Mesh& mesh) {
+  const std::optional<Node> textures = object.find("textures"), ids = object.find("texture_ids");
+  if (!textures && !ids) return;
+  if (!textures) object.failAt("texture_ids", "needs 'textures' (the textures it indexes)");
+  if (!ids) object.failAt("textures", "needs 'texture_ids' (which texture each vertex samples)");
+  if (mesh.uvs.empty()) object.failAt("textures", "needs 'uvs' (the coordinates the textures are sampled at)");
+  requireArray(*textures);
+  mesh.textures.clear();
+  for (size_t i = 0; i < textures->json().size(); ++i) mesh.textures.push_back(meshTexture(textures->element(i), baseDir));
+  mesh.textureIds = textureIdRows(*ids, mesh, mesh.textures.size());
+}
+
 }  // namespace
 
-std::shared_ptr<const Mesh> readMeshArrays(const Node& object) {
+std::shared_ptr<const Mesh> readMeshArrays(const Node& object, const std::string& baseDir) {
   MeshArrays arrays;
   arrays.positions = floatRows(object.require("vertices"));
   arrays.triangles = indexRows(object.require("faces"));
@@ -206,6 +270,7 @@ std::shared_ptr<const Mesh> readMeshArrays(const Node& object) {
     object.failAt(message.substr(0, colon), message.substr(colon + 2));
   }
   if (auto colors = object.find("colors")) mesh.colors = colorRows(*colors, mesh.positions.size());
+  readMeshTextures(object, baseDir, mesh);
   return std::make_shared<const Mesh>(std::move(mesh));
 }
 

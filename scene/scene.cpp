@@ -22,19 +22,6 @@ const Keys kSceneKeys = {"camera",  "background", "ambient", "lights",
                          "materials", "objects",    "render",  "animate"};
 const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples", "texture_filter"};
 
-// The value of an enumerated option: the index of `node`'s string among `names` (joined for the
-// message when it is none of them).
-template <typename E, size_t N>
-E choice(const Node& node, const std::array<const char*, N>& names) {
-  const std::string value = string(node);
-  std::string list;
-  for (size_t i = 0; i < N; ++i) {
-    if (value == names[i]) return E(i);
-    list += (i ? ", " : "") + std::string(names[i]);
-  }
-  node.fail("must be one of " + list + ", got '" + value + "'");
-}
-
 // Samples per pixel: a square of 1 to 4 on a side.
 int samplesPerPixel(const Node& node) {
   const int samples = integer(node, 1, 16);

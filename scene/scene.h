@@ -106,6 +106,8 @@ inline constexpr std::array<const char*, 2> INTERPOLATION_NAMES = {"perspective"
 inline constexpr std::array<const char*, 2> TEXTURE_FILTER_NAMES = {"nearest", "bilinear"};
 inline constexpr std::array<const char*, 3> SHADING_NAMES = {"gouraud", "flat", "phong"};
 inline constexpr std::array<const char*, 2> SPECULAR_NAMES = {"phong", "blinn"};
+// An inline mesh's texture wrap modes, indexed by gpu::TEXTURE_WRAP_* (glTF's names, lower case).
+inline constexpr std::array<const char*, 3> TEXTURE_WRAP_NAMES = {"repeat", "clamp_to_edge", "mirrored_repeat"};
 enum class UpAxis { Z, Y };
 
 struct Object {

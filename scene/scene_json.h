@@ -3,6 +3,7 @@
 // "scenes/a.json: objects[2].material.ks: must be >= 0, got -1".
 #pragma once
 
+#include <array>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -76,6 +77,19 @@ float toFloat(const Node& node, double value);
 
 bool boolean(const Node& node);
 std::string string(const Node& node);
+
+// The value of an enumerated option: the index of `node`'s string among `names` (joined for the
+// message when it is none of them).
+template <typename E, size_t N>
+E choice(const Node& node, const std::array<const char*, N>& names) {
+  const std::string value = string(node);
+  std::string list;
+  for (size_t i = 0; i < N; ++i) {
+    if (value == names[i]) return E(i);
+    list += (i ? ", " : "") + std::string(names[i]);
+  }
+  node.fail("must be one of " + list + ", got '" + value + "'");
+}
 
 // An array of exactly 3 numbers, each read (and range checked) by `element`.
 using ElementReader = double (*)(const Node&);

@@ -26,7 +26,7 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
-    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "translate", "up"}},
+    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "textures", "texture_ids", "translate", "up"}},
 };
 
 
@@ -77,18 +77,19 @@ void resolveMeshFile(const Node& node, const std::string& baseDir, Object& objec
   object.fileTriangles = meshFileTriangles(object.file, *format.format, object.fileVersion.bytes);
 }
 
-// A mesh's "file", or its arrays inline ("vertices", "faces", and "normals", "colors", "uvs" if any).
+// A mesh's "file", or its arrays inline ("vertices", "faces", and "normals", "colors", "uvs",
+// "textures", "texture_ids" if any).
 void readMeshSource(const Node& node, const std::string& baseDir, Object& object) {
   const std::optional<Node> file = node.find("file");
   if (!node.find("vertices")) {
-    for (std::string_view key : {"faces", "normals", "colors", "uvs"}) {
+    for (std::string_view key : {"faces", "normals", "colors", "uvs", "textures", "texture_ids"}) {
       if (node.find(key)) node.failAt(key, "needs 'vertices' (a mesh given inline)");
     }
     resolveMeshFile(node.require("file"), baseDir, object);
     return;
   }
   if (file) file->fail("cannot be given with 'vertices': a mesh is a file or arrays");
-  object.arrays = readMeshArrays(node);
+  object.arrays = readMeshArrays(node, baseDir);
 }
 
 // Each geometry key means the same for every shape that takes it, and checkObjectKeys has

@@ -36,9 +36,10 @@ CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
 std::vector<LightSpec> readLights(const Node& node);  // scene_lighting.cpp
 // A material object; a "texture" file is resolved against baseDir (scene_lighting.cpp).
 MaterialSpec readMaterial(const Node& node, const std::string& baseDir);
-// A mesh object's arrays given inline ("vertices", "faces", "normals", "colors"), built as
-// Scene::addMesh builds arrays (mesh_arrays.cpp), with its messages under the object's path.
-std::shared_ptr<const Mesh> readMeshArrays(const Node& object);
+// A mesh object's arrays given inline ("vertices", "faces", "normals", "colors", "uvs", and its own
+// "textures" with "texture_ids"), built as Scene::addMesh builds arrays (mesh_arrays.cpp), with its
+// messages under the object's path; texture files resolve against baseDir.
+std::shared_ptr<const Mesh> readMeshArrays(const Node& object, const std::string& baseDir);
 
 // A scene's materials as objects take them (SceneSpec::materials, materialNames, defaultMaterial):
 // the named materials first, in file order, then one entry per inline material, and one shared

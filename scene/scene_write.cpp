@@ -2,6 +2,8 @@
 // counterpart of its reader (scene_camera.cpp, scene_lighting.cpp, scene_objects.cpp, scene.cpp).
 #include "scene/scene_write.h"
 
+#include "image/texture_uri.h"
+
 #include <filesystem>
 
 namespace phongvk {
@@ -105,6 +107,19 @@ Json pointsJson(const std::vector<glm::dvec3>& points) {
   return json;
 }
 
+// A mesh's own textures (a model file's), each as a PNG data URI with its wrap modes, and which
+// one each vertex samples (-1: none).
+void writeMeshTextures(const Mesh& mesh, Json& json) {
+  Json textures = Json::array(), ids = Json::array();
+  for (const auto& texture : mesh.textures) {
+    textures.push_back({{"image", textureDataUri(*texture)},
+                        {"wrap", Json::array({TEXTURE_WRAP_NAMES[texture->wrapU], TEXTURE_WRAP_NAMES[texture->wrapV]})}});
+  }
+  for (uint32_t id : mesh.textureIds) ids.push_back(id == gpu::TEXTURE_NONE ? int64_t(-1) : int64_t(id));
+  json["textures"] = std::move(textures);
+  json["texture_ids"] = std::move(ids);
+}
+
 // A mesh given as arrays, inline: its rows as built (mesh_arrays.h reads them back unchanged).
 void writeArrays(const Mesh& mesh, Json& json) {
   Json vertices = Json::array(), faces = Json::array(), normals = Json::array(), colors = Json::array();
@@ -119,6 +134,7 @@ void writeArrays(const Mesh& mesh, Json& json) {
   Json uvs = Json::array();
   for (const glm::vec2& uv : mesh.uvs) uvs.push_back(Json::array({double(uv.x), double(uv.y)}));
   if (!mesh.uvs.empty()) json["uvs"] = std::move(uvs);
+  if (!mesh.textures.empty()) writeMeshTextures(mesh, json);
 }
 
 // The keys of the object's shape (scene_objects.cpp kShapes), each with its value.

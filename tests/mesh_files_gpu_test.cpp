@@ -5,6 +5,7 @@
 // files failing with the scene file, the JSON path and the mesh file named.
 #include <phongvk/phongvk.h>
 
+#include "base/base64.h"
 #include "base/number_text.h"
 #include "geometry/polygon.h"
 #include "meshio/mesh_file.h"
@@ -168,7 +169,7 @@ std::string gltfText() {
          R"(, "type": "VEC3", "min": )" + vec(lo) + R"(, "max": )" + vec(hi) + R"(}],
     "bufferViews": [{"buffer": 0, "byteLength": )" + std::to_string(buffer.size()) + R"(}],
     "buffers": [{"byteLength": )" + std::to_string(buffer.size()) +
-         R"(, "uri": "data:application/octet-stream;base64,)" + base64(buffer) + R"("}]})";
+         R"(, "uri": "data:application/octet-stream;base64,)" + base64Encoded(buffer) + R"("}]})";
 }
 
 TEST(MeshFiles, TheSameMeshInEveryFormatRendersTheSameBytes) {

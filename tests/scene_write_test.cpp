@@ -3,13 +3,16 @@
 // file forms it needs (a rotation matrix, meshes inline) are checked like the rest of the file.
 #include "phongvk/phongvk.h"
 #include "geometry/transform.h"
+#include "base/base64.h"
 #include "test_util.h"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstring>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,7 +21,6 @@ namespace {
 
 using test::sourcePath;
 using test::thrownMessage;
-using test::base64;
 
 Renderer& reference() {
   static Renderer renderer(Backend::Cpu);
@@ -153,7 +155,7 @@ std::string greenTriangleGltf() {
     "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0.5]}],
     "bufferViews": [{"buffer": 0, "byteLength": 36}],
     "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,)" +
-         base64(buffer) + R"("}]})";
+         base64Encoded(buffer) + R"("}]})";
 }
 
 TEST(SceneWrite, AGltfMeshKeepsItsBaseColoursAndAFittedCameraStaysFitted) {
@@ -186,6 +188,49 @@ TEST(SceneWrite, InlineArraysReadAsAddedArraysDo) {
   const Image a = reference().render(added), b = reference().render(inline_);
   EXPECT_EQ(a.rgb, b.rgb);
   expectRoundTrip(inline_);
+}
+
+// The distinct colours of `image`'s pixels.
+size_t colourCount(const Image& image) {
+  std::set<std::array<uint8_t, 3>> colours;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) colours.insert({image.pixel(x, y)[0], image.pixel(x, y)[1], image.pixel(x, y)[2]});
+  return colours.size();
+}
+
+TEST(SceneWrite, AModelFilesTexturesTravelInlineAsPngDataUris) {
+  Scene scene(120, 90);
+  scene.add(TriangleMesh::fromFile(sourcePath("scenes/meshes/textured_cube.obj")));
+  Camera camera;
+  camera.position = {2.2, -3.1, 2.4};
+  scene.setCamera(camera);
+  expectRoundTrip(scene);
+  const auto json = nlohmann::json::parse(scene.toJson());
+  const auto& mesh = json["objects"][0];
+  ASSERT_EQ(mesh["textures"].size(), 1u);
+  EXPECT_EQ(mesh["textures"][0]["image"].get<std::string>().rfind("data:image/png;base64,", 0), 0u);
+  EXPECT_EQ(mesh["textures"][0]["wrap"], nlohmann::json::array({"repeat", "repeat"}));
+  EXPECT_EQ(mesh["texture_ids"].size(), mesh["vertices"].size());
+  EXPECT_GT(colourCount(reference().render(parseScene(scene.toJson(), "back.json"))), 100u);
+}
+
+// A quad whose coordinates run from -1 to 2, sampling checker.png with the wrap modes `wrap`.
+std::string wrappedQuad(const std::string& wrap) {
+  return R"({"camera": {"position": [0, -3, 0], "look_at": [0, 0, 0], "width": 96, "height": 96},
+    "lights": [{"position": "camera"}],
+    "objects": [{"shape": "mesh", "vertices": [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]],
+                 "faces": [[0, 1, 2], [0, 2, 3]], "uvs": [[-1, 2], [2, 2], [2, -1], [-1, -1]],
+                 "textures": [{"image": ")" + sourcePath("scenes/meshes/checker.png") + R"(", "wrap": )" + wrap + R"(}],
+                 "texture_ids": [0, 0, 0, 0]}]})";
+}
+
+TEST(SceneWrite, AnInlineMeshsOwnTexturesKeepTheirWrapModes) {
+  const Scene repeat = parseScene(wrappedQuad(R"(["repeat", "repeat"])"), "repeat.json");
+  const Scene clamp = parseScene(wrappedQuad(R"(["clamp_to_edge", "mirrored_repeat"])"), "clamp.json");
+  expectRoundTrip(clamp);
+  EXPECT_EQ(nlohmann::json::parse(clamp.toJson())["objects"][0]["textures"][0]["wrap"],
+            nlohmann::json::array({"clamp_to_edge", "mirrored_repeat"}));
+  EXPECT_NE(reference().render(repeat).rgb, reference().render(clamp).rgb);
 }
 
 // The SceneError message of a scene whose only object is `object`.
@@ -221,6 +266,28 @@ TEST(SceneWrite, BadInlineArraysNameTheirJsonPath) {
             "bad.json: objects[0].faces: needs 'vertices' (a mesh given inline)");
   EXPECT_EQ(objectError(R"({"shape": "cube", "faces": [[0, 1, 2]]})").find("not used by shape 'cube'") != std::string::npos,
             true);
+}
+
+TEST(SceneWrite, BadInlineTexturesNameTheirJsonPath) {
+  const std::string quad = R"("vertices": [[0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1]], "faces": [[0, 1, 2], [1, 3, 2]])";
+  const std::string uvs = R"(, "uvs": [[0, 0], [1, 0], [0, 1], [1, 1]])";
+  const std::string checker = R"("textures": [{"image": ")" + sourcePath("scenes/meshes/checker.png") + R"("}])";
+  EXPECT_EQ(objectError(R"({"shape": "mesh", )" + quad + uvs + ", " + checker + "}"),
+            "bad.json: objects[0].textures: needs 'texture_ids' (which texture each vertex samples)");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", )" + quad + ", " + checker + R"(, "texture_ids": [0, 0, 0, 0]})"),
+            "bad.json: objects[0].textures: needs 'uvs' (the coordinates the textures are sampled at)");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", )" + quad + uvs + ", " + checker + R"(, "texture_ids": [0, 0, 0, 1]})"),
+            "bad.json: objects[0].texture_ids[3]: must be between -1 and 0, got 1");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", )" + quad + uvs + ", " + checker + R"(, "texture_ids": [0, 0, 0, -1]})"),
+            "bad.json: objects[0].texture_ids: vertices 1, 3 and 2 make a triangle but sample different textures");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", )" + quad + uvs + ", " + checker + R"(, "texture_ids": [0, 0, 0]})"),
+            "bad.json: objects[0].texture_ids: expected one texture index per vertex (4), got 3");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", )" + quad + uvs +
+                        R"(, "textures": [{"image": "data:image/png;base64,AAAA", "wrap": ["repeat", "around"]}], "texture_ids": [0, 0, 0, 0]})"),
+            "bad.json: objects[0].textures[0].image: the data URI: not a PNG or JPEG image (it starts 00 00 00)");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", )" + quad + uvs + R"(, "textures": [{"image": ")" +
+                        sourcePath("scenes/meshes/checker.png") + R"(", "wrap": ["repeat", "around"]}], "texture_ids": [0, 0, 0, 0]})"),
+            "bad.json: objects[0].textures[0].wrap[1]: must be one of repeat, clamp_to_edge, mirrored_repeat, got 'around'");
 }
 
 TEST(SceneWrite, BadRotateMatrixNamesItsJsonPath) {

@@ -71,8 +71,6 @@ std::string pathTestName(const ::testing::TestParamInfo<std::string>& info);
 // A file's bytes (a failed check, and "", where it cannot be read).
 std::string readBytes(const std::string& path);
 
-// `bytes` in base64 (RFC 4648, padded), for the data: URIs of glTF files made in tests.
-std::string base64(const std::string& bytes);
 
 struct CommandResult {
   int exitCode = -1;

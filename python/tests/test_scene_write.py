@@ -69,3 +69,16 @@ def test_to_dict_says_everything_and_names_mesh_files_absolutely():
     mesh = [o for o in d["objects"] if o["shape"] == "mesh"][0]
     assert mesh["file"] == scene_path("scenes/meshes/torus.obj")
     assert {"scale", "rotate", "translate", "up", "closed", "subdivide", "material"} <= set(mesh)
+
+
+def test_a_model_files_textures_survive_the_dict():
+    # A textured OBJ added as a Mesh: its texture travels in the dict as a PNG data URI, so the
+    # scene read back renders every texel, not the untextured colours.
+    scene = phongvk.Scene(120, 90)
+    scene.camera = phongvk.Camera(position=(2.2, -3.1, 2.4), look_at=(0, 0, 0))
+    scene.add(phongvk.Mesh.from_file(scene_path("scenes/meshes/textured_cube.obj")))
+    image = round_trip(scene)
+    assert len(np.unique(image.reshape(-1, 3), axis=0)) > 100
+    mesh = scene.to_dict()["objects"][0]
+    assert mesh["textures"][0]["image"].startswith("data:image/png;base64,")
+    assert len(mesh["texture_ids"]) == len(mesh["vertices"])
