@@ -123,6 +123,22 @@ TEST_F(VulkanTest, DeviceLocalBufferRoundTripsThroughStaging) {
   destroyBuffer(buffer, context);
 }
 
+// Copies larger than the 64 MiB staging buffer go through in parts: every part lands at its place,
+// from an offset too, and reads back whole.
+TEST_F(VulkanTest, CopiesLargerThanTheStagingBufferGoInParts) {
+  const size_t bytes = (size_t(64) << 20) * 2 + 1000, offset = 12;
+  Buffer buffer;
+  createBuffer(buffer, context, offset + bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::DeviceLocal);
+  std::vector<uint8_t> data(bytes), back(offset + bytes);
+  for (size_t i = 0; i < bytes; ++i) data[i] = uint8_t(i * 31 + (i >> 26) * 101);  // differs from 64 MiB on
+  uploadToBuffer(context, buffer, data.data(), bytes, offset);
+  uploadToBuffer(context, buffer, data.data(), offset);
+  readFromBuffer(context, buffer, back.data(), back.size());
+  EXPECT_TRUE(std::equal(data.begin(), data.begin() + offset, back.begin()));
+  EXPECT_TRUE(std::equal(data.begin(), data.end(), back.begin() + offset));
+  destroyBuffer(buffer, context);
+}
+
 TEST_F(VulkanTest, ZeroSizeBufferIsValidAndZeroByteCopiesDoNothing) {
   Buffer buffer;
   createBuffer(buffer, context, 0, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::DeviceLocal);

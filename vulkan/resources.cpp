@@ -68,6 +68,10 @@ void copyBuffer(const VulkanContext& context, VkBuffer src, VkDeviceSize srcOffs
   submitAndWait(context, cmd);  // its closing barrier publishes the copy to shaders and the host
 }
 
+// The most a copy stages at once: a large array goes through in parts, so the host never holds a
+// whole second copy of it beside the array and the device's (on a CPU device, host memory too).
+constexpr size_t STAGING_BYTES = size_t(64) << 20;
+
 // A host-visible buffer for one copy, destroyed on every path out of the copy.
 struct StagingBuffer {
   StagingBuffer(const VulkanContext& context, size_t bytes, VkBufferUsageFlags usage) : context(context) {
@@ -234,9 +238,12 @@ void uploadToBuffer(const VulkanContext& context, Buffer& dst, const void* data,
     std::memcpy(static_cast<char*>(dst.mapped) + offset, data, bytes);  // coherent: no flush needed
     return;
   }
-  StagingBuffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  std::memcpy(staging.buffer.mapped, data, bytes);
-  copyBuffer(context, staging.buffer.buffer, 0, dst.buffer, offset, bytes);
+  StagingBuffer staging(context, std::min(bytes, STAGING_BYTES), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  for (size_t done = 0; done < bytes; done += STAGING_BYTES) {
+    const size_t part = std::min(bytes - done, STAGING_BYTES);
+    std::memcpy(staging.buffer.mapped, static_cast<const char*>(data) + done, part);
+    copyBuffer(context, staging.buffer.buffer, 0, dst.buffer, offset + done, part);
+  }
 }
 
 void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, size_t bytes) {
@@ -246,9 +253,12 @@ void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, 
     std::memcpy(out, src.mapped, bytes);
     return;
   }
-  StagingBuffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-  copyBuffer(context, src.buffer, 0, staging.buffer.buffer, 0, bytes);
-  std::memcpy(out, staging.buffer.mapped, bytes);
+  StagingBuffer staging(context, std::min(bytes, STAGING_BYTES), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  for (size_t done = 0; done < bytes; done += STAGING_BYTES) {
+    const size_t part = std::min(bytes - done, STAGING_BYTES);
+    copyBuffer(context, src.buffer, done, staging.buffer.buffer, 0, part);
+    std::memcpy(static_cast<char*>(out) + done, staging.buffer.mapped, part);
+  }
 }
 
 bool hasSharedMemory(const VulkanContext& context) {

@@ -54,7 +54,7 @@ bool hasSharedMemory(const VulkanContext& context);
 void destroyBuffer(Buffer& buffer, const VulkanContext& context);
 
 // Copies `bytes` from `data` into `dst` at `offset`: a memcpy when dst is mapped, otherwise through
-// a temporary staging buffer and a one-time submission.
+// a staging buffer of at most 64 MiB and a one-time submission per part of that size.
 // Throws std::out_of_range if the range does not fit.
 void uploadToBuffer(const VulkanContext& context, Buffer& dst, const void* data, size_t bytes, VkDeviceSize offset = 0);
 

@@ -11,6 +11,8 @@ import sys
 import time
 import zlib
 
+import pytest
+
 from conftest import CLI
 
 GIB = 1 << 30
@@ -70,6 +72,21 @@ def test_distinct_big_textures_are_refused_before_they_blow_the_limit(tmp_path):
     assert code == 2, err
     assert "t2.png" in err and "a 8192x8192 texture needs about" in err and "more than the 0.60 GiB limit" in err, err
     assert not out.exists()
+    assert peak <= 1.25 * 0.6 * GIB, f"peak {peak / GIB:.2f} GiB"
+
+
+@pytest.mark.parametrize("backend", ["cpu", "gpu"])
+def test_a_texture_that_fits_renders_within_the_limit_on_both_backends(tmp_path, backend):
+    # One 8192^2 texture (256 MiB decoded) under a 0.6 GiB limit, counted twice (the host's texels
+    # and the device's copy): it fits, and the peak stays within 1.25x the limit on the GPU backend
+    # too, whose uploads stage 64 MiB at a time rather than a third copy of the texture.
+    (tmp_path / "t.png").write_bytes(png_of(8192, 8192))
+    (tmp_path / "scene.json").write_text(json.dumps(scene_with([quad({"texture": "t.png"})])))
+    out = tmp_path / "out.png"
+    code, err, peak = run_measured(["render", str(tmp_path / "scene.json"), "-o", str(out), "--backend", backend,
+                                    "--max-memory-gb", "0.6"])
+    assert code == 0, err
+    assert out.exists()
     assert peak <= 1.25 * 0.6 * GIB, f"peak {peak / GIB:.2f} GiB"
 
 
