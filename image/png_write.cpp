@@ -14,7 +14,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <new>
 #include <stdexcept>
+#include <string>
 #include <unistd.h>
 
 namespace phongvk {
@@ -169,6 +171,9 @@ void PngEncoder::writeImage(const std::string& path, const AnyImage& image) {
   const std::vector<uint8_t>* png = nullptr;
   try {
     png = &encode(image);
+  } catch (const std::bad_alloc&) {
+    throw OutputError("cannot write '" + path + "': no memory to encode its " + std::to_string(image.width) + " x " +
+                      std::to_string(image.height) + " PNG");
   } catch (const std::exception& e) {
     throw OutputError("cannot write '" + path + "': " + e.what());
   }

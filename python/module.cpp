@@ -15,6 +15,7 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -50,6 +51,12 @@ py::array pngArray(const std::string& path, const std::string& mode) {
     return ownedArray(std::move(image.grey), {image.height, image.width});
   }
   throw ArgumentError("mode: expected 'rgb', 'rgba' or 'grey16', got '" + mode + "'");
+}
+
+// MemoryError with `message`, which names the argument that found no memory.
+[[noreturn]] void raiseMemoryError(const std::string& message) {
+  PyErr_SetString(PyExc_MemoryError, message.c_str());
+  throw py::error_already_set();
 }
 
 std::string shapeText(const py::array& a) {
@@ -89,8 +96,14 @@ py::array numberArray(const py::handle& value, const char* name, const std::stri
 // numpy copies them once, whatever their strides, straight into it (MemoryError where there is no
 // room, never a half-made copy read).
 template <typename T>
-std::vector<T> valuesOf(const py::array& a) {
-  std::vector<T> values(size_t(a.size()));
+std::vector<T> valuesOf(const py::array& a, const char* name) {
+  std::vector<T> values;
+  try {
+    values.resize(size_t(a.size()));
+  } catch (const std::bad_alloc&) {
+    raiseMemoryError(std::string(name) + ": no memory for a copy of its " + shapeText(a) + " values (" +
+                     std::to_string(size_t(a.size()) * sizeof(T)) + " bytes)");
+  }
   if (values.empty()) return values;
   // A writable view of the vector (the capsule, owning nothing, tells numpy not to copy).
   const py::array_t<T> view(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()), values.data(),
@@ -121,21 +134,41 @@ void checkPngArray(const py::array& array, const char* name) {
 }
 
 // The image a checked array (checkPngArray) holds.
-PngImage pngImageOf(const py::array& array) {
+PngImage pngImageOf(const py::array& array, const char* name) {
   const int w = int(array.shape(1)), h = int(array.shape(0));
-  if (array.ndim() == 2) return ImageGrey16{w, h, valuesOf<uint16_t>(array)};
-  if (array.shape(2) == 4) return ImageRGBA{w, h, valuesOf<uint8_t>(array)};
+  if (array.ndim() == 2) return ImageGrey16{w, h, valuesOf<uint16_t>(array, name)};
+  if (array.shape(2) == 4) return ImageRGBA{w, h, valuesOf<uint8_t>(array, name)};
   Image image;
   image.width = w;
   image.height = h;
-  image.rgb = valuesOf<uint8_t>(array);
+  image.rgb = valuesOf<uint8_t>(array, name);
   return image;
 }
 
 // `array`, the argument `name`, as the image it holds.
 PngImage pngImageFromArray(const py::array& array, const char* name) {
   checkPngArray(array, name);
-  return pngImageOf(array);
+  return pngImageOf(array, name);
+}
+
+// The PNG of `pixels` (the argument `name`) at `level`, encoded without the GIL; MemoryError naming
+// the argument where its encoding finds no memory.
+std::vector<uint8_t> encodedPng(const PngImage& pixels, int level, const char* name) {
+  std::vector<uint8_t> png;
+  bool noMemory = false;
+  {
+    const py::gil_scoped_release release;
+    try {
+      png = std::visit([&](const auto& any) { return encodePng(any, level); }, pixels);
+    } catch (const std::bad_alloc&) {
+      noMemory = true;
+    }
+  }
+  if (noMemory) {
+    const auto [w, h] = std::visit([](const auto& any) { return std::pair(any.width, any.height); }, pixels);
+    raiseMemoryError(std::string(name) + ": no memory to encode its " + std::to_string(w) + " x " + std::to_string(h) + " PNG");
+  }
+  return png;
 }
 
 // `name` as an (N, 3) array of `kind` ('f': floating point, 'i': integer), flattened row-major.
@@ -150,7 +183,7 @@ std::vector<T> rowsOf3(const py::array& a, const char* name, char kind) {
   if (a.ndim() != 2 || a.shape(1) != 3) {
     throw py::value_error(std::string(name) + ": expected shape (N, 3), got " + shapeText(a));
   }
-  return valuesOf<T>(a);
+  return valuesOf<T>(a, name);
 }
 
 // ---- scenes ----
@@ -172,7 +205,7 @@ py::array asArray(const py::handle& value, const char* name, bool floats) {
 std::vector<float> uvRows(const py::object& uvs) {
   const py::array a = numberArray(uvs, "uvs", "an array of shape (N, 2) or rows of 2 numbers");
   if (a.ndim() != 2 || a.shape(1) != 2) throw py::value_error("uvs: expected shape (N, 2), got " + shapeText(a));
-  return valuesOf<float>(a);
+  return valuesOf<float>(a, "uvs");
 }
 
 // The arrays of a mesh: vertices and faces, or (faces None) one object with .vertices and .faces
@@ -210,7 +243,7 @@ Matrix4 matrix4(const py::object& value, const char* name) {
   if (a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
     throw py::value_error(std::string(name) + ": expected a 4x4 matrix, got shape " + shapeText(a));
   }
-  const std::vector<double> values = valuesOf<double>(a);
+  const std::vector<double> values = valuesOf<double>(a, name);
   Matrix4 m{};
   std::copy(values.begin(), values.end(), m.begin());
   return m;
@@ -265,8 +298,7 @@ std::string textureSource(const py::object& texture) {
   const py::array array = numberArray(texture, "texture", PNG_ARRAYS);
   checkPngArray(array, "texture");
   checkTextureSize(array.shape(1), array.shape(0), "texture");
-  const PngImage pixels = pngImageOf(array);
-  const std::vector<uint8_t> png = std::visit([](const auto& any) { return encodePng(any, PNG_LEVEL_DEFAULT); }, pixels);
+  const std::vector<uint8_t> png = encodedPng(pngImageOf(array, "texture"), PNG_LEVEL_DEFAULT, "texture");
   const py::object encoded = py::module_::import("base64").attr("b64encode")(
       py::bytes(reinterpret_cast<const char*>(png.data()), png.size()));
   return "data:image/png;base64," + py::str(encoded.attr("decode")("ascii")).cast<std::string>();
@@ -941,12 +973,7 @@ mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as 
         "uint8 (alpha 255 where the file has none), \"grey16\" (height, width) uint16 (a depth PNG's "
         "millimetres, an ids PNG's index + 1; 8-bit samples scaled by 257).");
   m.def("encode_png", [](const py::array& image, int level) {
-    const PngImage pixels = pngImageFromArray(image, "image");
-    std::vector<uint8_t> png;
-    {
-      const py::gil_scoped_release release;
-      png = std::visit([&](const auto& any) { return encodePng(any, level); }, pixels);
-    }
+    const std::vector<uint8_t> png = encodedPng(pngImageFromArray(image, "image"), level, "image");
     return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
   }, py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
         "An image array as PNG bytes, deflated at `level` (0 to 12): (height, width, 3) uint8 as RGB, "
