@@ -4,6 +4,7 @@
 // help() shows.
 #include <phongvk/phongvk.h>
 
+#include "base/base64.h"
 #include "json_writer.h"
 
 #include <pybind11/numpy.h>
@@ -298,10 +299,9 @@ std::string textureSource(const py::object& texture) {
   const py::array array = numberArray(texture, "texture", PNG_ARRAYS);
   checkPngArray(array, "texture");
   checkTextureSize(array.shape(1), array.shape(0), "texture");
+  // The copy of the pixels is gone before the PNG is written out as text, and that text is made once.
   const std::vector<uint8_t> png = encodedPng(pngImageOf(array, "texture"), PNG_LEVEL_DEFAULT, "texture");
-  const py::object encoded = py::module_::import("base64").attr("b64encode")(
-      py::bytes(reinterpret_cast<const char*>(png.data()), png.size()));
-  return "data:image/png;base64," + py::str(encoded.attr("decode")("ascii")).cast<std::string>();
+  return "data:image/png;base64," + base64Encoded(std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 // A material given to add or add_mesh: a phongvk.Material, a dict of its fields, or None (the
