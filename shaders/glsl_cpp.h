@@ -43,6 +43,20 @@ using i64vec2 = glm::i64vec2;
 inline uint32_t floatBitsToUint(float f) { return std::bit_cast<uint32_t>(f); }
 inline int32_t floatBitsToInt(float f) { return std::bit_cast<int32_t>(f); }
 inline float intBitsToFloat(int32_t i) { return std::bit_cast<float>(i); }
+// GLSL's extended integer built-ins (glm's usubBorrow returns y - x where x < y: not GLSL's).
+inline uint32_t uaddCarry(uint32_t x, uint32_t y, uint32_t& carry) {
+  carry = uint32_t(x + y < x);
+  return x + y;
+}
+inline uint32_t usubBorrow(uint32_t x, uint32_t y, uint32_t& borrow) {
+  borrow = uint32_t(x < y);
+  return x - y;
+}
+inline void imulExtended(int32_t x, int32_t y, int32_t& msb, int32_t& lsb) {
+  const int64_t product = int64_t(x) * int64_t(y);
+  msb = int32_t(product >> 32);
+  lsb = int32_t(uint32_t(uint64_t(product)));
+}
 }  // namespace phongvk::gpu
 #else
 #extension GL_EXT_control_flow_attributes : require
