@@ -3,6 +3,7 @@
 #include "phongvk/phongvk.h"
 
 #include "api/scene_access.h"
+#include "api/texture_access.h"
 #include "api/triangle_mesh_access.h"
 #include "api/scene_parts.h"
 #include "prepare/memory_estimate.h"
@@ -33,13 +34,14 @@ struct AddedMesh {
   scenejson::Json material;
   bool closed = false;
   Matrix4 pose = IDENTITY_POSE;
+  std::shared_ptr<const TextureImage> texture;  // the material's, held in memory (Material::textureImage)
 };
 
 // Appends `added` to `spec` as a mesh object at its pose; `spec` is unchanged where it throws.
 void appendAdded(SceneSpec& spec, const AddedMesh& added) {
   Object check;
   placeObject(check, added.pose);  // a bad pose throws before the scene changes
-  addMeshObject(spec, added.mesh, added.material, added.closed);
+  addMeshObject(spec, added.mesh, added.material, added.closed, added.texture);
   placeObject(spec.objects.back(), added.pose);
 }
 
@@ -93,10 +95,11 @@ struct Scene::State {
   size_t objectIndex(size_t i) const { return spec->objects.size() - added.size() + i; }
 
   // Adds `mesh` with `material` as a scene file's "material"; unchanged where it throws.
-  ObjectId add(std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::Json material, bool closed) {
+  ObjectId add(std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::Json material, bool closed,
+                std::shared_ptr<const TextureImage> texture = nullptr) {
     if (nextObject >> 32) throw ArgumentError("a scene gives at most 2^32 - 1 handles");
     const ObjectId id{serial << 32 | nextObject};
-    AddedMesh placed{id, std::move(mesh), std::move(material), closed, pose};
+    AddedMesh placed{id, std::move(mesh), std::move(material), closed, pose, std::move(texture)};
     appendAdded(ownSpec(), placed);
     added.push_back(std::move(placed));
     ++nextObject;
@@ -176,7 +179,9 @@ ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::stri
 ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::optional<Material>& material,
                     bool closed) {
   const scenejson::Json json = material ? materialJson(*material) : scenejson::Json();
-  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, json, closed);
+  std::shared_ptr<const TextureImage> texture;
+  if (material && material->textureImage) texture = TextureAccess::image(*material->textureImage);
+  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, json, closed, std::move(texture));
 }
 
 ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::string& materialName, bool closed) {

@@ -182,6 +182,8 @@ Json materialJson(const Material& m) {
                {"n", m.n},
                {"attenuation", vec3Json(m.attenuation, "material.attenuation")},
                {"color", vec3Json(m.color, "material.color")}};
+  if (!m.texture.empty() && m.textureImage)
+    throw ArgumentError("material: a texture file (texture) or one held in memory (textureImage), not both");
   if (!m.texture.empty()) json["texture"] = m.texture;
   return json;
 }

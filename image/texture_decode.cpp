@@ -81,6 +81,14 @@ TextureImage readTextureSource(const std::string& source, const std::string& wha
   return decodeTexture(*bytes, what);
 }
 
+TextureImage textureFromRows(uint32_t width, uint32_t height, const std::function<void(uint32_t, uint8_t*)>& fillRow,
+                             const std::string& what) {
+  checkSize(width, height, what);
+  TextureRows out = textureRows(width, height);
+  for (uint32_t y = 0; y < height; ++y) fillRow(y, out.rows[y]);
+  return std::move(out.texture);
+}
+
 TextureImage readTextureFile(const std::string& path, const std::string& what) {
   std::string why;
   const std::optional<RegularFile> file = RegularFile::open(path, why);

@@ -4,7 +4,6 @@
 // help() shows.
 #include <phongvk/phongvk.h>
 
-#include "base/base64.h"
 #include "json_writer.h"
 
 #include <pybind11/numpy.h>
@@ -289,19 +288,68 @@ void setFields(py::object& value, const py::dict& fields, const std::string& wha
   }
 }
 
-// A material's texture as Material.texture holds it: None as "", a path as text, an image array
-// ((height, width, 3 or 4) uint8) as a data URI of its PNG. The array's size is checked against
-// what a texture may be before anything is copied or encoded.
-std::string textureSource(const py::object& texture) {
-  if (texture.is_none()) return "";
-  if (py::isinstance<py::str>(texture) || py::hasattr(texture, "__fspath__"))
-    return py::str(py::module_::import("os").attr("fspath")(texture));
-  const py::array array = numberArray(texture, "texture", PNG_ARRAYS);
-  checkPngArray(array, "texture");
-  checkTextureSize(array.shape(1), array.shape(0), "texture");
-  // The copy of the pixels is gone before the PNG is written out as text, and that text is made once.
-  const std::vector<uint8_t> png = encodedPng(pngImageOf(array, "texture"), PNG_LEVEL_DEFAULT, "texture");
-  return "data:image/png;base64," + base64Encoded(std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+// An image array ((height, width, 3 or 4) uint8, or (height, width) uint16 grey: PNG_ARRAYS) as a
+// texture held in memory: its texels written row by row straight from the array, whatever its
+// strides, without a copy of the array or a PNG of it. RGB gets alpha 255, grey is replicated and
+// 16-bit samples keep their high byte, as a PNG of the array decodes. Its size is checked against
+// what a texture may be before anything is allocated.
+Texture texelsOfArray(const py::array& array, const char* name);
+
+Texture textureOfArray(const py::array& array, const char* name) {
+  checkPngArray(array, name);
+  checkTextureSize(array.shape(1), array.shape(0), name);
+  try {
+    return texelsOfArray(array, name);
+  } catch (const std::bad_alloc&) {
+    raiseMemoryError(std::string(name) + ": no memory for its " + std::to_string(array.shape(1)) + " x " +
+                     std::to_string(array.shape(0)) + " texels (" + std::to_string(array.shape(0) * array.shape(1) * 4) +
+                     " bytes)");
+  }
+}
+
+// The texels of an array textureOfArray has checked.
+Texture texelsOfArray(const py::array& array, const char* name) {
+  const int width = int(array.shape(1)), height = int(array.shape(0));
+  const auto* base = static_cast<const uint8_t*>(array.data());
+  const py::ssize_t rowStride = array.strides(0), pixelStride = array.strides(1);
+  if (array.ndim() == 2) {  // 16-bit grey
+    return Texture::fromRows(width, height, [&](int y, uint8_t* rgba) {
+      for (int x = 0; x < width; ++x, rgba += 4) {
+        uint16_t grey;
+        std::memcpy(&grey, base + y * rowStride + x * pixelStride, sizeof grey);
+        rgba[0] = rgba[1] = rgba[2] = uint8_t(grey >> 8);
+        rgba[3] = 255;
+      }
+    }, name);
+  }
+  const py::ssize_t channelStride = array.strides(2);
+  const bool alpha = array.shape(2) == 4;
+  return Texture::fromRows(width, height, [&](int y, uint8_t* rgba) {
+    for (int x = 0; x < width; ++x, rgba += 4) {
+      const uint8_t* pixel = base + y * rowStride + x * pixelStride;
+      for (int c = 0; c < 3; ++c) rgba[c] = pixel[c * channelStride];
+      rgba[3] = alpha ? pixel[3 * channelStride] : 255;
+    }
+  }, name);
+}
+
+std::string textureRepr(const Texture& texture) {
+  return "<phongvk.Texture " + std::to_string(texture.width()) + " x " + std::to_string(texture.height()) + ">";
+}
+
+// Sets a material's texture from what Material.texture takes: None for none, a path (text or
+// os.PathLike) for a file, a phongvk.Texture as it is, an image array as a Texture of its pixels.
+void setTexture(Material& material, const py::object& texture) {
+  material.texture.clear();
+  material.textureImage.reset();
+  if (texture.is_none()) return;
+  if (py::isinstance<py::str>(texture) || py::hasattr(texture, "__fspath__")) {
+    material.texture = py::str(py::module_::import("os").attr("fspath")(texture));
+  } else if (py::isinstance<Texture>(texture)) {
+    material.textureImage = texture.cast<Texture>();
+  } else {
+    material.textureImage = textureOfArray(numberArray(texture, "texture", PNG_ARRAYS), "texture");
+  }
 }
 
 // A material given to add or add_mesh: a phongvk.Material, a dict of its fields, or None (the
@@ -628,6 +676,18 @@ Scene.lights, checked like a scene file's "lights".)")
                ", color=" + vec3Text(l.color) + ")";
       });
 
+  py::class_<Texture>(m, "Texture", R"(A texture held in memory, made once from an image array ((height, width, 3 or
+4) uint8 RGB or RGBA, or (height, width) uint16 grey; row 0 at the top) and shared by every material
+that takes it: Material(texture=...) makes one of an array, or takes one made before. Its texels are
+written from the array directly, whatever its strides: no copy of the array, no PNG. A scene's
+to_json() writes it as a data URI of its PNG.)")
+      .def(py::init([](const py::object& image) { return textureOfArray(numberArray(image, "image", PNG_ARRAYS), "image"); }),
+           py::arg("image"))
+      .def_property_readonly("width", &Texture::width)
+      .def_property_readonly("height", &Texture::height)
+      .def("__eq__", [](const Texture& a, const Texture& b) { return a == b; }, py::is_operator())
+      .def("__repr__", textureRepr);
+
   const Material material;
   py::class_<Material>(m, "Material", R"(A material, as a scene file's material object: ka, kd, ks (the
 ambient, diffuse and specular coefficients), n (the specular exponent, the shininess), attenuation
@@ -637,10 +697,13 @@ alone has, so a scene built in code is well exposed at any distance (a scene fil
 attenuation is the paper's (1, 0.2, 0.2)). Given to Scene.add or add_mesh, it is checked like a
 scene file's material (SceneError naming objects[N].material.KEY). texture: a base-colour texture
 that multiplies color where the object's mesh has texture coordinates (uvs): a PNG or JPEG file's
-path, or an image array ((height, width, 3 or 4) uint8, row 0 at the top), kept as a data URI of
-its PNG (so a scene's to_json() holds it); None for none.)")
+path, a phongvk.Texture, or an image array ((height, width, 3 or 4) uint8, row 0 at the top), held
+as a phongvk.Texture of its pixels (a scene's to_json() writes it as a data URI of its PNG); None
+for none.)")
       .def(py::init([](double ka, double kd, double ks, double n, Vec3 attenuation, Vec3 color, const py::object& texture) {
-             return Material{ka, kd, ks, n, attenuation, color, textureSource(texture)};
+             Material material{ka, kd, ks, n, attenuation, color};
+             setTexture(material, texture);
+             return material;
            }),
            py::kw_only(), py::arg("ka") = material.ka, py::arg("kd") = material.kd, py::arg("ks") = material.ks,
            py::arg("n") = material.n, py::arg("attenuation") = material.attenuation, py::arg("color") = material.color,
@@ -653,14 +716,18 @@ its PNG (so a scene's to_json() holds it); None for none.)")
                      "(a, b, c) of the fall-off 1 / (a + b d + c d^2), positive at every distance d > 0.")
       .def_readwrite("color", &Material::color, "RGB (>= 0).")
       .def_property(
-          "texture", [](const Material& x) { return x.texture.empty() ? py::object(py::none()) : py::object(py::str(x.texture)); },
-          [](Material& x, const py::object& texture) { x.texture = textureSource(texture); },
-          "The texture's file, or a data URI of its PNG (an array given); None for none.")
+          "texture",
+          [](const Material& x) {
+            if (x.textureImage) return py::cast(*x.textureImage);
+            return x.texture.empty() ? py::object(py::none()) : py::object(py::str(x.texture));
+          },
+          setTexture, "The texture's file (or data URI), or the phongvk.Texture an array became; None for none.")
       .def("__eq__", [](const Material& a, const Material& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const Material& x) {
         return "phongvk.Material(ka=" + floatText(x.ka) + ", kd=" + floatText(x.kd) + ", ks=" + floatText(x.ks) +
                ", n=" + floatText(x.n) + ", attenuation=" + vec3Text(x.attenuation) + ", color=" + vec3Text(x.color) +
-               (x.texture.empty()                     ? std::string()
+               (x.textureImage                        ? ", texture=" + textureRepr(*x.textureImage)
+                : x.texture.empty()                   ? std::string()
                 : x.texture.rfind("data:", 0) == 0    ? ", texture=<PNG data URI, " + std::to_string(x.texture.size()) + " characters>"
                                                       : ", texture='" + x.texture + "'") +
                ")";

@@ -108,7 +108,8 @@ Mesh meshFromArrays(const MeshArrays& a) {
   return mesh;
 }
 
-void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::Json& material, bool closed) {
+void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::Json& material, bool closed,
+                   std::shared_ptr<const TextureImage> texture) {
   Object object;
   object.shape = Shape::Mesh;
   object.jsonPath = "objects[" + std::to_string(scene.objects.size()) + "]";
@@ -123,6 +124,11 @@ void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const sce
   if (!material.is_null()) node.emplace(material, object.jsonPath + ".material", scene.path);
   try {
     object.material = table.forObject(node);
+    if (texture) {
+      if (!material.is_object() || material.contains("texture"))
+        throw std::logic_error("addMeshObject: a texture held in memory needs an inline material without one");
+      scene.materials[size_t(object.material)].textureImage = std::move(texture);
+    }
   } catch (...) {
     scene.materials.erase(scene.materials.begin() + ptrdiff_t(materials), scene.materials.end());
     scene.defaultMaterial = defaultMaterial;

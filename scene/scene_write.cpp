@@ -79,6 +79,7 @@ Json materialJson(const MaterialSpec& m, bool withColor = true) {
                {"attenuation", vec3Json(m.attenuation)}};
   if (withColor) json["color"] = vec3Json(m.color);
   if (!m.texture.empty()) json["texture"] = m.texture;
+  else if (m.textureImage) json["texture"] = textureDataUri(*m.textureImage);  // held in memory
   return json;
 }
 

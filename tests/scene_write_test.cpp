@@ -214,6 +214,35 @@ TEST(SceneWrite, AModelFilesTexturesTravelInlineAsPngDataUris) {
   EXPECT_GT(colourCount(reference().render(parseScene(scene.toJson(), "back.json"))), 100u);
 }
 
+// A 2 x 2 texture of four colours, held in memory.
+Texture fourColours() {
+  const uint8_t rgba[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255};
+  return Texture::fromRows(2, 2, [&](int y, uint8_t* row) { std::memcpy(row, rgba + 8 * y, 8); });
+}
+
+TEST(SceneWrite, ATextureHeldInMemoryRendersAndTravelsAsADataUri) {
+  Scene scene(64, 64);
+  Camera camera;
+  camera.position = {0, -3, 0};
+  scene.setCamera(camera);
+  MeshArrays quad;
+  quad.positions = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+  quad.triangles = {0, 1, 2, 0, 2, 3};
+  quad.uvs = {0, 1, 1, 1, 1, 0, 0, 0};
+  Material material;
+  material.textureImage = fourColours();
+  scene.add(quad, IDENTITY_POSE, material);
+  EXPECT_GT(colourCount(reference().render(scene)), 4u);
+  expectRoundTrip(scene);
+  const auto json = nlohmann::json::parse(scene.toJson());
+  EXPECT_EQ(json["objects"][0]["material"]["texture"].get<std::string>().rfind("data:image/png;base64,", 0), 0u);
+  material.texture = "checker.png";
+  EXPECT_EQ(thrownMessage<ArgumentError>([&] { scene.add(quad, IDENTITY_POSE, material); }),
+            "material: a texture file (texture) or one held in memory (textureImage), not both");
+  EXPECT_EQ(thrownMessage<SceneError>([] { Texture::fromRows(0, 4, [](int, uint8_t*) {}, "pixels"); }),
+            "pixels: the image is 0x4 pixels; a texture's sides are 1 to 16384");
+}
+
 // A quad whose coordinates run from -1 to 2, sampling checker.png with the wrap modes `wrap`.
 std::string wrappedQuad(const std::string& wrap) {
   return R"({"camera": {"position": [0, -3, 0], "look_at": [0, 0, 0], "width": 96, "height": 96},

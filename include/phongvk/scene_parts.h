@@ -7,6 +7,9 @@
 #include "phongvk/export.h"
 
 #include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -87,6 +90,34 @@ struct Light {
   bool operator==(const Light&) const = default;
 };
 
+struct ImageRGBA;     // phongvk/image.h
+struct TextureImage;  // the texels as the renderers hold them
+
+// A texture held in memory: its pixels given by the program, not read from a file, decoded once and
+// shared by every material that takes it (Material::textureImage; copies share the texels). A
+// scene written out (Scene::toJson) holds it as a data URI of its PNG.
+class PHONGVK_API Texture {
+ public:
+  // `width` x `height` texels that `fillRow(y, rgba)` writes: row y (0 at the top) as `width` RGBA8
+  // texels, 4 bytes each. Checked before anything is allocated: SceneError "<what>: ..." for a side
+  // outside 1..16384, or texels (4 bytes each) that would pass the memory limit beside the textures
+  // the process holds already.
+  static Texture fromRows(int width, int height, const std::function<void(int y, uint8_t* rgba)>& fillRow,
+                          const std::string& what = "texture");
+  // An RGBA image's pixels, likewise.
+  static Texture fromImage(const ImageRGBA& image, const std::string& what = "texture");
+
+  int width() const;
+  int height() const;
+  // The same texels (a copy of this texture, or this texture itself).
+  bool operator==(const Texture&) const = default;
+
+ private:
+  explicit Texture(std::shared_ptr<const TextureImage> image);
+  std::shared_ptr<const TextureImage> image_;
+  friend struct TextureAccess;
+};
+
 // A material (docs/DESIGN.md "Phong, per vertex"), as a scene file's material object: the ambient,
 // diffuse and specular coefficients, the specular exponent n (the shininess), the attenuation
 // a, b, c of the fall-off 1 / (a + b d + c d^2) and the colour (RGB >= 0). The defaults are the
@@ -104,6 +135,8 @@ struct Material {
   // (docs/DESIGN.md "Textures"): a PNG or JPEG file, or a data URI of one
   // ("data:image/png;base64,..."); empty for none.
   std::string texture;
+  // Or a texture held in memory, in place of `texture` (at most one of the two is set).
+  std::optional<Texture> textureImage;
   bool operator==(const Material&) const = default;
 };
 

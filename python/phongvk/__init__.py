@@ -40,6 +40,7 @@ from ._phongvk import (
     RenderSettings,
     Scene,
     SceneError,
+    Texture,
     __revision__,
     __version__,
     devices,
@@ -52,13 +53,13 @@ from ._phongvk import (
 
 # What the compiled module defines reads as phongvk's own (phongvk.SceneError in a traceback).
 for _name in ("ArgumentError", "Camera", "DeviceError", "Error", "Light", "Material", "Mesh", "NoDeviceError",
-              "OutputError", "RangeError", "RenderSettings", "Scene", "SceneError"):
+              "OutputError", "RangeError", "RenderSettings", "Scene", "SceneError", "Texture"):
     getattr(_phongvk, _name).__module__ = __name__
 
 __all__ = [
     "ArgumentError", "Camera", "DeviceError", "Error", "Image", "Light", "Material", "Mesh", "NO_TRIANGLE",
     "NoticeWarning", "PNG_LEVEL_DEFAULT",
-    "NoDeviceError", "OutputError", "RangeError", "RenderSettings", "Renderer", "Scene", "SceneError",
+    "NoDeviceError", "OutputError", "RangeError", "RenderSettings", "Renderer", "Scene", "SceneError", "Texture",
     "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
 ]
 

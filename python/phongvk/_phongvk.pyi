@@ -1,6 +1,7 @@
 # Type stubs of phongvk's compiled core (python/module.cpp), for type checkers and editors; the
 # docstrings are the module's own (help()). A test checks that they name exactly what the module
 # defines.
+import os
 from typing import Any, Iterable, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -52,6 +53,11 @@ class Light:
     def __init__(self, *, position: Sequence[float] = ..., direction: Optional[Sequence[float]] = None,
                  intensity: float = ..., color: Sequence[float] = ..., at_camera: bool = ...) -> None: ...
 
+class Texture:
+    width: int
+    height: int
+    def __init__(self, image: ArrayLike) -> None: ...
+
 class Material:
     ka: float
     kd: float
@@ -59,10 +65,10 @@ class Material:
     n: float
     attenuation: Vec3
     color: Vec3
-    texture: Optional[str]  # a file, or a data URI of the PNG of an array given
+    texture: Union[None, str, Texture]  # a file (or a data URI), or the Texture an array became
     def __init__(self, *, ka: float = ..., kd: float = ..., ks: float = ..., n: float = ...,
                  attenuation: Sequence[float] = ..., color: Sequence[float] = ...,
-                 texture: Union[None, str, ArrayLike] = None) -> None: ...
+                 texture: Union[None, str, os.PathLike, Texture, ArrayLike] = None) -> None: ...
 
 class RenderSettings:
     shading: str  # "gouraud", "flat" or "phong"
