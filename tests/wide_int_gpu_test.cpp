@@ -1,7 +1,8 @@
 // The GLSL side of shaders/wide_int.h on the device the tests run on (selftest_wide_int.comp, which
 // uses no 64-bit type): the edge functions and sums it gives in two words are int64_t's, over the
-// whole range of snapped coordinates. Its module declares no Int64 capability, so it runs on a
-// device without shaderInt64.
+// whole range of snapped coordinates. Its module declares no Int64 capability, and its context asks
+// for no 64-bit feature, so it runs on a device without shaderInt64: CTest runs it on SwiftShader
+// too (tests/CMakeLists.txt, label swiftshader).
 #include "shaders/edges.h"
 #include "shaders/spirv_words.h"
 #include "test_util.h"
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <span>
 #include <string>
@@ -33,7 +35,11 @@ TEST(WideIntGpu, EdgeFunctionsAndSumsAreInt64s) {
   while (points.size() < 3 * 4096) points.push_back({any(random), any(random)});
   const uint32_t cases = uint32_t(points.size() / 3);
 
-  VulkanContext context = createContext({.deviceIndex = -1, .validate = true});
+  VulkanContext context = createContext({.deviceIndex = -1, .validate = true, .computeOnly = true});
+  // PHONGVK_TEST_DEVICE (tests/CMakeLists.txt's SwiftShader entry): the device the run must be on.
+  if (const char* expected = std::getenv("PHONGVK_TEST_DEVICE")) {
+    EXPECT_NE(context.info.name.find(expected), std::string::npos) << "ran on " << context.info.name;
+  }
   {
     const Binding bindings[] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     ComputePipeline pipeline = createComputePipeline(context, spirv_selftest_wide_int, sizeof(spirv_selftest_wide_int),

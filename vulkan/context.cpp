@@ -36,11 +36,11 @@ VulkanContext createContext(const ContextOptions& options) {
     context.instance = createInstance(context.validation.get());
     if (context.validation) createMessenger(context);
     std::vector<VkPhysicalDevice> devices = physicalDevices(context.instance);
-    std::vector<DeviceInfo> reports = inspectDevices(devices);
+    std::vector<DeviceInfo> reports = inspectDevices(devices, options.computeOnly);
     uint32_t chosen = chooseDevice(reports, options.deviceIndex);
     context.physicalDevice = devices[chosen];
     describeDevice(context, reports[chosen], storageRange);
-    createDevice(context);
+    createDevice(context, options.computeOnly);
     createCommandPool(context);
     if (options.pipelineCache) context.pipelineCache = loadPipelineCache(context);
   } catch (...) {

@@ -33,6 +33,10 @@ struct ContextOptions {
   int deviceIndex = -1;   // -1: the best suitable device (discrete > integrated > virtual > CPU)
   bool validate = false;  // Khronos validation + synchronization validation; also env PHONGVK_VALIDATE=1
   bool pipelineCache = false;  // a VkPipelineCache kept across processes (pipeline_cache.h)
+  // Any device with a compute queue, none of the renderer's 64-bit and 8-bit features asked for:
+  // for the self-test of the 32-bit arithmetic (shaders/wide_int.h) on devices without them. The
+  // renderer's passes cannot run on such a context.
+  bool computeOnly = false;
 };
 
 // Warnings and errors from the validation layers, collected so tests can assert there were none.

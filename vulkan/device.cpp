@@ -91,7 +91,7 @@ std::optional<uint32_t> findComputeFamily(VkPhysicalDevice device) {
 
 namespace {
 
-DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index) {
+DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index, bool computeOnly) {
   VkPhysicalDeviceProperties properties;
   vkGetPhysicalDeviceProperties(device, &properties);
 
@@ -112,6 +112,7 @@ DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index) {
   if (!features.features.shaderInt64) report.missing.push_back("shaderInt64");
   if (vulkan12 && !features12.shaderBufferInt64Atomics) report.missing.push_back("shaderBufferInt64Atomics");
   if (vulkan12 && !features12.storageBuffer8BitAccess) report.missing.push_back("storageBuffer8BitAccess");
+  if (computeOnly) report.missing.clear();
   if (!findComputeFamily(device)) report.missing.push_back("a compute queue");
   report.suitable = report.missing.empty();
   return report;
@@ -119,9 +120,9 @@ DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index) {
 
 }  // namespace
 
-std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices) {
+std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices, bool computeOnly) {
   std::vector<DeviceInfo> reports;
-  for (uint32_t i = 0; i < devices.size(); ++i) reports.push_back(inspectDevice(devices[i], i));
+  for (uint32_t i = 0; i < devices.size(); ++i) reports.push_back(inspectDevice(devices[i], i, computeOnly));
   return reports;
 }
 
@@ -180,7 +181,7 @@ void describeDevice(VulkanContext& context, const DeviceInfo& report, std::optio
   context.timestamps = context.timestampValidBits > 0 && context.properties.limits.timestampPeriod > 0;
 }
 
-void createDevice(VulkanContext& context) {
+void createDevice(VulkanContext& context, bool computeOnly) {
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo = { VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO };
   queueInfo.queueFamilyIndex = context.queueFamily;
@@ -200,7 +201,7 @@ void createDevice(VulkanContext& context) {
     extensions.push_back("VK_KHR_portability_subset");
 
   VkDeviceCreateInfo info = { VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO };
-  info.pNext = &features;
+  info.pNext = computeOnly ? nullptr : &features;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());

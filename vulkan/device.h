@@ -11,8 +11,9 @@ namespace phongvk {
 
 std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance);
 
-// Every device with what it lacks of phongvk's requirements (DeviceInfo::missing).
-std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices);
+// Every device with what it lacks of phongvk's requirements (DeviceInfo::missing). With
+// `computeOnly`, a compute queue is all a device needs (ContextOptions::computeOnly).
+std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices, bool computeOnly = false);
 
 // The first compute queue family that can write timestamps, else the first compute family.
 std::optional<uint32_t> findComputeFamily(VkPhysicalDevice device);
@@ -26,7 +27,8 @@ std::optional<uint64_t> storageRangeVariable();
 // lowered to `storageRange` where that is smaller), memory, queue family, timestamps.
 void describeDevice(VulkanContext& context, const DeviceInfo& info, std::optional<uint64_t> storageRange);
 
-// The logical device with phongvk's features and its compute queue, loaded into volk.
-void createDevice(VulkanContext& context);
+// The logical device with phongvk's features (none with `computeOnly`) and its compute queue,
+// loaded into volk.
+void createDevice(VulkanContext& context, bool computeOnly = false);
 
 }  // namespace phongvk
