@@ -7,7 +7,6 @@
 #include "prepare/camera_fit.h"
 #include "prepare/facing.h"
 #include "prepare/memory_estimate.h"
-#include "shaders/shared.h"
 #include "scene/camera.h"
 
 #include <cmath>

@@ -62,4 +62,7 @@ struct TextureImage {
   uint32_t wrapV = gpu::TEXTURE_WRAP_REPEAT;
 };
 
+// `texture` with the wrap modes u and v: itself where it wraps so already, else a copy that does.
+std::shared_ptr<const TextureImage> withWrap(std::shared_ptr<const TextureImage> texture, uint32_t u, uint32_t v);
+
 }  // namespace phongvk

@@ -336,14 +336,8 @@ class Reader {
     if (t.source < 0 || size_t(t.source) >= model_.images.size()) fail(where_, path_, name + " has no image");
     decoded = image(t.source);
     if (t.sampler >= 0 && size_t(t.sampler) < model_.samplers.size()) {
-      const uint32_t wrapU = wrapMode(model_.samplers[size_t(t.sampler)].wrapS);
-      const uint32_t wrapV = wrapMode(model_.samplers[size_t(t.sampler)].wrapT);
-      if (wrapU != decoded->wrapU || wrapV != decoded->wrapV) {  // a copy only for a sampler that wraps otherwise
-        TextureImage wrapped = *decoded;
-        wrapped.wrapU = wrapU;
-        wrapped.wrapV = wrapV;
-        decoded = std::make_shared<const TextureImage>(std::move(wrapped));
-      }
+      const tinygltf::Sampler& sampler = model_.samplers[size_t(t.sampler)];
+      decoded = withWrap(decoded, wrapMode(sampler.wrapS), wrapMode(sampler.wrapT));
     }
     return decoded;
   }

@@ -133,8 +133,9 @@ void checkPngArray(const py::array& array, const char* name) {
   }
 }
 
-// The image a checked array (checkPngArray) holds.
-PngImage pngImageOf(const py::array& array, const char* name) {
+// `array`, the argument `name`, as the image it holds (ValueError where checkPngArray refuses it).
+PngImage pngImageFromArray(const py::array& array, const char* name) {
+  checkPngArray(array, name);
   const int w = int(array.shape(1)), h = int(array.shape(0));
   if (array.ndim() == 2) return ImageGrey16{w, h, valuesOf<uint16_t>(array, name)};
   if (array.shape(2) == 4) return ImageRGBA{w, h, valuesOf<uint8_t>(array, name)};
@@ -143,12 +144,6 @@ PngImage pngImageOf(const py::array& array, const char* name) {
   image.height = h;
   image.rgb = valuesOf<uint8_t>(array, name);
   return image;
-}
-
-// `array`, the argument `name`, as the image it holds.
-PngImage pngImageFromArray(const py::array& array, const char* name) {
-  checkPngArray(array, name);
-  return pngImageOf(array, name);
 }
 
 // The PNG of `pixels` (the argument `name`) at `level`, encoded without the GIL; MemoryError naming
@@ -288,26 +283,7 @@ void setFields(py::object& value, const py::dict& fields, const std::string& wha
   }
 }
 
-// An image array ((height, width, 3 or 4) uint8, or (height, width) uint16 grey: PNG_ARRAYS) as a
-// texture held in memory: its texels written row by row straight from the array, whatever its
-// strides, without a copy of the array or a PNG of it. RGB gets alpha 255, grey is replicated and
-// 16-bit samples keep their high byte, as a PNG of the array decodes. Its size is checked against
-// what a texture may be before anything is allocated.
-Texture texelsOfArray(const py::array& array, const char* name);
-
-Texture textureOfArray(const py::array& array, const char* name) {
-  checkPngArray(array, name);
-  checkTextureSize(array.shape(1), array.shape(0), name);
-  try {
-    return texelsOfArray(array, name);
-  } catch (const std::bad_alloc&) {
-    raiseMemoryError(std::string(name) + ": no memory for its " + std::to_string(array.shape(1)) + " x " +
-                     std::to_string(array.shape(0)) + " texels (" + std::to_string(array.shape(0) * array.shape(1) * 4) +
-                     " bytes)");
-  }
-}
-
-// The texels of an array textureOfArray has checked.
+// The texels of an image array textureOfArray has checked, row by row from its strides.
 Texture texelsOfArray(const py::array& array, const char* name) {
   const int width = int(array.shape(1)), height = int(array.shape(0));
   const auto* base = static_cast<const uint8_t*>(array.data());
@@ -331,6 +307,23 @@ Texture texelsOfArray(const py::array& array, const char* name) {
       rgba[3] = alpha ? pixel[3 * channelStride] : 255;
     }
   }, name);
+}
+
+// An image array ((height, width, 3 or 4) uint8, or (height, width) uint16 grey: PNG_ARRAYS) as a
+// texture held in memory: its texels written row by row straight from the array, whatever its
+// strides, without a copy of the array or a PNG of it. RGB gets alpha 255, grey is replicated and
+// 16-bit samples keep their high byte, as a PNG of the array decodes. Its size is checked against
+// what a texture may be before anything is allocated.
+Texture textureOfArray(const py::array& array, const char* name) {
+  checkPngArray(array, name);
+  checkTextureSize(array.shape(1), array.shape(0), name);
+  try {
+    return texelsOfArray(array, name);
+  } catch (const std::bad_alloc&) {
+    raiseMemoryError(std::string(name) + ": no memory for its " + std::to_string(array.shape(1)) + " x " +
+                     std::to_string(array.shape(0)) + " texels (" + std::to_string(array.shape(0) * array.shape(1) * 4) +
+                     " bytes)");
+  }
 }
 
 std::string textureRepr(const Texture& texture) {

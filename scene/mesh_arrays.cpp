@@ -205,7 +205,7 @@ std::shared_ptr<const TextureImage> meshTexture(const Node& node, const std::str
   const std::string source = string(image);
   std::shared_ptr<const TextureImage> texture;
   try {
-    texture = sceneTexture(source, baseDir, source.rfind("data:", 0) == 0 ? "the data URI" : "'" + source + "'");
+    texture = sceneTexture(source, baseDir);
   } catch (const SceneError& error) {
     image.fail(error.what());
   }
@@ -213,13 +213,8 @@ std::shared_ptr<const TextureImage> meshTexture(const Node& node, const std::str
   if (!wrap) return texture;
   requireArray(*wrap);
   if (wrap->json().size() != 2) wrap->fail("must be [u, v], two wrap modes, got " + std::to_string(wrap->json().size()));
-  const uint32_t u = choice<uint32_t>(wrap->element(0), TEXTURE_WRAP_NAMES);
-  const uint32_t v = choice<uint32_t>(wrap->element(1), TEXTURE_WRAP_NAMES);
-  if (u == texture->wrapU && v == texture->wrapV) return texture;
-  auto wrapped = std::make_shared<TextureImage>(*texture);  // a copy only where it wraps otherwise
-  wrapped->wrapU = u;
-  wrapped->wrapV = v;
-  return wrapped;
+  return withWrap(texture, choice<uint32_t>(wrap->element(0), TEXTURE_WRAP_NAMES),
+                  choice<uint32_t>(wrap->element(1), TEXTURE_WRAP_NAMES));
 }
 
 // Which of the mesh's textures each vertex samples: one integer per vertex, -1 (none) up to the

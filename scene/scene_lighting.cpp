@@ -80,7 +80,7 @@ MaterialSpec readMaterial(const Node& node, const std::string& baseDir) {
     const std::string source = string(*texture);
     if (source.empty()) texture->fail("must name a PNG or JPEG file or be a data URI of one, got ''");
     try {
-      material.textureImage = sceneTexture(source, baseDir, source.rfind("data:", 0) == 0 ? "the data URI" : "'" + source + "'");
+      material.textureImage = sceneTexture(source, baseDir);
     } catch (const SceneError& error) {
       texture->fail(error.what());
     }

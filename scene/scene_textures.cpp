@@ -34,8 +34,7 @@ std::string textureSourceOf(const std::string& source, const std::string& baseDi
   return (std::filesystem::path(baseDir) / source).string();  // an absolute source replaces baseDir
 }
 
-std::shared_ptr<const TextureImage> sceneTexture(const std::string& source, const std::string& baseDir,
-                                                 const std::string& what) {
+std::shared_ptr<const TextureImage> sceneTexture(const std::string& source, const std::string& baseDir) {
   static std::mutex lock;
   static std::map<SourceVersion, std::weak_ptr<const TextureImage>> decoded;
   const SourceVersion version = versionOf(textureSourceOf(source, baseDir));
@@ -43,6 +42,7 @@ std::shared_ptr<const TextureImage> sceneTexture(const std::string& source, cons
     const std::lock_guard<std::mutex> held(lock);
     if (auto texture = decoded[version].lock()) return texture;
   }
+  const std::string what = source.rfind("data:", 0) == 0 ? "the data URI" : "'" + source + "'";
   auto texture = std::make_shared<const TextureImage>(readTextureSource(version.source, what));
   const std::lock_guard<std::mutex> held(lock);
   std::erase_if(decoded, [](const auto& entry) { return entry.second.expired(); });

@@ -11,9 +11,9 @@
 namespace phongvk {
 
 // The texture `source` names: a data URI, or a file (resolved against `baseDir` unless absolute;
-// decoded again when the file changed). Throws SceneError "<what>: <why>".
-std::shared_ptr<const TextureImage> sceneTexture(const std::string& source, const std::string& baseDir,
-                                                 const std::string& what);
+// decoded again when the file changed). Throws SceneError "<what>: <why>", <what> "the data URI" or
+// the file as `source` names it ('textures/wood.png').
+std::shared_ptr<const TextureImage> sceneTexture(const std::string& source, const std::string& baseDir);
 
 // `source` as a scene file written elsewhere reads it: a file as an absolute path, a data URI as it is.
 std::string textureSourceOf(const std::string& source, const std::string& baseDir);
