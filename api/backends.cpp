@@ -56,7 +56,8 @@ class VulkanBackend : public RendererImpl {
     contextMs_ = msSince(start);
   }
   ~VulkanBackend() override { destroyContext(context_); }
-  std::string deviceName() const override { return context_.info.name; }
+  // The device and its key path: "llvmpipe (LLVM 15.0.6, 256 bits), keys: 64-bit atomics".
+  std::string deviceName() const override { return context_.info.name + ", keys: " + keyPathWords(context_.info); }
 
  protected:
   uint64_t validationMessages() const override { return context_.validation ? context_.validation->count() : 0; }

@@ -5,6 +5,7 @@
 #include "phongvk/phongvk.h"
 
 #include <string>
+#include <vector>
 
 namespace phongvk::cli {
 
@@ -49,6 +50,7 @@ struct RenderOptions : ViewOptions {
 struct DiffOptions : ViewOptions {
   std::string heatmap;          // optional PNG
   double tolerance = 1;         // max allowed channel difference, in 8-bit units
+  std::vector<int> devices;     // --devices: these devices each against the reference (empty: --device's)
 };
 
 struct SequenceOptions : ViewOptions {

@@ -138,6 +138,13 @@ int main(int argc, char** argv) {
   addViewOptions(diffCmd, diff);
   diffCmd->add_option("--heatmap", diff.heatmap, "Write a PNG showing where the images differ")
       ->check(OUTPUT_NAME);
+  diffCmd->add_option("--devices", diff.devices,
+                      "Comma-separated Vulkan device indices (see 'phongvk devices'): render on each of them and the "
+                      "reference, and compare each device with the reference")
+      ->delimiter(',')
+      ->check(CLI::NonNegativeNumber)
+      ->excludes("--device")
+      ->excludes("--heatmap");
   diffCmd->add_option("--tolerance", diff.tolerance, "Largest allowed channel difference, in 8-bit units (default 1)")
       ->check(CLI::Validator(
           [](const std::string& text) {

@@ -1,5 +1,5 @@
 # phongvk_compile_shaders(TARGET target OUTPUT_DIR dir SOURCES file... [EXACT_SKIP name...]
-#                         [OPT_SKIP name...])
+#                         [KEYS32_SKIP name...] [OPT_SKIP name...])
 #
 # Compiles GLSL to SPIR-V at build time with glslang and embeds it as C arrays: x.comp becomes
 # spirv_x in x.spv.h; a graphics stage x.vert / x.frag becomes spirv_x_vert / spirv_x_frag in
@@ -9,7 +9,10 @@
 # EXACT_FLOAT_OPS=1: division and sqrt corrected to the correctly rounded result
 # (shaders/exact_float.h), for devices whose own are off (vulkan/float_probe.h). A build of its own,
 # not a specialization constant: lavapipe inlines both sides of every call before it drops the dead
-# one, which lengthened every process's pipeline compiling (docs/DECISIONS.md).
+# one, which lengthened every process's pipeline compiling (docs/DECISIONS.md). Every compute
+# shader not named in KEYS32_SKIP is also built for the 32-bit key path, as spirv_x_k32 and
+# spirv_x_k32_exact with PHONGVK_KEYS32=1: no 64-bit integer and no 8-bit storage anywhere in the
+# module (docs/DESIGN.md "Visibility").
 # Every compute shader's floating-point operations are then decorated NoContraction
 # (shaders/no_contraction.cpp: glslang's `precise` stops at function boundaries, and no optimizer
 # may rewrite an operation the reference computes as written), and the module goes through
@@ -23,7 +26,7 @@ find_program(PHONGVK_SPIRV_OPT spirv-opt REQUIRED)  # Debian: spirv-tools
 set(PHONGVK_EMBED_SPIRV ${CMAKE_CURRENT_LIST_DIR}/embed_spirv.cmake)
 
 function(phongvk_compile_shaders)
-  cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR" "SOURCES;EXACT_SKIP;OPT_SKIP" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;OUTPUT_DIR" "SOURCES;EXACT_SKIP;KEYS32_SKIP;OPT_SKIP" ${ARGN})
   set(outputs)
   foreach(src ${ARG_SOURCES})
     get_filename_component(name ${src} NAME_WE)
@@ -34,6 +37,9 @@ function(phongvk_compile_shaders)
       if(NOT name IN_LIST ARG_EXACT_SKIP)
         list(APPEND variants "${name}_exact")
       endif()
+      if(NOT name IN_LIST ARG_KEYS32_SKIP)
+        list(APPEND variants "${name}_k32" "${name}_k32_exact")
+      endif()
     else()
       string(SUBSTRING ${stage} 1 -1 stage)
       set(variants "${name}_${stage}")
@@ -42,7 +48,10 @@ function(phongvk_compile_shaders)
       set(out ${ARG_OUTPUT_DIR}/${variant}.spv.h)
       set(defines)
       if(variant MATCHES "_exact$")
-        set(defines -DEXACT_FLOAT_OPS=1)
+        list(APPEND defines -DEXACT_FLOAT_OPS=1)
+      endif()
+      if(variant MATCHES "_k32")
+        list(APPEND defines -DPHONGVK_KEYS32=1)
       endif()
       add_custom_command(
         OUTPUT ${out}.spv

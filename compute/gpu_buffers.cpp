@@ -20,14 +20,20 @@ constexpr VkBufferUsageFlags STORAGE = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 
 uint32_t binsAcross(uint32_t pixels) { return groupCount(pixels, BIN_SIZE); }
 
+// Whether the passes read the arrays as texels (texel views), or as storage buffers: the 32-bit key
+// path (bindings.glsl TEXELS).
+bool texelViews(const VulkanContext& context) { return !context.info.keys32; }
+
 // Throws when one array would exceed the device's largest storage buffer binding.
 void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
   checkDeviceLimit(context, what, bytes, "bytes", "maxStorageBufferRange",
                    context.properties.limits.maxStorageBufferRange);
 }
 
-// Throws when a texel view would exceed the device's largest texel buffer.
+// Throws when an array the passes read as texels would exceed the device's largest texel buffer,
+// or on the 32-bit key path (which reads them as storage buffers) its largest storage buffer.
 void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* what) {
+  if (context.info.keys32) return checkFits(context, texels * TEXEL_BYTES, what);
   checkDeviceLimit(context, what, texels, "texels", "maxTexelBufferElements",
                    context.properties.limits.maxTexelBufferElements);
 }
@@ -54,7 +60,8 @@ void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
 // of them all.
 void createTexelPool(TexelBuffer& pool, const VulkanContext& context, const SceneData& data) {
   const VkDeviceSize bytes = data.texelCount * sizeof(uint32_t);
-  createTexelBuffer(pool, context, nullptr, (bytes + TEXEL_BYTES - 1) / TEXEL_BYTES * TEXEL_BYTES, 0, MemoryKind::DeviceLocal);
+  createTexelBuffer(pool, context, nullptr, (bytes + TEXEL_BYTES - 1) / TEXEL_BYTES * TEXEL_BYTES, 0, MemoryKind::DeviceLocal,
+                    texelViews(context));
   for (size_t t = 0; t < data.textureImages.size(); ++t) {
     const Texels& texels = data.textureImages[t]->texels;
     uploadToBuffer(context, pool.buffer, texels.data(), texels.size() * sizeof(uint32_t),
@@ -96,22 +103,22 @@ void GpuRenderer::createFrameBuffers() {
 void GpuRenderer::uploadScene(const SceneData& data) {
   vertexCount_ = static_cast<uint32_t>(data.vertices.size());
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
-  createTexelBuffer(scene_.vertices, context_, data.vertices, MemoryKind::DeviceLocal);
-  createTexelBuffer(scene_.triangles, context_, data.triangles, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.vertices, context_, data.vertices, MemoryKind::DeviceLocal, texelViews(context_));
+  createTexelBuffer(scene_.triangles, context_, data.triangles, MemoryKind::DeviceLocal, texelViews(context_));
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
-  createTexelBuffer(scene_.objects, context_, data.objects, MemoryKind::HostVisible);
-  createTexelBuffer(scene_.materials, context_, data.materials, MemoryKind::HostVisible);
-  createTexelBuffer(scene_.lights, context_, data.lights, MemoryKind::HostVisible);
+  createTexelBuffer(scene_.objects, context_, data.objects, MemoryKind::HostVisible, texelViews(context_));
+  createTexelBuffer(scene_.materials, context_, data.materials, MemoryKind::HostVisible, texelViews(context_));
+  createTexelBuffer(scene_.lights, context_, data.lights, MemoryKind::HostVisible, texelViews(context_));
   lastObjects_ = data.objects;
   lastMaterials_ = data.materials;
   lastLights_ = data.lights;
   // Written by the shade pass as storage buffers, read by the others as texels.
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
-  createTexelBuffer(scene_.shadedPositions, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
-  createTexelBuffer(scene_.shadedColors, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.shadedPositions, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
+  createTexelBuffer(scene_.shadedColors, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
   textured_ = !data.uvs.empty();
-  createTexelBuffer(scene_.uvs, context_, data.uvs, MemoryKind::DeviceLocal);
-  createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal);
+  createTexelBuffer(scene_.uvs, context_, data.uvs, MemoryKind::DeviceLocal, texelViews(context_));
+  createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelPool(scene_.texelPool, context_, data);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
   createBuffer(scene_.clipList, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
@@ -173,8 +180,8 @@ void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
   checkTexels(context_, setupBytes / TEXEL_BYTES, "the large triangles' set-ups");
   destroyTexelBuffer(image_.large, context_);
   destroyTexelBuffer(image_.largeSetups, context_);
-  createTexelBuffer(image_.large, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal);
-  createTexelBuffer(image_.largeSetups, context_, nullptr, setupBytes, STORAGE, MemoryKind::DeviceLocal);
+  createTexelBuffer(image_.large, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
+  createTexelBuffer(image_.largeSetups, context_, nullptr, setupBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
   largeCapacity_ = entries;
   largeSetupCapacity_ = setups;
 }
@@ -188,27 +195,27 @@ void GpuRenderer::updateDescriptors() {
   const BufferDescriptor descriptors[] = {
       bufferDescriptor(BINDING_FRAME, perFrame_.frame),
       bufferDescriptor(BINDING_CONTROL, perFrame_.control),
-      texelDescriptor(BINDING_VERTICES, scene_.vertices),
-      texelDescriptor(BINDING_TRIANGLES, scene_.triangles),
-      texelDescriptor(BINDING_OBJECTS, scene_.objects),
-      texelDescriptor(BINDING_MATERIALS, scene_.materials),
-      texelDescriptor(BINDING_LIGHTS, scene_.lights),
-      texelDescriptor(BINDING_SHADED, scene_.shadedPositions),
-      texelDescriptor(BINDING_SHADED_TEXELS, scene_.shadedPositions),
-      texelDescriptor(BINDING_SHADED_COLORS, scene_.shadedColors),
-      texelDescriptor(BINDING_SHADED_COLOR_TEXELS, scene_.shadedColors),
+      texelDescriptor(bindings_[BINDING_VERTICES], scene_.vertices),
+      texelDescriptor(bindings_[BINDING_TRIANGLES], scene_.triangles),
+      texelDescriptor(bindings_[BINDING_OBJECTS], scene_.objects),
+      texelDescriptor(bindings_[BINDING_MATERIALS], scene_.materials),
+      texelDescriptor(bindings_[BINDING_LIGHTS], scene_.lights),
+      texelDescriptor(bindings_[BINDING_SHADED], scene_.shadedPositions),
+      texelDescriptor(bindings_[BINDING_SHADED_TEXELS], scene_.shadedPositions),
+      texelDescriptor(bindings_[BINDING_SHADED_COLORS], scene_.shadedColors),
+      texelDescriptor(bindings_[BINDING_SHADED_COLOR_TEXELS], scene_.shadedColors),
       bufferDescriptor(BINDING_KEYS, image_.keys),
       bufferDescriptor(BINDING_COLOR, image_.colors),
-      texelDescriptor(BINDING_LARGE, image_.large),
-      texelDescriptor(BINDING_LARGE_TEXELS, image_.large),
+      texelDescriptor(bindings_[BINDING_LARGE], image_.large),
+      texelDescriptor(bindings_[BINDING_LARGE_TEXELS], image_.large),
       bufferDescriptor(BINDING_BINS, image_.bins),
-      texelDescriptor(BINDING_LARGE_SETUPS, image_.largeSetups),
-      texelDescriptor(BINDING_LARGE_SETUP_TEXELS, image_.largeSetups),
+      texelDescriptor(bindings_[BINDING_LARGE_SETUPS], image_.largeSetups),
+      texelDescriptor(bindings_[BINDING_LARGE_SETUP_TEXELS], image_.largeSetups),
       bufferDescriptor(BINDING_CLIP_LIST, scene_.clipList),
       bufferDescriptor(BINDING_STATUS, perFrame_.status),
-      texelDescriptor(BINDING_UVS, scene_.uvs),
-      texelDescriptor(BINDING_TEXTURES, scene_.textures),
-      texelDescriptor(BINDING_TEXEL_POOL, scene_.texelPool),
+      texelDescriptor(bindings_[BINDING_UVS], scene_.uvs),
+      texelDescriptor(bindings_[BINDING_TEXTURES], scene_.textures),
+      texelDescriptor(bindings_[BINDING_TEXEL_POOL], scene_.texelPool),
   };
   static_assert(std::size(descriptors) == std::size(SHARED_BINDINGS), "every binding of the table is written");
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);

@@ -22,6 +22,26 @@
 #include "shaders/resolve_small_exact.spv.h"
 #include "shaders/shade_vertices.spv.h"
 #include "shaders/shade_vertices_exact.spv.h"
+#include "shaders/bin_large_k32.spv.h"
+#include "shaders/bin_large_k32_exact.spv.h"
+#include "shaders/clip_triangles_k32.spv.h"
+#include "shaders/clip_triangles_k32_exact.spv.h"
+#include "shaders/fill_background_k32.spv.h"
+#include "shaders/fill_background_k32_exact.spv.h"
+#include "shaders/pack_colors_k32.spv.h"
+#include "shaders/pack_colors_k32_exact.spv.h"
+#include "shaders/raster_triangles_k32.spv.h"
+#include "shaders/raster_triangles_k32_exact.spv.h"
+#include "shaders/resolve_large_k32.spv.h"
+#include "shaders/resolve_large_k32_exact.spv.h"
+#include "shaders/resolve_large_keys_k32.spv.h"
+#include "shaders/resolve_large_keys_k32_exact.spv.h"
+#include "shaders/resolve_lit_k32.spv.h"
+#include "shaders/resolve_lit_k32_exact.spv.h"
+#include "shaders/resolve_small_k32.spv.h"
+#include "shaders/resolve_small_k32_exact.spv.h"
+#include "shaders/shade_vertices_k32.spv.h"
+#include "shaders/shade_vertices_k32_exact.spv.h"
 
 #include "vulkan/pipeline_cache.h"
 
@@ -41,22 +61,18 @@ struct ShaderCode {
 };
 
 #define SHADER(name) {spirv_##name, sizeof(spirv_##name)}
+#define BUILDS(name) {{SHADER(name), SHADER(name##_exact)}, {SHADER(name##_k32), SHADER(name##_k32_exact)}}
 
-// Per pass (GpuRenderer::Pass order): the build with the device's own division and sqrt, and the
-// `_exact` build that corrects them (shaders/exact_float.h), for devices whose own are off.
-constexpr ShaderCode SHADERS[][2] = {
-    {SHADER(shade_vertices), SHADER(shade_vertices_exact)},
-    {SHADER(raster_triangles), SHADER(raster_triangles_exact)},
-    {SHADER(clip_triangles), SHADER(clip_triangles_exact)},
-    {SHADER(resolve_small), SHADER(resolve_small_exact)},
-    {SHADER(resolve_large), SHADER(resolve_large_exact)},
-    {SHADER(bin_large), SHADER(bin_large_exact)},
-    {SHADER(fill_background), SHADER(fill_background_exact)},
-    {SHADER(pack_colors), SHADER(pack_colors_exact)},
-    {SHADER(resolve_lit), SHADER(resolve_lit_exact)},
-    {SHADER(resolve_large_keys), SHADER(resolve_large_keys_exact)},
+// Per pass (GpuRenderer::Pass order), for the 64-bit and then the 32-bit key path: the build with
+// the device's own division and sqrt, and the `_exact` build that corrects them
+// (shaders/exact_float.h), for devices whose own are off.
+constexpr ShaderCode SHADERS[][2][2] = {
+    BUILDS(shade_vertices), BUILDS(raster_triangles), BUILDS(clip_triangles), BUILDS(resolve_small),
+    BUILDS(resolve_large), BUILDS(bin_large), BUILDS(fill_background), BUILDS(pack_colors),
+    BUILDS(resolve_lit), BUILDS(resolve_large_keys),
 };
 
+#undef BUILDS
 #undef SHADER
 
 // The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
@@ -90,9 +106,9 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   for (const PipelineRequest& r : requests) {
     std::vector<uint32_t> key = pipelineKey(r.shader(), exactFloats_, r.specs);
     if (pipelines_->byKey_.count(key) != 0) continue;
-    const ShaderCode code = SHADERS[r.shader()][exactFloats_ ? 1 : 0];
+    const ShaderCode code = SHADERS[r.shader()][context_.info.keys32 ? 1 : 0][exactFloats_ ? 1 : 0];
     pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
-                           return createComputePipeline(context_, code.spirv, code.bytes, SHARED_BINDINGS, 0, specs);
+                           return createComputePipeline(context_, code.spirv, code.bytes, bindings_, 0, specs);
                          }));
   }
   std::exception_ptr failure;
@@ -151,6 +167,12 @@ std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::ve
   if (textured_) requests[RESOLVE_SMALL].specs.push_back({SPEC_TEXTURED, 1u});
   if (frame.specular == SPECULAR_BLINN) {
     for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_BLINN, 1u});
+  }
+  if (context_.info.keys32) {  // the triangle and clip passes twice: depth words, then ids (raster_loops.glsl)
+    requests.push_back({RASTER_IDS, {{SPEC_KEY_PASS, KEY_PASS_IDS}}, RASTER});
+    requests.push_back({CLIP_IDS, requests[CLIP].specs, CLIP});
+    requests.back().specs.push_back({SPEC_KEY_PASS, KEY_PASS_IDS});
+    for (Pass pass : {RASTER, CLIP}) requests[pass].specs.push_back({SPEC_KEY_PASS, KEY_PASS_DEPTH});
   }
   if (binPass_) requests.push_back({BIN_LARGE, {}});
   if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background

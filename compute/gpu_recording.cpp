@@ -55,6 +55,14 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   bind(CLIP);
   vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
   computeBarrier(cmd);
+  if (context_.info.keys32) {  // the keys' low words, among the fragments at each pixel's depth
+    bind(RASTER_IDS);
+    vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
+    computeBarrier(cmd);
+    bind(CLIP_IDS);
+    vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
+    computeBarrier(cmd);
+  }
   if (binPass_) {
     bind(BIN_LARGE);
     vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, binGroupsX));

@@ -33,12 +33,13 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
     : context_(context),
       options_(options),
       exactFloats_(options.exactFloats ? *options.exactFloats : probeFloatOps(context).useExact()),
-      pipelines_(options.pipelines ? options.pipelines : std::make_shared<GpuPipelineSet>(context)) {
+      pipelines_(options.pipelines ? options.pipelines : std::make_shared<GpuPipelineSet>(context)),
+      bindings_(sharedBindings(context)) {
   startRetries();
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool cpuLayout = options.layout == WorkLayout::Cpu || (options.layout == WorkLayout::Auto && cpu);
   resolveTiles_ = cpuLayout ? 1u : 8u;
-  binPass_ = !cpuLayout;
+  binPass_ = !cpuLayout || context_.info.keys32;  // the 32-bit key path's clip pass never links (raster_loops.glsl)
   if (options.output == ColorOutput::InKeySlots && !hasSharedMemory(context_)) {
     throw ArgumentError("colours in the key slots need memory that is device local and host cached");
   }

@@ -135,7 +135,10 @@ class GpuRenderer {
   // The passes a frame records, then shader builds that stand in for one: RESOLVE_LIT runs
   // RESOLVE_SMALL in frames lit per pixel (flat and Phong shading), RESOLVE_LARGE_KEYS runs
   // RESOLVE_LARGE where it keeps only keys (those frames, and lists taken in rounds).
-  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, RESOLVE_LIT, RESOLVE_LARGE_KEYS, PASS_COUNT };
+  // On the 32-bit key path RASTER_IDS and CLIP_IDS run the triangle and clip shaders again, for the
+  // keys' low words (raster_loops.glsl KEY_PASS).
+  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, RESOLVE_LIT, RESOLVE_LARGE_KEYS,
+              RASTER_IDS, CLIP_IDS, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
 
@@ -199,6 +202,7 @@ class GpuRenderer {
   uint64_t framesRepeated_ = 0;
   std::shared_ptr<GpuPipelineSet> pipelines_;  // compiled ones, kept across renderers (GpuRendererOptions)
   ComputePipeline current_[PASS_COUNT];         // this frame's (owned by pipelines_)
+  std::vector<Binding> bindings_;  // the shared set as this context's shaders declare it (sharedBindings)
   DescriptorArena arena_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   TimestampPool timestamps_;

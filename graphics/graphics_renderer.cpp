@@ -207,9 +207,9 @@ void GraphicsRenderer::State::uploadScene(const SceneData& data) {
   runs = drawRuns(data);
 
   const BufferDescriptor descriptors[] = {
-      bufferDescriptor(BINDING_FRAME, frame), texelDescriptor(BINDING_VERTICES, vertices),
-      texelDescriptor(BINDING_OBJECTS, objects), texelDescriptor(BINDING_MATERIALS, materials),
-      texelDescriptor(BINDING_LIGHTS, lights),
+      bufferDescriptor(BINDING_FRAME, frame), texelDescriptor(sharedBinding(BINDING_VERTICES), vertices),
+      texelDescriptor(sharedBinding(BINDING_OBJECTS), objects), texelDescriptor(sharedBinding(BINDING_MATERIALS), materials),
+      texelDescriptor(sharedBinding(BINDING_LIGHTS), lights),
   };
   set = allocateDescriptorSet(context, arena, layout.setLayout, descriptors);
 }

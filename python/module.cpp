@@ -529,6 +529,7 @@ py::dict deviceDict(const DeviceInfo& info) {
   d["api_version"] = info.apiVersion;
   d["usable"] = info.suitable;
   d["missing"] = info.missing;
+  d["keys"] = keyPathWords(info);  // "64-bit atomics" or "32-bit atomics, two passes (...)"
   return d;
 }
 

@@ -7,8 +7,7 @@
 // CPU device the clip pass links them itself (WorkLayout::Cpu), and this pass is not run.
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_shader_atomic_int64 : require
+#include "extensions.glsl"
 
 #include "large_triangles.h"
 #include "bindings.glsl"

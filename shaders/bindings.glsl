@@ -53,22 +53,58 @@ void loadUniforms() {
   control.loopProbe *= one;
 }
 #endif
-layout(binding = BINDING_VERTICES) uniform usamplerBuffer vertexTexels;
-layout(binding = BINDING_TRIANGLES) uniform usamplerBuffer triangleTexels;
-layout(binding = BINDING_OBJECTS) uniform usamplerBuffer objectTexels;
-layout(binding = BINDING_MATERIALS) uniform usamplerBuffer materialTexels;
-layout(binding = BINDING_LIGHTS) uniform usamplerBuffer lightTexels;
-layout(binding = BINDING_SHADED_TEXELS) uniform usamplerBuffer shadedTexels;  // shadedPositions[], after the shade pass
-layout(binding = BINDING_SHADED_COLOR_TEXELS) uniform usamplerBuffer shadedColorTexels;  // shadedColors[], likewise
-layout(binding = BINDING_LARGE_TEXELS) uniform usamplerBuffer largeTexels;     // large list, after the raster passes
-layout(binding = BINDING_LARGE_SETUP_TEXELS) uniform usamplerBuffer largeSetupTexels;  // largeSetups[], likewise
-layout(binding = BINDING_UVS) uniform usamplerBuffer uvTexels;            // VertexUv[] (scenes with textures)
-layout(binding = BINDING_TEXTURES) uniform usamplerBuffer textureTexels;  // TextureData[]
-layout(binding = BINDING_TEXEL_POOL) uniform usamplerBuffer texelPool;    // RGBA8 texels, four a texel
+// The arrays the passes only read, as RGBA32UI texels. The 32-bit key path (PHONGVK_KEYS32, for
+// devices without 64-bit integers) reads them from storage buffers instead: such devices tend to
+// have small texel-buffer limits (SwiftShader's is 65,536 texels, a 33,000-vertex mesh).
+#ifdef PHONGVK_KEYS32
+#define TEXELS(b, name) layout(std430, binding = b) readonly buffer name##Block { uvec4 name[]; };
+#define TEXEL(name, i) name[i]
+#else
+#define TEXELS(b, name) layout(binding = b) uniform usamplerBuffer name;
+#define TEXEL(name, i) texelFetch(name, int(i))
+#endif
+TEXELS(BINDING_VERTICES, vertexTexels)
+TEXELS(BINDING_TRIANGLES, triangleTexels)
+TEXELS(BINDING_OBJECTS, objectTexels)
+TEXELS(BINDING_MATERIALS, materialTexels)
+TEXELS(BINDING_LIGHTS, lightTexels)
+TEXELS(BINDING_SHADED_TEXELS, shadedTexels)             // shadedPositions[], after the shade pass
+TEXELS(BINDING_SHADED_COLOR_TEXELS, shadedColorTexels)  // shadedColors[], likewise
+TEXELS(BINDING_LARGE_TEXELS, largeTexels)               // large list, after the raster passes
+TEXELS(BINDING_LARGE_SETUP_TEXELS, largeSetupTexels)    // largeSetups[], likewise
+TEXELS(BINDING_UVS, uvTexels)                           // VertexUv[] (scenes with textures)
+TEXELS(BINDING_TEXTURES, textureTexels)                 // TextureData[]
+TEXELS(BINDING_TEXEL_POOL, texelPool)                   // RGBA8 texels, four a texel
 layout(std430, binding = BINDING_SHADED) writeonly buffer ShadedPositions { vec4 shadedPositions[]; };
 layout(std430, binding = BINDING_SHADED_COLORS) writeonly buffer ShadedColors { vec4 shadedColors[]; };
+// The key buffer: a 64-bit key per pixel (depth.h), or on the 32-bit key path the same key as its
+// two words, low (the triangle id) first: the same bytes either way.
+#ifdef PHONGVK_KEYS32
+layout(std430, binding = BINDING_KEYS) buffer Keys { uint keyWords[]; };
+uvec2 loadKey(uint i) { return uvec2(keyWords[2u * i], keyWords[2u * i + 1u]); }
+void storeKey(uint i, uvec2 key) {
+  keyWords[2u * i] = key.x;
+  keyWords[2u * i + 1u] = key.y;
+}
+#else
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
+uint64_t loadKey(uint i) { return keys[i]; }
+void storeKey(uint i, uint64_t key) { keys[i] = key; }
+#endif
+// The colour buffer's byte b (RGB bytes, the image's layout) set to `value`. On the 32-bit key path
+// (no 8-bit storage) through its word, with atomics: the word's other bytes are other pixels',
+// which other lanes may be writing.
+#ifdef PHONGVK_KEYS32
+layout(std430, binding = BINDING_COLOR) buffer ColorByteWords { uint colorByteWords[]; };
+void storeColorByte(uint b, uint value) {
+  uint shift = 8u * (b & 3u);
+  atomicAnd(colorByteWords[b >> 2], ~(0xFFu << shift));
+  atomicOr(colorByteWords[b >> 2], value << shift);
+}
+#else
 layout(std430, binding = BINDING_COLOR) writeonly buffer Colors { uint8_t colorBytes[]; };
+void storeColorByte(uint b, uint value) { colorBytes[b] = uint8_t(value); }
+#endif
 layout(std430, binding = BINDING_LARGE) buffer Large { LargeList large; LargeEntry largeEntries[]; };
 // Bins (shared.h BinList): binData[b] is bin b's flags, binData[binCount + b] the head of its
 // large-triangle list, binData[2 binCount + k] the k-th touched bin as x | y << 16. Resolve visits
@@ -95,61 +131,61 @@ void checkLoopBudget() {
 vec4 floats(uvec4 t) { return uintBitsToFloat(t); }
 
 VertexIn vertexIn(uint i) {
-  uvec4 a = texelFetch(vertexTexels, int(2u * i));
-  uvec4 b = texelFetch(vertexTexels, int(2u * i + 1u));
+  uvec4 a = TEXEL(vertexTexels, 2u * i);
+  uvec4 b = TEXEL(vertexTexels, 2u * i + 1u);
   return VertexIn(floats(a).xyz, a.w, floats(b).xyz, b.w);
 }
 
 ObjectData objectData(uint i) {
-  uvec4 a = texelFetch(objectTexels, int(2u * i));
-  uvec4 b = texelFetch(objectTexels, int(2u * i + 1u));
+  uvec4 a = TEXEL(objectTexels, 2u * i);
+  uvec4 b = TEXEL(objectTexels, 2u * i + 1u);
   return ObjectData(floats(a).xyz, a.w, floats(b).xyz, b.w);
 }
 
 MaterialData materialData(uint i) {
-  vec4 a = floats(texelFetch(materialTexels, int(3u * i)));
-  vec4 b = floats(texelFetch(materialTexels, int(3u * i + 1u)));
-  vec4 c = floats(texelFetch(materialTexels, int(3u * i + 2u)));
+  vec4 a = floats(TEXEL(materialTexels, 3u * i));
+  vec4 b = floats(TEXEL(materialTexels, 3u * i + 1u));
+  vec4 c = floats(TEXEL(materialTexels, 3u * i + 2u));
   return MaterialData(a.xyz, a.w, b.xyz, b.w, c.x, c.y, floatBitsToUint(c.z), c.w);
 }
 
 LightData lightData(uint i) {
-  vec4 a = floats(texelFetch(lightTexels, int(2u * i)));
-  vec4 b = floats(texelFetch(lightTexels, int(2u * i + 1u)));
+  vec4 a = floats(TEXEL(lightTexels, 2u * i));
+  vec4 b = floats(TEXEL(lightTexels, 2u * i + 1u));
   return LightData(a.xyz, a.w, b.xyz, b.w);
 }
 
 VertexUv vertexUv(uint i) {
-  uvec4 t = texelFetch(uvTexels, int(i));
+  uvec4 t = TEXEL(uvTexels, i);
   return VertexUv(uintBitsToFloat(t.xy), t.z, t.w);
 }
 
 TextureData textureData(uint i) {
-  uvec4 t = texelFetch(textureTexels, int(i));
+  uvec4 t = TEXEL(textureTexels, i);
   return TextureData(t.x, t.y, t.z, t.w);
 }
 
 // Texel i of the pool (RGBA8), the (i mod 4)-th word of its texel (selects, not a dynamic index).
 uint poolTexel(uint i) {
-  uvec4 q = texelFetch(texelPool, int(i >> 2u));
+  uvec4 q = TEXEL(texelPool, i >> 2u);
   uint k = i & 3u;
   return k == 0u ? q.x : (k == 1u ? q.y : (k == 2u ? q.z : q.w));
 }
 
 // Bin entry e of the large list: one texel after the 16-byte header.
 LargeEntry largeEntry(uint e) {
-  uvec4 t = texelFetch(largeTexels, int(1u + e));
+  uvec4 t = TEXEL(largeTexels, 1u + e);
   return LargeEntry(t.x, t.y, t.z, t.w);
 }
 
 // Large set-up `slot` (large_triangles.h LargeSetup, ten texels): its raster half, the first five.
 LargeTriangle largeSetup(uint slot) {
   int k = int(10u * slot);
-  uvec4 a = texelFetch(largeSetupTexels, k);
-  uvec4 b = texelFetch(largeSetupTexels, k + 1);
-  uvec4 c = texelFetch(largeSetupTexels, k + 2);
-  uvec4 d = texelFetch(largeSetupTexels, k + 3);
-  uvec4 f = texelFetch(largeSetupTexels, k + 4);
+  uvec4 a = TEXEL(largeSetupTexels, k);
+  uvec4 b = TEXEL(largeSetupTexels, k + 1);
+  uvec4 c = TEXEL(largeSetupTexels, k + 2);
+  uvec4 d = TEXEL(largeSetupTexels, k + 3);
+  uvec4 f = TEXEL(largeSetupTexels, k + 4);
   return LargeTriangle(ivec4(a), TrianglePlane(uintBitsToFloat(b.xyz), uintBitsToFloat(b.w)), ivec2(c.xy), ivec2(c.zw),
                        ivec2(d.xy), int(d.z), int(d.w), int(f.x), uintBitsToFloat(f.y), uintBitsToFloat(f.z), f.w);
 }
@@ -158,20 +194,20 @@ LargeTriangle largeSetup(uint slot) {
 // only for interpolation `mode` INTERP_SCREEN (a specialization constant: no read otherwise).
 LargeShading largeShading(uint slot, uint mode) {
   int k = int(10u * slot) + 5;
-  vec4 w = mode == INTERP_SCREEN ? floats(texelFetch(largeSetupTexels, k + 4)) : vec4(0.0f);
-  return LargeShading(floats(texelFetch(largeSetupTexels, k)), floats(texelFetch(largeSetupTexels, k + 1)),
-                      floats(texelFetch(largeSetupTexels, k + 2)), floats(texelFetch(largeSetupTexels, k + 3)), w);
+  vec4 w = mode == INTERP_SCREEN ? floats(TEXEL(largeSetupTexels, k + 4)) : vec4(0.0f);
+  return LargeShading(floats(TEXEL(largeSetupTexels, k)), floats(TEXEL(largeSetupTexels, k + 1)),
+                      floats(TEXEL(largeSetupTexels, k + 2)), floats(TEXEL(largeSetupTexels, k + 3)), w);
 }
 
 // Shaded vertex v (for the passes after shade_vertices, which writes shadedPositions[] and
 // shadedColors[]).
 ShadedVertex shadedVertex(uint v) {
-  return ShadedVertex(floats(texelFetch(shadedTexels, int(v))), floats(texelFetch(shadedColorTexels, int(v))));
+  return ShadedVertex(floats(TEXEL(shadedTexels, v)), floats(TEXEL(shadedColorTexels, v)));
 }
 
 // The three shaded vertices of triangle `id`.
 void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVertex c) {
-  uvec4 t = texelFetch(triangleTexels, int(id));
+  uvec4 t = TEXEL(triangleTexels, id);
   a = shadedVertex(t.x);
   b = shadedVertex(t.y);
   c = shadedVertex(t.z);
@@ -179,11 +215,11 @@ void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVer
 
 // Triangle `id`'s homogeneous vertices and whether its back face is culled.
 void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullBack) {
-  uvec4 tri = texelFetch(triangleTexels, int(id));
-  cullBack = (texelFetch(objectTexels, int(2u * tri.w + 1u)).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
-  h0 = floats(texelFetch(shadedTexels, int(tri.x))).xyz;
-  h1 = floats(texelFetch(shadedTexels, int(tri.y))).xyz;
-  h2 = floats(texelFetch(shadedTexels, int(tri.z))).xyz;
+  uvec4 tri = TEXEL(triangleTexels, id);
+  cullBack = (TEXEL(objectTexels, 2u * tri.w + 1u).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
+  h0 = floats(TEXEL(shadedTexels, tri.x)).xyz;
+  h1 = floats(TEXEL(shadedTexels, tri.y)).xyz;
+  h2 = floats(TEXEL(shadedTexels, tri.z)).xyz;
 }
 
 // Triangle `id`'s Gouraud constants (gouraud.h).

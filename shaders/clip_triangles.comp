@@ -6,8 +6,7 @@
 // triangle pass because on lavapipe code a pass merely contains costs every triangle it runs.
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_shader_atomic_int64 : require
+#include "extensions.glsl"
 #include "triangle_setup.h"
 #include "bindings.glsl"
 #include "raster_loops.glsl"

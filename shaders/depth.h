@@ -1,4 +1,4 @@
-// depth.h — depth and the 64-bit visibility key (docs/DESIGN.md "Visibility"). The depth of a pixel is
+// depth.h — depth and the visibility key (docs/DESIGN.md "Visibility"). The depth of a pixel is
 // the view depth where its centre's ray meets the triangle's plane (not the clipped polygon's):
 // with h0 h1 h2 the homogeneous pixel-space vertices and p the pixel's ray (x + 0.5 - cx,
 // y + 0.5 - cy, 1), z = dot(h0, n) / dot(p, n), n = (h1 - h0) x (h2 - h0); the same quantities
@@ -51,22 +51,40 @@ FN float depthAt(TrianglePlane t, vec3 p, uint projection) {
   return z;
 }
 
+// The visibility key, (depth's float bits << 32) | triangle id: the smallest wins a pixel. A
+// device with 64-bit integers and atomics holds it as a uint64_t; the 32-bit key path
+// (PHONGVK_KEYS32: shaders built without any 64-bit integer, docs/DESIGN.md "Visibility") as
+// uvec2(low word, high word), the same value, stored in the key buffer as the same 8 little-endian
+// bytes, and ordered by keyLess as the 64-bit value is.
+#ifdef PHONGVK_KEYS32
+#define VisibilityKey uvec2
+#define KEY_CLEAR uvec2(0xFFFFFFFFu, 0xFFFFFFFFu)
+FN uvec2 keyOf(uint high, uint low) { return uvec2(low, high); }
+FN uint keyLow(uvec2 k) { return k.x; }
+FN uint keyHigh(uvec2 k) { return k.y; }
+FN bool keyLess(uvec2 a, uvec2 b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }
+#else
+#define VisibilityKey uint64_t
 PHONGVK_CONST uint64_t KEY_CLEAR = 0xFFFFFFFFFFFFFFFFul;
+FN uint64_t keyOf(uint high, uint low) { return (uint64_t(high) << 32) | uint64_t(low); }
+FN uint keyLow(uint64_t k) { return uint(k & 0xFFFFFFFFul); }
+FN uint keyHigh(uint64_t k) { return uint(k >> 32); }
+FN bool keyLess(uint64_t a, uint64_t b) { return a < b; }
+#endif
 
-
-// The 64-bit visibility key: depth's float bits above, the triangle id below; the smallest key
-// wins a pixel, so equal depths go to the lower triangle id. The depth is held to the depth range
+// The visibility key of a fragment at depth z of triangle `triangle`: depth's float bits above,
+// the triangle id below; equal depths go to the lower triangle id. The depth is held to the depth range
 // [zMin, zMax] of the clipped polygon: a pixel centre covered only thanks to snapping must not
 // extrapolate an edge-on plane to a depth in front of the eye (or to NaN, which goes to zMin).
 // Returns KEY_CLEAR for a fragment beyond the far plane.
-FN uint64_t depthKey(float z, float zMin, float zMax, float farPlane, uint triangle) {
+FN VisibilityKey depthKey(float z, float zMin, float zMax, float farPlane, uint triangle) {
   float depth = z >= zMin ? (z <= zMax ? z : zMax) : zMin;
   if (depth > farPlane) return KEY_CLEAR;
-  return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(triangle);
+  return keyOf(floatBitsToUint(depth), triangle);
 }
 
 // The key a triangle with this plane, depth range and id offers pixel (x, y), which it covers.
-FN uint64_t planeKey(TrianglePlane plane, float zMin, float zMax, uint triangle, int x, int y, FrameData frame) {
+FN VisibilityKey planeKey(TrianglePlane plane, float zMin, float zMax, uint triangle, int x, int y, FrameData frame) {
   float z = depthAt(plane, pixelRay(x, y, frame.principal), frame.projection);
   return depthKey(z, zMin, zMax, frame.farPlane, triangle);
 }

@@ -7,6 +7,7 @@
 #include "glsl_cpp.h"
 #include "exact_float.h"
 #include "shared.h"
+#include "edge_int.h"
 
 SHARED_BEGIN
 
@@ -26,12 +27,14 @@ FN ivec2 snapToSubpixel(vec3 h, vec2 principal, uint projection) {
 }
 
 // Twice the signed area of a b p in subpixel units; > 0 when p is inside a clockwise-on-screen
-// (y down) oriented edge a -> b. One formula, in 64 bits for any snapped coordinates and in 32
-// bits for a small triangle's taken relative to its corner (small_triangles.h), where it is exact.
+// (y down) oriented edge a -> b. In 32 bits for a small triangle's coordinates taken relative to
+// its corner (small_triangles.h), where it is exact; edge_int.h edgeAt for any snapped coordinates.
 #define PHONGVK_EDGE_FUNCTION(T, V) \
   FN T edgeFunction(V a, V b, V p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
-PHONGVK_EDGE_FUNCTION(int64_t, i64vec2)
 PHONGVK_EDGE_FUNCTION(int, ivec2)
+#ifdef __cplusplus
+PHONGVK_EDGE_FUNCTION(int64_t, i64vec2)  // what the tests check edgeAt against
+#endif
 #undef PHONGVK_EDGE_FUNCTION
 
 // Top-left rule for triangles oriented so edge functions are positive inside (y down): a top edge
@@ -89,27 +92,24 @@ FN bool orientEdges(ivec2 a, ivec2 b, ivec2 c, int areaSign, bool frontFacing, O
   return true;
 }
 
-// Sets up sub-triangle a b c (snapped coordinates) with 64-bit edge functions: orientEdges, and
-// its pixel box. False where orientEdges rejects it or it covers no pixel centre of the image.
+// Sets up sub-triangle a b c (snapped coordinates) with exact edge functions (edge_int.h):
+// orientEdges, and its pixel box. False where orientEdges rejects it or it covers no pixel centre
+// of the image.
 FN bool setupEdges(ivec2 a, ivec2 b, ivec2 c, bool frontFacing, uint width, uint height, OUT(EdgeSetup) s) {
-  int64_t area = edgeFunction(i64vec2(a), i64vec2(b), i64vec2(c));
-  if (!orientEdges(a, b, c, area > int64_t(0) ? 1 : (area < int64_t(0) ? -1 : 0), frontFacing, s)) return false;
+  if (!orientEdges(a, b, c, edgeSign(edgeAt(a, b, c)), frontFacing, s)) return false;
   s.origin = ivec2(0);
   s.bbox = pixelBounds(min(a, min(b, c)), max(a, max(b, c)), width, height);
   return !isEmpty(s.bbox);
 }
 
-// The subpixel position of pixel (x, y)'s centre.
-FN i64vec2 pixelCentre(int x, int y) {
-  return i64vec2(int64_t(x) * int64_t(SUBPIXEL_ONE) + int64_t(SUBPIXEL_HALF),
-                 int64_t(y) * int64_t(SUBPIXEL_ONE) + int64_t(SUBPIXEL_HALF));
-}
+// The subpixel position of pixel (x, y)'s centre (below 2^31: images are at most 16384 pixels wide).
+FN ivec2 pixelCentre(int x, int y) { return ivec2(x * SUBPIXEL_ONE + SUBPIXEL_HALF, y * SUBPIXEL_ONE + SUBPIXEL_HALF); }
 
-FN bool covers(EdgeSetup s, i64vec2 p) {
-  i64vec2 q = p - i64vec2(s.origin);
-  return edgeFunction(i64vec2(s.v1), i64vec2(s.v2), q) + int64_t(s.bias0) >= int64_t(0) &&
-         edgeFunction(i64vec2(s.v2), i64vec2(s.v0), q) + int64_t(s.bias1) >= int64_t(0) &&
-         edgeFunction(i64vec2(s.v0), i64vec2(s.v1), q) + int64_t(s.bias2) >= int64_t(0);
+FN bool covers(EdgeSetup s, ivec2 p) {
+  ivec2 q = p - s.origin;
+  return !edgeNegative(edgeAdd(edgeAt(s.v1, s.v2, q), edgeInt(s.bias0))) &&
+         !edgeNegative(edgeAdd(edgeAt(s.v2, s.v0, q), edgeInt(s.bias1))) &&
+         !edgeNegative(edgeAdd(edgeAt(s.v0, s.v1, q), edgeInt(s.bias2)));
 }
 
 SHARED_END

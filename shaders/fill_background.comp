@@ -5,7 +5,7 @@
 // pass builds its words).
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#include "extensions.glsl"
 
 #include "gouraud.h"
 #include "color_slots.h"

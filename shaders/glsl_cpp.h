@@ -7,7 +7,8 @@
 //   - float literals carry an `f` suffix (a bare 0.5 is a double in C++ and would promote);
 //   - dot/cross products are spelled out (dot3, cross3) so the association order is fixed;
 //   - functions are declared with FN; out/inout parameters with OUT/INOUT and OUT_ARRAY/INOUT_ARRAY;
-//   - a loop the shader must not keep as a loop is marked UNROLL.
+//   - a loop the shader must not keep as a loop is marked UNROLL (UNROLL_KEYS64: only on the 64-bit
+//     key path's builds).
 #ifndef PHONGVK_GLSL_CPP_H
 #define PHONGVK_GLSL_CPP_H
 
@@ -25,6 +26,7 @@
 #define INOUT_ARRAY(T, name, n) T (&name)[n]
 #define UNROLL
 #define DONT_UNROLL
+#define UNROLL_KEYS64
 #define SHARED_BEGIN namespace phongvk::gpu {
 #define SHARED_END }
 namespace phongvk::gpu {
@@ -63,6 +65,14 @@ inline void imulExtended(int32_t x, int32_t y, int32_t& msb, int32_t& lsb) {
 #define FN
 #define UNROLL [[unroll]]
 #define DONT_UNROLL [[dont_unroll]]
+// UNROLL on the 64-bit key path's builds, a loop on the 32-bit path's (PHONGVK_KEYS32): SwiftShader's
+// shader compiler took 269 s for the unrolled large-triangle resolve and 22 s for the clip pass, under
+// a second each as loops (docs/DECISIONS.md, "The 32-bit key path").
+#ifdef PHONGVK_KEYS32
+#define UNROLL_KEYS64 DONT_UNROLL
+#else
+#define UNROLL_KEYS64 UNROLL
+#endif
 #define PRECISE precise
 #define OUT(T) out T
 #define INOUT(T) inout T

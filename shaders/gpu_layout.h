@@ -75,6 +75,13 @@ PHONGVK_CONST uint FLOAT_PROBE_GROUP_SIZE = 64;
 PHONGVK_CONST uint RESOLVE_OUTPUT_KEY_SLOTS = 0;
 PHONGVK_CONST uint RESOLVE_OUTPUT_KEEP_KEYS = 2;
 
+// Which words of the visibility key a triangle or clip dispatch decides (SPEC_KEY_PASS,
+// raster_loops.glsl): the whole 64-bit key by 64-bit atomicMin; or, on the 32-bit key path, the depth
+// word in one dispatch and then the triangle id among the fragments at that depth.
+PHONGVK_CONST uint KEY_PASS_WHOLE = 0;
+PHONGVK_CONST uint KEY_PASS_DEPTH = 1;
+PHONGVK_CONST uint KEY_PASS_IDS = 2;
+
 // FrameStatus.flags. STATUS_LARGE_OVERFLOW: a large triangle found no room in the set-up records
 // or bin entries (the host grows them). STATUS_LOOP_LIMIT: a pass ran out of the loop iterations
 // the device allows one invocation (bindings.glsl checkLoopBudget; the host launches more

@@ -51,24 +51,24 @@ FN LargeTriangle largeTriangle(TriangleSetup t, EdgeSetup s) {
 
 // The three edge functions (plus biases) at the centre of pixel `origin`, the first of a block.
 struct BlockEdges {
-  int64_t e0;
-  int64_t e1;
-  int64_t e2;
+  EdgeInt e0;
+  EdgeInt e1;
+  EdgeInt e2;
 };
 
 FN BlockEdges blockEdges(LargeTriangle t, ivec2 origin) {
-  i64vec2 p = pixelCentre(origin.x, origin.y);
+  ivec2 p = pixelCentre(origin.x, origin.y);
   BlockEdges e;
-  e.e0 = edgeFunction(i64vec2(t.v1), i64vec2(t.v2), p) + int64_t(t.bias0);
-  e.e1 = edgeFunction(i64vec2(t.v2), i64vec2(t.v0), p) + int64_t(t.bias1);
-  e.e2 = edgeFunction(i64vec2(t.v0), i64vec2(t.v1), p) + int64_t(t.bias2);
+  e.e0 = edgeAdd(edgeAt(t.v1, t.v2, p), edgeInt(t.bias0));
+  e.e1 = edgeAdd(edgeAt(t.v2, t.v0, p), edgeInt(t.bias1));
+  e.e2 = edgeAdd(edgeAt(t.v0, t.v1, p), edgeInt(t.bias2));
   return e;
 }
 
 // Edge a -> b's function at pixel origin + (i, j), from its value e there: one pixel right adds
 // 256 (a.y - b.y), one down 256 (b.x - a.x). Exact, so it equals edgeFunction at that centre.
-FN int64_t edgeStep(ivec2 a, ivec2 b, int64_t e, int i, int j) {
-  return e + int64_t(a.y - b.y) * int64_t(SUBPIXEL_ONE * i) + int64_t(b.x - a.x) * int64_t(SUBPIXEL_ONE * j);
+FN EdgeInt edgeStep(ivec2 a, ivec2 b, EdgeInt e, int i, int j) {
+  return edgeAdd(edgeAdd(e, edgePixels(a.y - b.y, i)), edgePixels(b.x - a.x, j));
 }
 
 // How a block relates to a large triangle's pixel centres: none covered, some may be, all covered.
@@ -78,13 +78,14 @@ PHONGVK_CONST int BLOCK_INSIDE = 2;
 
 // One edge over the size x size block at pixel `origin`: the function is affine, so its extremes
 // are at the corner pixels, reached by stepping from e.
-FN int classifyEdge(ivec2 a, ivec2 b, int64_t e, int size) {
-  int64_t right = edgeStep(a, b, int64_t(0), size - 1, 0);
-  int64_t down = edgeStep(a, b, int64_t(0), 0, size - 1);
-  int64_t lo = e + min(right, int64_t(0)) + min(down, int64_t(0));
-  int64_t hi = e + max(right, int64_t(0)) + max(down, int64_t(0));
-  if (hi < int64_t(0)) return BLOCK_OUTSIDE;
-  return lo >= int64_t(0) ? BLOCK_INSIDE : BLOCK_PARTIAL;
+FN int classifyEdge(ivec2 a, ivec2 b, EdgeInt e, int size) {
+  EdgeInt zero = edgeInt(0);
+  EdgeInt right = edgeStep(a, b, zero, size - 1, 0);
+  EdgeInt down = edgeStep(a, b, zero, 0, size - 1);
+  EdgeInt lo = edgeAdd(edgeAdd(e, edgeMin(right, zero)), edgeMin(down, zero));
+  EdgeInt hi = edgeAdd(edgeAdd(e, edgeMax(right, zero)), edgeMax(down, zero));
+  if (edgeNegative(hi)) return BLOCK_OUTSIDE;
+  return !edgeNegative(lo) ? BLOCK_INSIDE : BLOCK_PARTIAL;
 }
 
 // BLOCK_INSIDE: covers() holds at every pixel centre of the size x size block at `origin` (which
@@ -105,12 +106,13 @@ FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
 // past the far plane, so wherever nothing else reaches such a tile the triangle wins each of its
 // pixels without a depth test (resolve_large.comp). Unrolled: lavapipe counts every loop
 // iteration against one invocation's budget (bindings.glsl checkLoopBudget), and 16 of them per
-// bin of a triangle across a 4K image's 8160 bins pass it.
+// bin of a triangle across a 4K image's 8160 bins pass it (a loop on the 32-bit key path: glsl_cpp.h
+// UNROLL_KEYS64; a frame that runs out of the budget is rendered again with more workgroups).
 FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) {
   BlockEdges e = blockEdges(t, origin);
   uvec2 masks = uvec2(0u);
-  UNROLL for (int j = 0; j < int(BIN_TILES); ++j) {
-    UNROLL for (int i = 0; i < int(BIN_TILES); ++i) {
+  UNROLL_KEYS64 for (int j = 0; j < int(BIN_TILES); ++j) {
+    UNROLL_KEYS64 for (int i = 0; i < int(BIN_TILES); ++i) {
       ivec2 step = ivec2(i, j) * int(TILE_SIZE);
       BlockEdges tile;
       tile.e0 = edgeStep(t.v1, t.v2, e.e0, step.x, step.y);
@@ -128,9 +130,7 @@ FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) {
 
 // x on edge a -> b at height y (subpixels), to within a subpixel (the quotient is truncated);
 // a.y != b.y, and y between them. The product stays within 64 bits for snapped coordinates.
-FN int edgeXAt(ivec2 a, ivec2 b, int y) {
-  return a.x + int(int64_t(b.x - a.x) * int64_t(y - a.y) / int64_t(b.y - a.y));
-}
+FN int edgeXAt(ivec2 a, ivec2 b, int y) { return a.x + edgeQuotient(edgeProduct(b.x - a.x, y - a.y), b.y - a.y); }
 
 // `range` (lowest and highest x, subpixels) widened to the part of edge a -> b between heights y0
 // and y1, if any of it lies there.
@@ -177,20 +177,20 @@ FN ColumnEdges columnEdges(LargeTriangle t, BlockEdges e, int i) {
   c.at.e0 = edgeStep(t.v1, t.v2, e.e0, i, 0);
   c.at.e1 = edgeStep(t.v2, t.v0, e.e1, i, 0);
   c.at.e2 = edgeStep(t.v0, t.v1, e.e2, i, 0);
-  c.down.e0 = edgeStep(t.v1, t.v2, int64_t(0), 0, 1);
-  c.down.e1 = edgeStep(t.v2, t.v0, int64_t(0), 0, 1);
-  c.down.e2 = edgeStep(t.v0, t.v1, int64_t(0), 0, 1);
+  c.down.e0 = edgeStep(t.v1, t.v2, edgeInt(0), 0, 1);
+  c.down.e1 = edgeStep(t.v2, t.v0, edgeInt(0), 0, 1);
+  c.down.e2 = edgeStep(t.v0, t.v1, edgeInt(0), 0, 1);
   return c;
 }
 
 FN bool columnCovers(ColumnEdges c) {
-  return c.at.e0 >= int64_t(0) && c.at.e1 >= int64_t(0) && c.at.e2 >= int64_t(0);
+  return !edgeNegative(c.at.e0) && !edgeNegative(c.at.e1) && !edgeNegative(c.at.e2);
 }
 
 FN ColumnEdges nextRow(ColumnEdges c) {
-  c.at.e0 += c.down.e0;
-  c.at.e1 += c.down.e1;
-  c.at.e2 += c.down.e2;
+  c.at.e0 = edgeAdd(c.at.e0, c.down.e0);
+  c.at.e1 = edgeAdd(c.at.e1, c.down.e1);
+  c.at.e2 = edgeAdd(c.at.e2, c.down.e2);
   return c;
 }
 

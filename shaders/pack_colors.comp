@@ -9,7 +9,7 @@
 // (docs/PERFORMANCE.md, "Readback").
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#include "extensions.glsl"
 
 #include "gouraud.h"
 #include "color_slots.h"
@@ -22,8 +22,8 @@ layout(std430, binding = BINDING_COLOR) writeonly buffer ColorWords { uint color
 // Pixel i's RGB (low three bytes); the background where nothing covered it or past the last pixel.
 uint colorOf(uint i, uint pixels, uint background) {
   if (i >= pixels) return background;
-  uint64_t slot = keys[i];
-  return slot == KEY_CLEAR ? background : uint(slot) & 0xFFFFFFu;
+  VisibilityKey slot = loadKey(i);
+  return slot == KEY_CLEAR ? background : keyLow(slot) & 0xFFFFFFu;
 }
 
 void main() {

@@ -1,8 +1,36 @@
-// raster_loops.glsl — what the raster passes share (after bindings.glsl; needs
-// GL_EXT_shader_atomic_int64): bin marking, span loops, handing large triangles to resolve.
+// raster_loops.glsl — what the raster passes share (after bindings.glsl): offering keys, bin
+// marking, span loops, handing large triangles to resolve.
 #include "large_triangles.h"
 #include "row_spans.h"
 #include "small_triangles.h"
+
+// Which of the key's words this dispatch decides (shared.h KEY_PASS_*). With 64-bit atomics, the
+// whole key at once (atomicMin). On the 32-bit key path, the triangle and clip passes run twice:
+// KEY_PASS_DEPTH takes the smallest depth word (the key's high word) of each pixel, then
+// KEY_PASS_IDS, among the fragments whose depth word equals it, the smallest triangle id (the low
+// word). That is the smallest 64-bit key's pair of words: its high word is the least high word,
+// and among keys with that high word the least low word (docs/DESIGN.md "Visibility"). Only the
+// depth pass lists triangles for the clip pass, marks bins and defers large triangles to resolve;
+// the ids pass redraws exactly the pixels the depth pass drew.
+#ifdef PHONGVK_KEYS32
+layout(constant_id = SPEC_KEY_PASS) const uint KEY_PASS = KEY_PASS_DEPTH;
+#else
+const uint KEY_PASS = KEY_PASS_WHOLE;
+#endif
+const bool IDS_PASS = KEY_PASS == KEY_PASS_IDS;
+
+// A fragment's key offered to pixel i: the pixel keeps the smallest.
+void offerKey(uint i, VisibilityKey key) {
+#ifdef PHONGVK_KEYS32
+  if (!IDS_PASS) {
+    atomicMin(keyWords[2u * i + 1u], keyHigh(key));
+  } else if (keyWords[2u * i + 1u] == keyHigh(key)) {
+    atomicMin(keyWords[2u * i], keyLow(key));
+  }
+#else
+  atomicMin(keys[i], key);
+#endif
+}
 
 // The pixels of a box, (x1 - x0 + 1) (y1 - y0 + 1).
 int boxPixels(ivec4 box) { return (box.z - box.x + 1) * (box.w - box.y + 1); }
@@ -71,7 +99,7 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s) {
   for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     ivec2 span = rowSpan(s, y);
     for (int x = span.x; x <= span.y; ++x) {
-      atomicMin(keys[uint(y) * frame.width + uint(x)], coveredKey(t, x, y, frame));
+      offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame));
     }
   }
 }
@@ -82,7 +110,7 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s) {
 void rasterizeSmall(TriangleSetup t, EdgeSetup s) {
   for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
-      if (coversSmall(s, x, y)) atomicMin(keys[uint(y) * frame.width + uint(x)], coveredKey(t, x, y, frame));
+      if (coversSmall(s, x, y)) offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame));
     }
   }
 }
@@ -110,7 +138,13 @@ bool linkEntry(uint e, uint slot, LargeTriangle record, ivec2 b) {
 
 // Whether the bin pass (bin_large.comp) links the large triangles into their bins' lists
 // (WorkLayout::Gpu) instead of the invocation that set each up.
+// The 32-bit key path's builds always leave the linking to the bin pass: with the linking code in
+// the clip pass, SwiftShader's compiler took 20 s for it (50 s for its _exact build), 0.13 s without.
+#ifdef PHONGVK_KEYS32
+const bool BIN_PASS = true;
+#else
 layout(constant_id = SPEC_BIN_PASS) const bool BIN_PASS = false;
+#endif
 
 // Stores sub-triangle s's set-up and links it into the list of every bin whose pixels it may
 // cover, with the bin's tiles it may cover (binTileMasks); resolve rasterizes it there, in those
@@ -148,9 +182,9 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
 // for it, the host grows the lists and renders the frame again (STATUS_LARGE_OVERFLOW).
 void drawOrDefer(TriangleSetup t, EdgeSetup s) {
   if (uint(boxPixels(s.bbox)) > SMALL_TRIANGLE_MAX_PIXELS) {
-    if (!deferToLargePass(t, s)) atomicOr(status.flags, STATUS_LARGE_OVERFLOW);
+    if (!IDS_PASS && !deferToLargePass(t, s)) atomicOr(status.flags, STATUS_LARGE_OVERFLOW);
     return;
   }
-  markBins(s.bbox);
+  if (!IDS_PASS) markBins(s.bbox);
   rasterizeRows(t, s);
 }

@@ -6,8 +6,7 @@
 // the clip pass (docs/PERFORMANCE.md, "Raster").
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_shader_atomic_int64 : require
+#include "extensions.glsl"
 #include "triangle_setup.h"
 #include "small_triangles.h"
 #include "bindings.glsl"
@@ -21,7 +20,7 @@ void rasterizeSmallTriangle(TriangleSetup t) {
   if (!setupSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height, small)) {
     return;
   }
-  markBins(small.bbox);
+  if (!IDS_PASS) markBins(small.bbox);
   rasterizeSmall(t, small);
 }
 
@@ -38,7 +37,7 @@ void main() {
     if (inside && !setupUnclipped(h0, h1, h2, frame, t)) continue;
     if (inside && fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {
       rasterizeSmallTriangle(t);
-    } else {
+    } else if (!IDS_PASS) {
       uint k = atomicAdd(clipList.count, 1u);
       clipIds[k] = id;
       atomicMax(clipList.groupsX, min(k / CLIP_GROUP_SIZE + 1u, control.groupCap));

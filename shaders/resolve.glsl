@@ -45,14 +45,14 @@ uint pixelIndex(int x, int y) { return uint(y) * frame.width + uint(x); }
 
 // Pixel i's final colour, won by `key`, where OUTPUT says: into its key slot, or, for diffs, into
 // the colour buffer as three bytes (shared.h BINDING_COLOR) with the final key kept.
-void storeColor(uint i, uint color, uint64_t key) {
+void storeColor(uint i, uint color, VisibilityKey key) {
   if (OUTPUT == RESOLVE_OUTPUT_KEY_SLOTS) {
-    keys[i] = colorSlot(color);
+    storeKey(i, colorSlot(color));
     return;
   }
-  keys[i] = key;
-  colorBytes[3u * i] = uint8_t(color & 0xFFu);
-  colorBytes[3u * i + 1u] = uint8_t((color >> 8) & 0xFFu);
-  colorBytes[3u * i + 2u] = uint8_t((color >> 16) & 0xFFu);
+  storeKey(i, key);
+  storeColorByte(3u * i, color & 0xFFu);
+  storeColorByte(3u * i + 1u, (color >> 8) & 0xFFu);
+  storeColorByte(3u * i + 2u, (color >> 16) & 0xFFu);
 }
 

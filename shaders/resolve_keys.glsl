@@ -14,9 +14,9 @@ void resolvePixelOf(uvec2 origin) {
   int y = int(origin.y + gl_LocalInvocationID.y);
   if (!inImage(x, y)) return;
   uint i = pixelIndex(x, y);
-  uint64_t key = keys[i];
-  if (key >= KEY_COLOR_TAG) return;  // uncovered, or resolved by resolve_large
-  storeColor(i, pixelColor(uint(key & 0xFFFFFFFFul), x, y), key);
+  VisibilityKey key = loadKey(i);
+  if (!slotHoldsKey(key)) return;  // uncovered, or resolved by resolve_large
+  storeColor(i, pixelColor(keyLow(key), x, y), key);
 }
 
 void main() {

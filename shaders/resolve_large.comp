@@ -29,6 +29,5 @@
 // lavapipe may keep in memory.
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_control_flow_attributes : require
+#include "extensions.glsl"
 #include "resolve_large.glsl"

@@ -15,15 +15,29 @@
 
 layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 
+// The 8 rows of a lane's column, spelled out (ROW(best, 3) is best3), or on the 32-bit key path a
+// loop over arrays (ROW(best, r) is best[r]): SwiftShader's compiler took 269 s for the spelled-out
+// pass and under a second for the loop (glsl_cpp.h UNROLL_KEYS64). ROW_TYPE(T) declares a row's
+// variable where rows are spelled out; ROW_ARRAYS declares the arrays where they are not.
+#ifdef PHONGVK_KEYS32
+#define FOR_ROWS(DO) for (int r = 0; r < 8; ++r) { DO(r) }
+#define ROW(name, r) name[r]
+#define ROW_TYPE(T)
+#define ROW_ARRAYS VisibilityKey best[8]; vec3 color[8]; bool won[8]; uint packed[8];
+#else
 #define FOR_ROWS(DO) DO(0) DO(1) DO(2) DO(3) DO(4) DO(5) DO(6) DO(7)
+#define ROW(name, r) name##r
+#define ROW_TYPE(T) T
+#define ROW_ARRAYS
+#endif
 
 // Per row r: the smallest key so far, whether a large triangle holds it, and that triangle's
 // colour there (unpacked).
 #define DECLARE_ROW(r)              \
-  uint64_t best##r = KEY_CLEAR;     \
-  vec3 color##r = vec3(0.0f);       \
-  bool won##r = false;              \
-  if ((keysWritten || LARGE_KEEPS_KEYS) && inImage(x, origin.y + r)) best##r = keys[pixelIndex(x, origin.y + r)];
+  ROW_TYPE(VisibilityKey) ROW(best, r) = KEY_CLEAR; \
+  ROW_TYPE(vec3) ROW(color, r) = vec3(0.0f);        \
+  ROW_TYPE(bool) ROW(won, r) = false;               \
+  if ((keysWritten || LARGE_KEEPS_KEYS) && inImage(x, origin.y + r)) ROW(best, r) = loadKey(pixelIndex(x, origin.y + r));
 
 // Row r against large triangle t (shading g), if it covers the pixel (its edge values, stepped
 // down the lane's column row by row, decide); then the next row. lavapipe shades every row
@@ -31,11 +45,11 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 // for the winner (FINISH_ROW).
 #define RASTER_ROW(r)                                                                              \
   if (columnCovers(c)) {                                                                           \
-    uint64_t key = planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, origin.y + r, frame);          \
-    if (key < best##r) {                                                                           \
-      best##r = key;                                                                               \
-      won##r = true;                                                                               \
-      color##r = interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION);   \
+    VisibilityKey key = planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, origin.y + r, frame);     \
+    if (keyLess(key, ROW(best, r))) {                                                                   \
+      ROW(best, r) = key;                                                                               \
+      ROW(won, r) = true;                                                                               \
+      ROW(color, r) = interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION);   \
     }                                                                                              \
   }                                                                                                \
   c = nextRow(c);
@@ -44,19 +58,19 @@ layout(local_size_x = TILE_SIZE, local_size_y_id = SPEC_RESOLVE_TILES) in;
 // triangle keeps its key for resolve_small; an uncovered one is left alone (the host gives it the
 // background).
 #define FINISH_ROW(r) \
-  if (won##r && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, best##r);
+  if (ROW(won, r) && inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), ROW(packed, r), ROW(best, r));
 
 // Row r, if a large triangle (of this chunk) won it: its key, for the next round and the second resolve (keys build).
 #define KEEP_ROW_KEY(r) \
-  if (won##r && inImage(x, origin.y + r)) keys[pixelIndex(x, origin.y + r)] = best##r;
+  if (ROW(won, r) && inImage(x, origin.y + r)) storeKey(pixelIndex(x, origin.y + r), ROW(best, r));
 
 // Row r's colour, packed (RGBA8), ORed into `packedBits` for keepVectors. That second use is what
 // it is for: with one use, LLVM (in llvmpipe) moves the conversion and packing of each lane's
 // colour into the per-lane loop that llvmpipe makes of the store, scalar code once per pixel
 // instead of vector code once per row, which slows resolve (docs/PERFORMANCE.md, "Resolve").
 #define PACK_ROW(r)                     \
-  uint packed##r = packColor(color##r); \
-  packedBits |= packed##r;
+  ROW_TYPE(uint) ROW(packed, r) = packColor(ROW(color, r)); \
+  packedBits |= ROW(packed, r);
 
 // The second use of the packed colours (PACK_ROW): never true (every packed colour has alpha 255,
 // control.loopProbe is small), and a no-op if it were; the compiler cannot know either, so the
@@ -97,6 +111,7 @@ uvec2 nextEntryIn(uint e, uint end, uint tile) {
 void rasterizeTile(ivec2 origin, uint head, uint end, uint tile, bool keysWritten) {
   int column = int(gl_LocalInvocationID.x);
   int x = origin.x + column;
+  ROW_ARRAYS
   FOR_ROWS(DECLARE_ROW)
   for (uvec2 entry = nextEntryIn(head, end, tile); entry.x != LIST_END; entry = nextEntryIn(entry.y, end, tile)) {
     uint slot = entry.x;
@@ -117,12 +132,12 @@ void rasterizeTile(ivec2 origin, uint head, uint end, uint tile, bool keysWritte
 
 // Row r of a tile that the large triangle g owns: its colour, then packed (PACK_ROW).
 #define SHADE_OWNED_ROW(r)                                                                      \
-  vec3 color##r = interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION); \
+  ROW_TYPE(vec3) ROW(color, r) = interpolateColor(g, pixelRay(x, origin.y + r, frame.principal), INTERPOLATION); \
   PACK_ROW(r)
 
 // Row r of an owned tile, stored where it is in the image (no key: keys are never kept with owned tiles).
 #define STORE_OWNED_ROW(r) \
-  if (inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), packed##r, KEY_CLEAR);
+  if (inImage(x, origin.y + r)) storeColor(pixelIndex(x, origin.y + r), ROW(packed, r), KEY_CLEAR);
 
 // This lane's column of the tile at `origin`, which the large triangle in set-up `slot` owns and
 // nothing else reaches (no other large triangle, no small triangle's key): the triangle wins every
@@ -132,6 +147,7 @@ void shadeOwnedTile(ivec2 origin, uint slot) {
   int x = origin.x + int(gl_LocalInvocationID.x);
   GouraudTriangle g = unpackShading(largeShading(slot, INTERPOLATION), largeSetup(slot).plane, frame.projection);
   uint packedBits = 0u;
+  ROW_ARRAYS
   FOR_ROWS(SHADE_OWNED_ROW)
   keepVectors(packedBits);
   FOR_ROWS(STORE_OWNED_ROW)

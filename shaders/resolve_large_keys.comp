@@ -4,7 +4,6 @@
 // per pixel (flat and Phong shading), which the second pass lights from the keys.
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_control_flow_attributes : require
+#include "extensions.glsl"
 #define RESOLVE_LARGE_KEYS
 #include "resolve_large.glsl"

@@ -6,8 +6,7 @@
 // colours as resolve_small does; with textures either colour is times the pixel's texel (texture.h).
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_control_flow_attributes : require
+#include "extensions.glsl"
 #include "gouraud.h"
 #include "pixel_shading.h"
 #include "texture.h"
@@ -33,7 +32,7 @@ uint pixelTexel(uvec4 tri, MaterialData m, vec2 bary) {
 // Triangle `id`'s colour at pixel (x, y): Gouraud's, or its surface flat or Phong, lit, times its
 // texel; packed.
 uint pixelColor(uint id, int x, int y) {
-  uvec4 tri = texelFetch(triangleTexels, int(id));
+  uvec4 tri = TEXEL(triangleTexels, id);
   ObjectData object = objectData(tri.w);
   MaterialData m = materialData(object.material);
   GouraudTriangle g;

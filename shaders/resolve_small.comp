@@ -6,8 +6,7 @@
 // shading have a pass of their own (resolve_lit.comp) for the same reason.
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_control_flow_attributes : require
+#include "extensions.glsl"
 #include "gouraud.h"
 #include "bindings.glsl"
 #include "resolve.glsl"

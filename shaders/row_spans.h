@@ -12,28 +12,22 @@ SHARED_BEGIN
 
 // Narrows [span.x, span.y] to the pixels x of row y where edge from -> to (relative to `origin`)
 // passes: E(x) + bias >= 0 with E(x) = c - k x, k = 256 dy. The bound is estimated with one float
-// division and then made exact with integer tests (64-bit integer division is slow on SIMD CPUs),
-// so the span holds exactly the pixels covers() accepts. Everything is taken to 64 bits first:
-// differences taken in 32 bits and then widened gave lavapipe other spans (fig3's sphere).
+// division and then made exact with integer tests (64-bit integer division is slow on SIMD CPUs,
+// and the 32-bit key path has none), so the span holds exactly the pixels covers() accepts.
 FN ivec2 clipSpanToEdge(ivec2 span, ivec2 from, ivec2 to, int bias, int y, ivec2 origin) {
-  i64vec2 a = i64vec2(from);
-  i64vec2 b = i64vec2(to);
-  int64_t dx = b.x - a.x;
-  int64_t dy = b.y - a.y;
-  i64vec2 p = pixelCentre(0, y) - i64vec2(origin);
-  int64_t c = dx * (p.y - a.y) - dy * (p.x - a.x) + int64_t(bias);
-  int64_t k = dy * int64_t(SUBPIXEL_ONE);
-  if (dy == int64_t(0)) return c >= int64_t(0) ? span : ivec2(1, 0);
-  float estimate = floor(float(c) / float(k));
-  if (dy > int64_t(0)) {  // passes for x <= c / k: find the last such x in the span
+  int dy = to.y - from.y;
+  EdgeInt c = edgeAdd(edgeAt(from, to, pixelCentre(0, y) - origin), edgeInt(bias));
+  if (dy == 0) return !edgeNegative(c) ? span : ivec2(1, 0);
+  float estimate = floor(edgeEstimate(c) / (float(dy) * float(SUBPIXEL_ONE)));
+  if (dy > 0) {  // passes for x <= c / k: find the last such x in the span
     int q = int(clamp(estimate, float(span.x - 1), float(span.y)));
-    while (q >= span.x && c - k * int64_t(q) < int64_t(0)) --q;
-    while (q < span.y && c - k * int64_t(q + 1) >= int64_t(0)) ++q;
+    while (q >= span.x && edgeLess(c, edgePixels(dy, q))) --q;
+    while (q < span.y && !edgeLess(c, edgePixels(dy, q + 1))) ++q;
     return ivec2(span.x, q);
   }
   int q = int(clamp(estimate + 1.0f, float(span.x), float(span.y + 1)));  // passes for x >= c / k
-  while (q <= span.y && c - k * int64_t(q) < int64_t(0)) ++q;
-  while (q > span.x && c - k * int64_t(q - 1) >= int64_t(0)) --q;
+  while (q <= span.y && edgeLess(c, edgePixels(dy, q))) ++q;
+  while (q > span.x && !edgeLess(c, edgePixels(dy, q - 1))) --q;
   return ivec2(q, span.y);
 }
 

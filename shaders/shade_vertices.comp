@@ -1,8 +1,7 @@
 // Per-vertex pass: transform to homogeneous pixel space and evaluate Phong (phong.h).
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#extension GL_EXT_control_flow_attributes : require
+#include "extensions.glsl"
 #include "phong.h"
 #include "bindings.glsl"
 

@@ -74,7 +74,7 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(BINDING_MATERIALS, 4, UNIFORM_TEXEL_BUFFER)    /* MaterialData[] */                               \
   X(BINDING_LIGHTS, 5, UNIFORM_TEXEL_BUFFER)       /* LightData[] */                                  \
   X(BINDING_SHADED, 6, STORAGE_BUFFER)             /* ShadedVertex.hpos per vertex (vec4[]) */        \
-  X(BINDING_KEYS, 7, STORAGE_BUFFER)               /* uint64 depth|triangle keys, one per pixel */   \
+  X(BINDING_KEYS, 7, STORAGE_BUFFER)               /* 64-bit depth|triangle keys, one per pixel */   \
   X(BINDING_COLOR, 8, STORAGE_BUFFER)              /* RGB bytes, the image's layout */                \
   X(BINDING_LARGE, 9, STORAGE_BUFFER)              /* LargeList header + LargeEntry bin entries */    \
   X(BINDING_BINS, 10, STORAGE_BUFFER)              /* BinList header, flags and heads, touched bins */ \
@@ -112,7 +112,8 @@ PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are n
   X(SPEC_BLINN, 10)                     \
   X(SPEC_CLIP_POLYGONS, 11)             \
   X(SPEC_PROJECTION, 12)                \
-  X(SPEC_TEXTURED, 13)
+  X(SPEC_TEXTURED, 13)                  \
+  X(SPEC_KEY_PASS, 14)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;

@@ -100,11 +100,11 @@ FN bool setupFan(TriangleSetup t, int k, FrameData frame, OUT(EdgeSetup) s) {
   return setupEdges(t.snapped[0], t.snapped[k + 1], t.snapped[k + 2], t.frontFacing != 0u, frame.width, frame.height, s);
 }
 
-FN uint64_t coveredKey(TriangleSetup t, int x, int y, FrameData frame) {
+FN VisibilityKey coveredKey(TriangleSetup t, int x, int y, FrameData frame) {
   return planeKey(t.plane, t.zMin, t.zMax, t.triangle, x, y, frame);
 }
 
-FN uint64_t fragmentKey(TriangleSetup t, EdgeSetup s, int x, int y, FrameData frame) {
+FN VisibilityKey fragmentKey(TriangleSetup t, EdgeSetup s, int x, int y, FrameData frame) {
   if (!covers(s, pixelCentre(x, y))) return KEY_CLEAR;
   return coveredKey(t, x, y, frame);
 }

@@ -63,6 +63,34 @@ FN int wideSign(Wide a) { return wideNegative(a) ? -1 : (wideIsZero(a) ? 0 : 1);
 
 FN bool wideLess(Wide a, Wide b) { return int(a.hi) < int(b.hi) || (a.hi == b.hi && a.lo < b.lo); }
 
+FN Wide wideNegate(Wide a) { return wideSub(wideOf(0), a); }
+
+// The value as a float, near enough for an estimate that exact integer steps then correct (not
+// rounded as a conversion of the 64-bit integer would be).
+FN float wideEstimate(Wide a) { return float(int(a.hi)) * 4294967296.0f + float(a.lo); }
+
+// n / d rounded toward zero (C++'s and GLSL's integer division), for d != 0 and a quotient that fits
+// an int: estimated in float, then made exact with integer products (no 64-bit division).
+FN int wideQuotient(Wide n, int d) {
+  bool negative = wideNegative(n) != (d < 0);
+  Wide m = wideNegative(n) ? wideNegate(n) : n;
+  int divisor = d < 0 ? -d : d;
+  float estimate = min(floor(wideEstimate(m) / float(divisor)), 2147483520.0f);
+  int q = int(estimate);
+  Wide rest = wideSub(m, wideProduct(q, divisor));  // off by a few thousand divisors at most
+  q += int(floor(wideEstimate(rest) / float(divisor)));
+  rest = wideSub(m, wideProduct(q, divisor));
+  while (wideNegative(rest)) {
+    --q;
+    rest = wideAdd(rest, wideOf(divisor));
+  }
+  while (!wideLess(rest, wideOf(divisor))) {
+    ++q;
+    rest = wideSub(rest, wideOf(divisor));
+  }
+  return negative ? -q : q;
+}
+
 // The edge function of edges.h (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x), exactly, for
 // points whose differences fit an int (snapped coordinates are below 2^28 in magnitude).
 FN Wide wideEdgeFunction(ivec2 a, ivec2 b, ivec2 p) {

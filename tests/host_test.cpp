@@ -47,18 +47,33 @@ TEST(ChooseDevice, SkipsUnsuitableDevicesWhateverTheirRank) {
 }
 
 TEST(ChooseDevice, NoUsableDeviceListsEveryDeviceAndWhy) {
-  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {"shaderBufferInt64Atomics"}),
+  std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {"shaderInt64 (PHONGVK_KEY_PATH=64)"}),
                                        fakeDevice(1, "discrete GPU", {"Vulkan 1.2", "a compute queue"})};
   EXPECT_EQ(test::thrownMessage<NoDeviceError>([&] { chooseDevice(devices, -1); }),
-            "no usable Vulkan device (phongvk needs Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, "
-            "storageBuffer8BitAccess and a compute queue): [0] Device0 (missing shaderBufferInt64Atomics); "
-            "[1] Device1 (missing Vulkan 1.2, a compute queue)");
+            "no usable Vulkan device (phongvk needs Vulkan 1.2 and a compute queue): [0] Device0 (missing "
+            "shaderInt64 (PHONGVK_KEY_PATH=64)); [1] Device1 (missing Vulkan 1.2, a compute queue)");
 }
 
 TEST(ChooseDevice, RequestedUnsuitableDeviceSaysWhatItLacks) {
   std::vector<DeviceInfo> devices = {fakeDevice(0, "CPU", {}), fakeDevice(1, "discrete GPU", {"shaderInt64"})};
   EXPECT_EQ(test::thrownMessage<NoDeviceError>([&] { chooseDevice(devices, 1); }),
             "Vulkan device 1 (Device1) is not usable: missing shaderInt64");
+}
+
+TEST(DeviceList, NamesEachDevicesKeyPath) {
+  DeviceInfo gpu = fakeDevice(0, "discrete GPU", {});
+  DeviceInfo swiftShader = fakeDevice(1, "CPU", {});
+  swiftShader.keys32 = true;
+  swiftShader.lacks64 = {"shaderInt64", "shaderBufferInt64Atomics"};
+  DeviceInfo forced = fakeDevice(2, "CPU", {});
+  forced.keys32 = true;
+  EXPECT_EQ(keyPathWords(gpu), "64-bit atomics");
+  EXPECT_EQ(keyPathWords(swiftShader), "32-bit atomics, two passes (no shaderInt64, shaderBufferInt64Atomics)");
+  EXPECT_EQ(keyPathWords(forced), "32-bit atomics, two passes (PHONGVK_KEY_PATH=32)");
+  const std::string list = formatDeviceList({gpu, swiftShader});
+  EXPECT_NE(list.find("[0] Device0 \u2014 discrete GPU, Vulkan 1.3.0 \u2014 usable \u2014 keys: 64-bit atomics\n"),
+            std::string::npos) << list;
+  EXPECT_NE(list.find("usable \u2014 keys: 32-bit atomics, two passes (no shaderInt64"), std::string::npos) << list;
 }
 
 TEST(ChooseDevice, NoDevicesAtAll) {

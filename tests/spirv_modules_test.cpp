@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
+#include <span>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -71,6 +73,30 @@ TEST(SpirvModules, TheWalkerRejectsWhatIsNotAWholeModule) {
   std::vector<uint32_t> swapped = words;
   swapped[0] = 0x03022307u;  // the magic number of a big-endian module
   EXPECT_NE(findContraction(swapped, found), "");
+}
+
+// The 32-bit key path's builds (`_k32`, cmake/shaders.cmake) declare no capability a device
+// without 64-bit integers or 8-bit storage lacks, and use no 64-bit or 8-bit integer type: they
+// are what SwiftShader and such GPUs run (docs/DESIGN.md "Visibility").
+TEST(SpirvModules, TheKeys32BuildsUseNo64BitOr8BitIntegers) {
+  constexpr uint32_t OP_TYPE_INT = 21, OP_CAPABILITY = 17;
+  // Int64, Int64Atomics, Int8, StorageBuffer8BitAccess, UniformAndStorageBuffer8BitAccess.
+  const std::set<uint32_t> forbidden = {11, 12, 39, 4448, 4449};
+  size_t builds = 0;
+  for (const auto& module : computeModules()) {
+    if (module.filename().string().find("_k32") == std::string::npos) continue;
+    SCOPED_TRACE(module.filename().string());
+    ++builds;
+    const std::vector<uint32_t> words = embeddedWords(module);
+    std::vector<std::string> found;
+    ASSERT_EQ(forEachInstruction(words, [&](size_t, uint32_t opcode, std::span<const uint32_t> op) {
+                if (opcode == OP_CAPABILITY && forbidden.count(op[1])) found.push_back("capability " + std::to_string(op[1]));
+                if (opcode == OP_TYPE_INT && op[2] != 32) found.push_back("a " + std::to_string(op[2]) + "-bit integer type");
+              }),
+              "");
+    EXPECT_TRUE(found.empty()) << found.front();
+  }
+  EXPECT_EQ(builds, 20u) << "every pass's _k32 and _k32_exact build, in " << PHONGVK_SPIRV_DIR;
 }
 
 }  // namespace

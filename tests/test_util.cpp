@@ -1,5 +1,6 @@
 #include "test_util.h"
 
+#include <cstdlib>
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -74,6 +75,16 @@ std::vector<std::string> allScenes() {
   }
   std::sort(scenes.begin(), scenes.end());
   return scenes;
+}
+
+void expectTestDevice(const std::string& deviceName) {
+  if (const char* expected = std::getenv("PHONGVK_TEST_DEVICE")) {
+    EXPECT_NE(deviceName.find(expected), std::string::npos) << "ran on " << deviceName << ", not " << expected;
+  }
+  const char* path = std::getenv("PHONGVK_KEY_PATH");
+  if (path && std::string(path) == "32") {
+    EXPECT_NE(deviceName.find("keys: 32-bit"), std::string::npos) << "ran on " << deviceName;
+  }
 }
 
 std::string pathTestName(const ::testing::TestParamInfo<std::string>& info) {

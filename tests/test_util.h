@@ -65,6 +65,12 @@ void writeFile(const std::string& path, const std::string& text);
 // Every scene file under scenes/, relative to the source tree ("scenes/paper/fig1_cube.json"), sorted.
 std::vector<std::string> allScenes();
 
+// Fails unless a renderer on `deviceName` (Renderer::deviceName) is where the test's environment
+// says it must run: PHONGVK_TEST_DEVICE (a part of the device's name, e.g. SwiftShader) and
+// PHONGVK_KEY_PATH=32 (the 32-bit key path), where set (tests/CMakeLists.txt's swiftshader and
+// keys32 entries).
+void expectTestDevice(const std::string& deviceName);
+
 // A test name for a parameter that is a path: every character but letters and digits becomes '_'.
 std::string pathTestName(const ::testing::TestParamInfo<std::string>& info);
 

@@ -78,7 +78,7 @@ TEST_F(VulkanTest, ListDevicesMarksTheChosenDeviceUsable) {
 
   std::string text = formatDeviceList(devices);
   std::string line = "[" + std::to_string(chosen.index) + "] " + chosen.name + " \u2014 " + chosen.type + ", Vulkan " +
-                     chosen.apiVersion + " \u2014 usable\n";
+                     chosen.apiVersion + " \u2014 usable \u2014 keys: " + keyPathWords(chosen) + "\n";
   EXPECT_NE(text.find(line), std::string::npos) << text;
 
   // The context still works after listDevices loaded (and destroyed) its own instance.

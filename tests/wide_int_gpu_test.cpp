@@ -35,7 +35,7 @@ TEST(WideIntGpu, EdgeFunctionsAndSumsAreInt64s) {
   while (points.size() < 3 * 4096) points.push_back({any(random), any(random)});
   const uint32_t cases = uint32_t(points.size() / 3);
 
-  VulkanContext context = createContext({.deviceIndex = -1, .validate = true, .computeOnly = true});
+  VulkanContext context = createContext({.deviceIndex = -1, .validate = true});
   // PHONGVK_TEST_DEVICE (tests/CMakeLists.txt's SwiftShader entry): the device the run must be on.
   if (const char* expected = std::getenv("PHONGVK_TEST_DEVICE")) {
     EXPECT_NE(context.info.name.find(expected), std::string::npos) << "ran on " << context.info.name;

@@ -36,11 +36,11 @@ VulkanContext createContext(const ContextOptions& options) {
     context.instance = createInstance(context.validation.get());
     if (context.validation) createMessenger(context);
     std::vector<VkPhysicalDevice> devices = physicalDevices(context.instance);
-    std::vector<DeviceInfo> reports = inspectDevices(devices, options.computeOnly);
+    std::vector<DeviceInfo> reports = inspectDevices(devices);
     uint32_t chosen = chooseDevice(reports, options.deviceIndex);
     context.physicalDevice = devices[chosen];
     describeDevice(context, reports[chosen], storageRange);
-    createDevice(context, options.computeOnly);
+    createDevice(context);
     createCommandPool(context);
     if (options.pipelineCache) context.pipelineCache = loadPipelineCache(context);
   } catch (...) {

@@ -1,9 +1,11 @@
 // context.h — the Vulkan instance, the chosen device and its compute queue (volk-loaded, headless);
 // built in instance.cpp (loader, instance, validation), device.cpp (choice, device) and context.cpp.
 //
-// phongvk needs Vulkan 1.2, shaderInt64 and shaderBufferInt64Atomics (the renderer resolves
-// visibility with 64-bit atomicMin on a storage buffer), storageBuffer8BitAccess (resolve writes
-// the colour buffer as RGB bytes, the image's own layout) and one queue family with compute.
+// phongvk needs Vulkan 1.2 and one queue family with compute. A device with shaderInt64 and
+// shaderBufferInt64Atomics (visibility by 64-bit atomicMin on a storage buffer) and
+// storageBuffer8BitAccess (resolve writes the colour buffer as RGB bytes) takes the 64-bit key path;
+// any other the 32-bit one (DeviceInfo::keys32: two passes of 32-bit atomicMin, the colour bytes
+// written through their words), which gives the same keys and bytes.
 // Every device is checked against that list and the reasons it fails are kept, so "no device"
 // errors and `phongvk devices` can say exactly why a device was rejected.
 //
@@ -33,10 +35,6 @@ struct ContextOptions {
   int deviceIndex = -1;   // -1: the best suitable device (discrete > integrated > virtual > CPU)
   bool validate = false;  // Khronos validation + synchronization validation; also env PHONGVK_VALIDATE=1
   bool pipelineCache = false;  // a VkPipelineCache kept across processes (pipeline_cache.h)
-  // Any device with a compute queue, none of the renderer's 64-bit and 8-bit features asked for:
-  // for the self-test of the 32-bit arithmetic (shaders/wide_int.h) on devices without them. The
-  // renderer's passes cannot run on such a context.
-  bool computeOnly = false;
 };
 
 // Warnings and errors from the validation layers, collected so tests can assert there were none.

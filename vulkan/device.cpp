@@ -15,8 +15,20 @@
 namespace phongvk {
 namespace {
 
-constexpr const char* kRequirements =
-    "Vulkan 1.2, shaderInt64, shaderBufferInt64Atomics, storageBuffer8BitAccess and a compute queue";
+constexpr const char* kRequirements = "Vulkan 1.2 and a compute queue";
+constexpr const char* kKeyPathVariable = "PHONGVK_KEY_PATH";
+
+// PHONGVK_KEY_PATH: 32 or 64 forces that key path (for tests and comparisons), unset lets each
+// device's features decide; anything else is an ArgumentError naming the variable.
+std::optional<int> keyPathVariable() {
+  const char* text = std::getenv(kKeyPathVariable);
+  if (!text) return std::nullopt;
+  const std::string value = text;
+  if (value == "32") return 32;
+  if (value == "64") return 64;
+  throw ArgumentError(std::string(kKeyPathVariable) + " is '" + value +
+                      "': expected 32 (32-bit atomics, two passes) or 64 (64-bit atomics), or unset");
+}
 
 }  // namespace
 
@@ -91,7 +103,7 @@ std::optional<uint32_t> findComputeFamily(VkPhysicalDevice device) {
 
 namespace {
 
-DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index, bool computeOnly) {
+DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index, std::optional<int> keyPath) {
   VkPhysicalDeviceProperties properties;
   vkGetPhysicalDeviceProperties(device, &properties);
 
@@ -109,20 +121,25 @@ DeviceInfo inspectDevice(VkPhysicalDevice device, uint32_t index, bool computeOn
   vkGetPhysicalDeviceFeatures2(device, &features);
 
   if (!vulkan12) report.missing.push_back("Vulkan 1.2");
-  if (!features.features.shaderInt64) report.missing.push_back("shaderInt64");
-  if (vulkan12 && !features12.shaderBufferInt64Atomics) report.missing.push_back("shaderBufferInt64Atomics");
-  if (vulkan12 && !features12.storageBuffer8BitAccess) report.missing.push_back("storageBuffer8BitAccess");
-  if (computeOnly) report.missing.clear();
   if (!findComputeFamily(device)) report.missing.push_back("a compute queue");
+  if (!features.features.shaderInt64) report.lacks64.push_back("shaderInt64");
+  if (!vulkan12 || !features12.shaderBufferInt64Atomics) report.lacks64.push_back("shaderBufferInt64Atomics");
+  if (!vulkan12 || !features12.storageBuffer8BitAccess) report.lacks64.push_back("storageBuffer8BitAccess");
+  report.keys32 = keyPath ? *keyPath == 32 : !report.lacks64.empty();
+  if (keyPath == 64) {
+    for (const std::string& feature : report.lacks64)
+      report.missing.push_back(feature + " (" + kKeyPathVariable + "=64)");
+  }
   report.suitable = report.missing.empty();
   return report;
 }
 
 }  // namespace
 
-std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices, bool computeOnly) {
+std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices) {
+  const std::optional<int> keyPath = keyPathVariable();
   std::vector<DeviceInfo> reports;
-  for (uint32_t i = 0; i < devices.size(); ++i) reports.push_back(inspectDevice(devices[i], i, computeOnly));
+  for (uint32_t i = 0; i < devices.size(); ++i) reports.push_back(inspectDevice(devices[i], i, keyPath));
   return reports;
 }
 
@@ -181,7 +198,7 @@ void describeDevice(VulkanContext& context, const DeviceInfo& report, std::optio
   context.timestamps = context.timestampValidBits > 0 && context.properties.limits.timestampPeriod > 0;
 }
 
-void createDevice(VulkanContext& context, bool computeOnly) {
+void createDevice(VulkanContext& context) {
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo = { VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO };
   queueInfo.queueFamilyIndex = context.queueFamily;
@@ -189,6 +206,7 @@ void createDevice(VulkanContext& context, bool computeOnly) {
   queueInfo.pQueuePriorities = &priority;
 
   VkPhysicalDeviceVulkan12Features features12 = { VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES };
+  // The 64-bit key path's; the 32-bit path's shaders use none of them.
   features12.shaderBufferInt64Atomics = VK_TRUE;  // atomicMin of the 64-bit depth|triangle key
   features12.storageBuffer8BitAccess = VK_TRUE;   // resolve writes the colour buffer's RGB bytes
   VkPhysicalDeviceFeatures2 features = { VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2 };
@@ -201,7 +219,7 @@ void createDevice(VulkanContext& context, bool computeOnly) {
     extensions.push_back("VK_KHR_portability_subset");
 
   VkDeviceCreateInfo info = { VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO };
-  info.pNext = computeOnly ? nullptr : &features;
+  info.pNext = context.info.keys32 ? nullptr : &features;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
@@ -255,6 +273,12 @@ uint32_t chooseDevice(const std::vector<DeviceInfo>& reports, int requested) {
   return *best;
 }
 
+std::string keyPathWords(const DeviceInfo& device) {
+  if (!device.keys32) return "64-bit atomics";
+  return "32-bit atomics, two passes" +
+         (device.lacks64.empty() ? std::string(" (") + kKeyPathVariable + "=32)" : " (no " + joined(device.lacks64) + ")");
+}
+
 std::string formatDeviceList(const std::vector<DeviceInfo>& devices) {
   std::string text;
   for (const DeviceInfo& device : devices) {
@@ -262,7 +286,8 @@ std::string formatDeviceList(const std::vector<DeviceInfo>& devices) {
     // "[" + std::to_string(...) + ...
     text.append("[").append(std::to_string(device.index)).append("] ").append(device.name);
     text.append(" \u2014 ").append(device.type).append(", Vulkan ").append(device.apiVersion).append(" \u2014 ");
-    text.append(device.suitable ? "usable" : "rejected: missing " + joined(device.missing)).append("\n");
+    text.append(device.suitable ? "usable \u2014 keys: " + keyPathWords(device) : "rejected: missing " + joined(device.missing));
+    text.append("\n");
   }
   return text;
 }

@@ -11,9 +11,10 @@ namespace phongvk {
 
 std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance);
 
-// Every device with what it lacks of phongvk's requirements (DeviceInfo::missing). With
-// `computeOnly`, a compute queue is all a device needs (ContextOptions::computeOnly).
-std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices, bool computeOnly = false);
+// Every device with what it lacks of phongvk's requirements (DeviceInfo::missing) and the key path
+// it takes (DeviceInfo::keys32: its features, or PHONGVK_KEY_PATH where set; ArgumentError where
+// that variable is neither 32 nor 64).
+std::vector<DeviceInfo> inspectDevices(const std::vector<VkPhysicalDevice>& devices);
 
 // The first compute queue family that can write timestamps, else the first compute family.
 std::optional<uint32_t> findComputeFamily(VkPhysicalDevice device);
@@ -27,8 +28,8 @@ std::optional<uint64_t> storageRangeVariable();
 // lowered to `storageRange` where that is smaller), memory, queue family, timestamps.
 void describeDevice(VulkanContext& context, const DeviceInfo& info, std::optional<uint64_t> storageRange);
 
-// The logical device with phongvk's features (none with `computeOnly`) and its compute queue,
-// loaded into volk.
-void createDevice(VulkanContext& context, bool computeOnly = false);
+// The logical device with its key path's features (context.info.keys32: none) and its compute
+// queue, loaded into volk.
+void createDevice(VulkanContext& context);
 
 }  // namespace phongvk

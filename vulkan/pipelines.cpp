@@ -158,6 +158,14 @@ VkDescriptorSet allocateDescriptorSet(const VulkanContext& context, const Descri
   return set;
 }
 
+std::vector<Binding> sharedBindings(const VulkanContext& context) {
+  std::vector<Binding> bindings(std::begin(SHARED_BINDINGS), std::end(SHARED_BINDINGS));
+  for (Binding& b : bindings) {
+    if (context.info.keys32 && b.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) b.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  }
+  return bindings;
+}
+
 uint32_t groupCount(uint32_t threads, uint32_t groupSize) {
   assert(groupSize > 0);
   return threads / groupSize + (threads % groupSize != 0);  // no overflow near UINT32_MAX

@@ -34,6 +34,10 @@ constexpr Binding sharedBinding(uint32_t number) {
   return {number, VK_DESCRIPTOR_TYPE_MAX_ENUM};
 }
 
+// The shared set as the context's shaders declare it: on the 32-bit key path every texel binding
+// is a storage buffer (bindings.glsl TEXELS). Indexed by binding number.
+std::vector<Binding> sharedBindings(const VulkanContext& context);
+
 // A specialization constant: `layout(constant_id = SPEC_X) const uint NAME = default;` in GLSL,
 // the id from shaders/shared.h's table.
 struct SpecConstant {
@@ -102,10 +106,11 @@ inline BufferDescriptor bufferDescriptor(uint32_t binding, const Buffer& buffer)
   return {binding, sharedBinding(binding).type, buffer.buffer};
 }
 
-// The descriptor of `texels` at shared binding `binding`: its texel view for a texel binding, the
-// buffer itself for a storage binding (a pass that writes what others read as texels).
-inline BufferDescriptor texelDescriptor(uint32_t binding, const TexelBuffer& texels) {
-  return {binding, sharedBinding(binding).type, texels.buffer.buffer, 0, VK_WHOLE_SIZE, texels.view};
+// The descriptor of `texels` at `binding` (of sharedBindings' table, or another of the caller's):
+// its texel view for a texel binding, the buffer itself for a storage binding (a pass that writes
+// what others read as texels, or the 32-bit key path).
+inline BufferDescriptor texelDescriptor(const Binding& binding, const TexelBuffer& texels) {
+  return {binding.binding, binding.type, texels.buffer.buffer, 0, VK_WHOLE_SIZE, texels.view};
 }
 
 // Allocates a set of `setLayout` from the arena and writes `descriptors` into it.

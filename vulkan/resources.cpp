@@ -150,13 +150,14 @@ VkDeviceSize texelBufferBytes(VkDeviceSize bytes, const VulkanContext& context) 
 }  // namespace
 
 void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
-                       VkBufferUsageFlags usage, MemoryKind kind) {
+                       VkBufferUsageFlags usage, MemoryKind kind, bool view) {
   assert(bytes % TEXEL_BYTES == 0);
   result = {};
-  createBuffer(result.buffer, context, texelBufferBytes(bytes, context), usage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-               kind);
+  createBuffer(result.buffer, context, texelBufferBytes(bytes, context),
+               usage | (view ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : VK_BUFFER_USAGE_STORAGE_BUFFER_BIT), kind);
   try {
     if (data && bytes) uploadToBuffer(context, result.buffer, data, bytes);
+    if (!view) return;
     VkBufferViewCreateInfo info = {VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
     info.buffer = result.buffer.buffer;
     info.format = VK_FORMAT_R32G32B32A32_UINT;

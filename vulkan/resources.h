@@ -64,6 +64,8 @@ void readFromBuffer(const VulkanContext& context, const Buffer& src, void* out, 
 
 // A buffer the shaders read as RGBA32UI texels (a uniform texel buffer: bindings.glsl). texelFetch
 // is gathered in SIMD by CPU devices (lavapipe), which load from a storage buffer lane by lane.
+// Made without a view it is a storage buffer of uvec4s instead, as the compute port's 32-bit key
+// path reads it (bindings.glsl TEXELS): such devices may allow few texels (SwiftShader: 65,536).
 // Move-only like Buffer; the view goes with it.
 struct TexelBuffer {
   Buffer buffer;
@@ -79,15 +81,16 @@ inline constexpr VkDeviceSize TEXEL_BYTES = 16;
 // `bytes` (a multiple of TEXEL_BYTES; 0 still gets one texel) in a new texel buffer, a few texels
 // longer than asked for where lavapipe needs it (resources.cpp texelBufferBytes), filled from
 // `data` if it is not null; `usage` is added to UNIFORM_TEXEL_BUFFER (e.g. STORAGE for a pass that
-// writes it).
+// writes it). `view` false: a storage buffer without a texel view (above).
 void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const void* data, VkDeviceSize bytes,
-                       VkBufferUsageFlags usage, MemoryKind kind);
+                       VkBufferUsageFlags usage, MemoryKind kind, bool view = true);
 
 // createTexelBuffer filled from `data`, an array of std430 structs of whole texels.
 template <typename T>
-void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind) {
+void createTexelBuffer(TexelBuffer& result, const VulkanContext& context, const std::vector<T>& data, MemoryKind kind,
+                       bool view = true) {
   static_assert(sizeof(T) % TEXEL_BYTES == 0);
-  createTexelBuffer(result, context, data.data(), data.size() * sizeof(T), 0, kind);
+  createTexelBuffer(result, context, data.data(), data.size() * sizeof(T), 0, kind, view);
 }
 
 // Safe on an empty or already destroyed TexelBuffer.

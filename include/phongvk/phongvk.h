@@ -305,7 +305,8 @@ class PHONGVK_API Renderer {
   std::vector<FrameTime> timeFrames(const Scene& scene, int repeat);
 
   Backend backend() const;
-  // "cpu (reference)" or the Vulkan device's name: "llvmpipe (LLVM 15.0.6, 256 bits)".
+  // "cpu (reference)" or the Vulkan device's name and key path (devices.h keyPathWords):
+  // "llvmpipe (LLVM 15.0.6, 256 bits), keys: 64-bit atomics".
   std::string deviceName() const;
   RendererStats stats() const;
 

@@ -254,7 +254,7 @@ def test_png_levels_change_size_not_pixels(tmp_path):
 def test_devices_and_version():
     devices = phongvk.devices()
     assert any(d["usable"] for d in devices)
-    assert set(devices[0]) == {"index", "name", "type", "api_version", "usable", "missing"}
+    assert set(devices[0]) == {"index", "name", "type", "api_version", "usable", "missing", "keys"}
     assert phongvk.__version__.count(".") == 2 and phongvk.__revision__
 
 

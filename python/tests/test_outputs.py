@@ -3,6 +3,7 @@ same bytes on both backends in every shading mode and sample count, and depth an
 an analytic ray cast of a sphere."""
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -189,3 +190,10 @@ def test_orthographic_depth_and_normals_are_the_spheres():
     expected = np.stack([x, y, t - distance], axis=-1)
     cosine = (expected[inner] * out["normal"][inner]).sum(axis=-1)
     assert np.degrees(np.arccos(np.minimum(cosine, 1))).max() < 0.1
+
+
+def test_the_renderer_names_its_key_path():
+    # CTest's keys32_python_test_outputs runs this file with PHONGVK_KEY_PATH=32.
+    name = phongvk.Renderer("gpu").device_name
+    forced = os.environ.get("PHONGVK_KEY_PATH")
+    assert ("keys: %s-bit atomics" % forced if forced else "keys: ") in name, name
