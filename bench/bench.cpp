@@ -45,9 +45,25 @@ std::vector<SetupResult> runSetup(const BenchOptions& options) {
   return results;
 }
 
+std::vector<SuiteScene> deviceScenes(const BenchOptions& options) {
+  std::vector<SuiteScene> scenes = makeDeviceScenes(options.sourceDir, options.quick);
+  std::erase_if(scenes, [&](const SuiteScene& s) { return !selected(s, options); });
+  return scenes;
+}
+
+// The device table alone, as a report of its own (`--devices-only`).
+void runDevicesOnly(const BenchOptions& options) {
+  checkWritable(options.out);
+  const DeviceTable table = runDeviceTable(deviceScenes(options), options.repeat, !options.quick);
+  writeText(options.out, "# phongvk devices and key paths\n\nMade by `phongvk_bench --devices-only`.\n\n" +
+                             deviceTableSection(table, options.repeat));
+  std::printf("wrote %s\n", options.out.c_str());
+}
+
 }  // namespace
 
 void runBench(const BenchOptions& options) {
+  if (options.devicesOnly) return runDevicesOnly(options);
   checkWritable(options.out);
   checkWritable(options.plot);
   // The context; each backend makes its own renderer per scene.
@@ -62,6 +78,9 @@ void runBench(const BenchOptions& options) {
     report.machine = describeMachine(gpu.context);
     std::printf("phongvk_bench on %s, %d timed frames per measurement\n", report.machine.device.c_str(), options.repeat);
     report.scenes = runSuite(gpu.context, options);
+    std::printf("devices and key paths:\n");
+    // The smoke test (--quick) leaves SwiftShader out: its compiler takes tens of seconds a pass.
+    report.devices = runDeviceTable(deviceScenes(options), options.repeat, !options.quick);
     report.setups = runSetup(options);
     report.sweep = runErrorSweep(gpu.context, options.quick, options.repeat);
     report.plotNote = plotErrorSweep(report.sweep, options.plot, gpu.context.info.name);

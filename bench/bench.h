@@ -16,6 +16,7 @@ struct BenchOptions {
   std::string only;                          // non-empty: only the suite and setup scenes whose name has it
   int device = -1;                           // Vulkan device index, -1 = best
   std::string cli;                           // the phongvk command the end-to-end section runs
+  bool devicesOnly = false;                  // only the device table (device_table.h)
 };
 
 // Runs everything and writes the report and the plot. Throws on failure (a bad output path, no

@@ -74,11 +74,14 @@ BackendRun runReference(const SceneData& data, const FramePair& frames, int repe
                      [] { return NOT_MEASURED; });
 }
 
-ComputeRun runCompute(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat) {
+ComputeRun runCompute(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat,
+                      std::shared_ptr<GpuPipelineSet> pipelines) {
   return orFailure<ComputeRun>([&] {
     ComputeRun run;
     const uint64_t before = deviceBytes(context);
-    GpuRenderer renderer(context, data);
+    GpuRendererOptions options;
+    options.pipelines = std::move(pipelines);
+    GpuRenderer renderer(context, data, options);
     run.sceneBytes = deviceBytes(context) - before;
     std::vector<PassTimes> passes;
     static_cast<BackendRun&>(run) = timeRenders(

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 
 namespace phongvk::bench {
@@ -50,7 +51,9 @@ FramePair makeFramePair(const SceneData& data, const View& view);
 BackendRun runReference(const SceneData& data, const FramePair& frames, int repeat);
 
 // Failures to construct the renderer (a scene past a device limit) come back in time.failure.
-ComputeRun runCompute(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat);
+// `pipelines`: compiled ones to take and keep (none: the renderer compiles its own).
+ComputeRun runCompute(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat,
+                      std::shared_ptr<GpuPipelineSet> pipelines = nullptr);
 BackendRun runGraphics(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat);
 
 // The process's peak resident memory so far (getrusage maxrss), in bytes.

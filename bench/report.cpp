@@ -11,19 +11,6 @@ namespace {
 
 constexpr double MIB = 1024.0 * 1024.0;
 
-std::string row(const std::vector<std::string>& cells) {
-  std::string text = "|";
-  for (const std::string& c : cells) text += " " + c + " |";
-  return text + "\n";
-}
-
-// A table's header row and the separator under it: the first column left-aligned, the others
-// right-aligned when they hold numbers.
-std::string header(const std::vector<std::string>& cells, bool numbers = true) {
-  std::string separator = "|";
-  for (size_t i = 0; i < cells.size(); ++i) separator += i == 0 || !numbers ? "---|" : "--:|";
-  return row(cells) + separator + "\n";
-}
 
 std::string count(uint64_t n) { return formatText("%llu", static_cast<unsigned long long>(n)); }
 
@@ -390,7 +377,8 @@ std::string method(const Report& r) {
 }  // namespace
 
 std::string formatReport(const Report& report) {
-  return preamble(report) + machine(report) + targetTable(report) + suite(report) + setupSection(report) +
+  return preamble(report) + machine(report) + targetTable(report) + suite(report) +
+         deviceTableSection(report.devices, report.repeat) + setupSection(report) +
          sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) +
          method(report);
 }

@@ -2,6 +2,7 @@
 // by how much not, and why), the suite, mesh setup, and the run time against error sweep.
 #pragma once
 
+#include "device_table.h"
 #include "end_to_end.h"
 #include "error_sweep.h"
 #include "geometry_change.h"
@@ -22,6 +23,7 @@ struct Report {
   std::string revision;  // git revision of the sources, when known
   Machine machine;
   std::vector<SceneResult> scenes;
+  DeviceTable devices;   // each device and key path (device_table.h)
   std::vector<SetupResult> setups;
   SweepResult sweep;
   EndToEnd endToEnd;

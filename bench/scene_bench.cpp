@@ -40,16 +40,6 @@ void printProgress(const SceneResult& r) {
   std::fflush(stdout);  // progress shows while the next scene runs
 }
 
-// The run whose wall time is the median of the rounds (a failed run, if any failed).
-template <typename Run>
-Run medianRound(std::vector<Run> runs) {
-  for (const Run& run : runs) {
-    if (!run.time.ok()) return run;
-  }
-  std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.time.wallMs < b.time.wallMs; });
-  return runs[runs.size() / 2];
-}
-
 void renderAll(const VulkanContext& context, const SceneData& data, const FramePair& frames, int repeat,
                SceneResult& r) {
   std::vector<BackendRun> references, graphicsRuns;

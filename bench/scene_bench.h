@@ -5,6 +5,9 @@
 #include "measure.h"
 #include "suite.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace phongvk::bench {
 
 struct SceneResult {
@@ -36,6 +39,16 @@ struct SetupResult {
 // pipeline, then again) and each reports its median round: a burst of load on a shared machine
 // then slows all three alike instead of one backend's whole measurement.
 inline constexpr int SCENE_ROUNDS = 3;
+
+// The run whose wall time is the median of the rounds (a failed run, if any failed).
+template <typename Run>
+Run medianRound(std::vector<Run> runs) {
+  for (const Run& run : runs) {
+    if (!run.time.ok()) return run;
+  }
+  std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.time.wallMs < b.time.wallMs; });
+  return runs[runs.size() / 2];
+}
 
 // Loads, builds and renders the scene on the reference, the compute port and the baseline.
 // Prints one progress line. Never throws for a scene that fails: the result says why.

@@ -135,6 +135,16 @@ std::vector<SuiteScene> makeSuite(const std::string& sourceDir, bool quick) {
   return quick ? quickSuite(sourceDir) : fullSuite(sourceDir);
 }
 
+std::vector<SuiteScene> makeDeviceScenes(const std::string& sourceDir, bool quick) {
+  std::vector<SuiteScene> scenes;
+  if (!quick) {
+    scenes = paperScenes(sourceDir);
+    scenes.push_back({gridName(GRIDS[3]), "grid", grid(GRIDS[3]), true});
+  }
+  scenes.push_back({"basic @ 240x160", "small", atSize(fromFile(sourceDir + "/scenes/basic.json"), 240, 160)});
+  return scenes;
+}
+
 std::vector<SuiteScene> makeSetupScenes(bool quick) {
   std::vector<SuiteScene> scenes;
   const int grids = quick ? QUICK_GRIDS : int(std::size(GRIDS));

@@ -23,6 +23,10 @@ struct SuiteScene {
 // animated ones). `quick` keeps a few small scenes at a small image size, for the smoke test.
 std::vector<SuiteScene> makeSuite(const std::string& sourceDir, bool quick);
 
+// The device table's scenes (device_table.h): the paper's, the 1M-triangle grid and a small frame;
+// `quick`: the small frame alone.
+std::vector<SuiteScene> makeDeviceScenes(const std::string& sourceDir, bool quick);
+
 // Scenes whose mesh setup (buildSceneData) is timed: the grids and one 5M-triangle icosphere.
 std::vector<SuiteScene> makeSetupScenes(bool quick);
 

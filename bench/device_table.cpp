@@ -1,0 +1,157 @@
+#include "device_table.h"
+
+#include "scene_bench.h"
+#include "text.h"
+
+#include "phongvk/compare.h"
+#include "phongvk/devices.h"
+#include "scene/camera.h"
+#include "tools/statistics.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+namespace phongvk::bench {
+
+namespace {
+
+constexpr const char* SWIFTSHADER_ICD = "/usr/lib/chromium/vk_swiftshader_icd.json";
+
+// An environment variable set (or, with no value, unset) while the object lives, then put back.
+class ScopedVariable {
+ public:
+  ScopedVariable(const char* name, std::optional<std::string> value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    if (value) setenv(name, value->c_str(), 1);
+    else unsetenv(name);
+  }
+  ~ScopedVariable() {
+    if (old_) setenv(name_, old_->c_str(), 1);
+    else unsetenv(name_);
+  }
+  ScopedVariable(const ScopedVariable&) = delete;
+  ScopedVariable& operator=(const ScopedVariable&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+// A column's device: its own context (each made while its key path's variable held) and the
+// pipelines compiled on it, kept across the scenes (SwiftShader compiles some for tens of seconds).
+struct Column {
+  DeviceColumn description;
+  std::unique_ptr<ScopedContext> context;
+  std::shared_ptr<GpuPipelineSet> pipelines;
+};
+
+void addColumn(std::vector<Column>& columns, const DeviceInfo& device, const char* keyPath) {
+  const ScopedVariable path("PHONGVK_KEY_PATH", keyPath ? std::optional<std::string>(keyPath) : std::nullopt);
+  Column c;
+  c.context = std::make_unique<ScopedContext>(ContextOptions{int(device.index)});
+  c.description = {device.name, keyPathWords(c.context->context.info)};
+  c.pipelines = std::make_shared<GpuPipelineSet>(c.context->context);
+  columns.push_back(std::move(c));
+}
+
+// Every usable device on its own path, a 64-bit one also on the 32-bit path; a CPU device first
+// (lavapipe: the column the ratios are to), then as the loader lists them.
+std::vector<Column> makeColumns(bool withSwiftShader) {
+  const bool addSwiftShader = withSwiftShader && std::filesystem::exists(SWIFTSHADER_ICD);
+  // The loader reads the variable when an instance is made: every context below sees SwiftShader.
+  const ScopedVariable drivers("VK_ADD_DRIVER_FILES",
+                               addSwiftShader ? std::optional<std::string>(SWIFTSHADER_ICD) : std::nullopt);
+  const ScopedVariable natural("PHONGVK_KEY_PATH", std::nullopt);
+  std::vector<DeviceInfo> devices = listDevices();
+  std::stable_sort(devices.begin(), devices.end(), [](const DeviceInfo& a, const DeviceInfo& b) {
+    return a.name.rfind("llvmpipe", 0) == 0 && b.name.rfind("llvmpipe", 0) != 0;
+  });
+  std::vector<Column> columns;
+  for (const DeviceInfo& device : devices) {
+    if (!device.suitable) continue;
+    addColumn(columns, device, nullptr);
+    if (!device.keys32) addColumn(columns, device, "32");
+  }
+  return columns;
+}
+
+DeviceRow measureRow(std::vector<Column>& columns, const SuiteScene& scene, int repeat) {
+  DeviceRow row;
+  row.scene = scene.name;
+  const SceneSpec loaded = scene.load();
+  const View view = makeView(loaded.camera);
+  const SceneData data = buildSceneData(loaded);
+  row.triangles = data.triangles.size();
+  row.width = view.width;
+  row.height = view.height;
+  const FramePair frames = makeFramePair(data, view);
+  const BackendRun reference = runReference(data, frames, 1);
+  std::vector<std::vector<ComputeRun>> runs(columns.size());
+  for (int round = 0; round < SCENE_ROUNDS; ++round) {
+    for (size_t c = 0; c < columns.size(); ++c) {
+      const ContextLock lock(columns[c].context->context);
+      runs[c].push_back(runCompute(columns[c].context->context, data, frames, repeat, columns[c].pipelines));
+    }
+  }
+  for (const std::vector<ComputeRun>& columnRuns : runs) {
+    const ComputeRun run = medianRound(columnRuns);
+    row.times.push_back(run.time);
+    row.maxDiff.push_back(run.time.ok() && reference.time.ok() ? compareImages(reference.image, run.image).maxChannelDiff() : -1);
+  }
+  return row;
+}
+
+std::string cell(const Timing& t, const Timing& base) {
+  if (!t.ok()) return t.failureKind();
+  std::string text = number(t.wallMs, 2) + " ms";
+  if (base.ok() && base.wallMs > 0) text += " (" + number(t.wallMs / base.wallMs, 2) + "x)";
+  return text;
+}
+
+}  // namespace
+
+DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, bool withSwiftShader) {
+  std::vector<Column> columns = makeColumns(withSwiftShader);
+  DeviceTable table;
+  for (const Column& c : columns) table.columns.push_back(c.description);
+  for (const SuiteScene& scene : scenes) {
+    table.rows.push_back(measureRow(columns, scene, repeat));
+    std::string line = "devices " + scene.name + ":";
+    for (size_t c = 0; c < columns.size(); ++c) line += " " + cell(table.rows.back().times[c], table.rows.back().times[0]);
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  }
+  return table;
+}
+
+std::string deviceTableSection(const DeviceTable& table, int repeat) {
+  std::string s = "## Devices and key paths\n\nThe compute port on every Vulkan device of this machine and on each key "
+                  "path it can take (docs/DESIGN.md \"Visibility\"): a device with 64-bit atomics also forced to the "
+                  "32-bit path (`PHONGVK_KEY_PATH=32`), and SwiftShader (Debian's `chromium-common`) where installed. "
+                  "Each cell is the median frame wall time (" + std::to_string(repeat) + " frame(s) after a warm-up, the "
+                  "median of " + std::to_string(SCENE_ROUNDS) + " rounds interleaved across the columns; pipelines "
+                  "compiled before the timed frames) and its ratio to the first column. Every image is compared with "
+                  "the reference's: the last column gives the largest channel difference over all devices.\n\n";
+  std::vector<std::string> head = {"scene", "triangles"};
+  for (const DeviceColumn& c : table.columns) head.push_back(c.device + ", " + c.keys);
+  head.push_back("max diff");
+  s += header(head);
+  for (const DeviceRow& r : table.rows) {
+    std::vector<std::string> cells = {r.scene + " (" + std::to_string(r.width) + "x" + std::to_string(r.height) + ")",
+                                      formatText("%llu", static_cast<unsigned long long>(r.triangles))};
+    int worst = -1;
+    for (size_t c = 0; c < r.times.size(); ++c) {
+      cells.push_back(cell(r.times[c], r.times[0]));
+      worst = std::max(worst, r.maxDiff[c]);
+    }
+    cells.push_back(worst < 0 ? "–" : std::to_string(worst));
+    s += row(cells);
+  }
+  return s + "\n";
+}
+
+}  // namespace phongvk::bench
