@@ -47,6 +47,16 @@ struct Column {
   DeviceColumn description;
   std::unique_ptr<ScopedContext> context;
   std::shared_ptr<GpuPipelineSet> pipelines;
+
+  Column() = default;
+  Column(Column&&) = default;
+  Column& operator=(Column&&) = default;
+  // The pipelines go through their own context's functions (volk holds the newest context's).
+  ~Column() {
+    if (!context) return;
+    const ContextLock lock(context->context);
+    pipelines.reset();
+  }
 };
 
 void addColumn(std::vector<Column>& columns, const DeviceInfo& device, const char* keyPath) {

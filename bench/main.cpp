@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
   app.add_flag("--quick", options.quick, "A few small scenes, one timed frame (the smoke test)");
   auto* repeat = app.add_option("--repeat", options.repeat, "Timed frames per measurement, after a warm-up (default 5)")
                      ->check(CLI::Range(1, 1000));
-  app.add_option("--out", options.out, "Markdown report (default docs/BENCHMARKS.md)");
+  auto* out = app.add_option("--out", options.out,
+                             "Markdown report (default docs/BENCHMARKS.md; docs/BENCHMARK_DEVICES.md with --devices-only)");
   app.add_option("--plot", options.plot, "Run time against error plot, PNG (default docs/bench_error.png)");
   app.add_option("--source", options.sourceDir, "Repository root, where scenes/ is (default: this build's)");
   app.add_option("--revision", options.revision, "Source revision to show in the report");
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   if (options.quick && repeat->count() == 0) options.repeat = 1;
+  if (options.devicesOnly && out->count() == 0) options.out = "docs/BENCHMARK_DEVICES.md";
   try {
     phongvk::bench::runBench(options);
     return 0;

@@ -12,7 +12,8 @@
 # one, which lengthened every process's pipeline compiling (docs/DECISIONS.md). Every compute
 # shader not named in KEYS32_SKIP is also built for the 32-bit key path, as spirv_x_k32 and
 # spirv_x_k32_exact with PHONGVK_KEYS32=1: no 64-bit integer and no 8-bit storage anywhere in the
-# module (docs/DESIGN.md "Visibility").
+# module (docs/DESIGN.md "Visibility"); and as spirv_x_k32s and spirv_x_k32s_exact with
+# PHONGVK_STORAGE_ARRAYS=1 too, for devices with small texel buffers (vulkan/context.h storageArrays).
 # Every compute shader's floating-point operations are then decorated NoContraction
 # (shaders/no_contraction.cpp: glslang's `precise` stops at function boundaries, and no optimizer
 # may rewrite an operation the reference computes as written), and the module goes through
@@ -38,7 +39,7 @@ function(phongvk_compile_shaders)
         list(APPEND variants "${name}_exact")
       endif()
       if(NOT name IN_LIST ARG_KEYS32_SKIP)
-        list(APPEND variants "${name}_k32" "${name}_k32_exact")
+        list(APPEND variants "${name}_k32" "${name}_k32_exact" "${name}_k32s" "${name}_k32s_exact")
       endif()
     else()
       string(SUBSTRING ${stage} 1 -1 stage)
@@ -52,6 +53,9 @@ function(phongvk_compile_shaders)
       endif()
       if(variant MATCHES "_k32")
         list(APPEND defines -DPHONGVK_KEYS32=1)
+      endif()
+      if(variant MATCHES "_k32s")
+        list(APPEND defines -DPHONGVK_STORAGE_ARRAYS=1)
       endif()
       add_custom_command(
         OUTPUT ${out}.spv

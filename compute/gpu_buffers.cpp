@@ -20,9 +20,9 @@ constexpr VkBufferUsageFlags STORAGE = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 
 uint32_t binsAcross(uint32_t pixels) { return groupCount(pixels, BIN_SIZE); }
 
-// Whether the passes read the arrays as texels (texel views), or as storage buffers: the 32-bit key
-// path (bindings.glsl TEXELS).
-bool texelViews(const VulkanContext& context) { return !context.info.keys32; }
+// Whether the passes read the arrays as texels (texel views), or as storage buffers
+// (VulkanContext::storageArrays, bindings.glsl TEXELS).
+bool texelViews(const VulkanContext& context) { return !context.storageArrays; }
 
 // Throws when one array would exceed the device's largest storage buffer binding.
 void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* what) {
@@ -31,9 +31,9 @@ void checkFits(const VulkanContext& context, VkDeviceSize bytes, const char* wha
 }
 
 // Throws when an array the passes read as texels would exceed the device's largest texel buffer,
-// or on the 32-bit key path (which reads them as storage buffers) its largest storage buffer.
+// or where they are read as storage buffers (VulkanContext::storageArrays) its largest storage buffer.
 void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* what) {
-  if (context.info.keys32) return checkFits(context, texels * TEXEL_BYTES, what);
+  if (context.storageArrays) return checkFits(context, texels * TEXEL_BYTES, what);
   checkDeviceLimit(context, what, texels, "texels", "maxTexelBufferElements",
                    context.properties.limits.maxTexelBufferElements);
 }

@@ -43,6 +43,27 @@
 #include "shaders/shade_vertices_k32.spv.h"
 #include "shaders/shade_vertices_k32_exact.spv.h"
 
+#include "shaders/bin_large_k32s.spv.h"
+#include "shaders/bin_large_k32s_exact.spv.h"
+#include "shaders/clip_triangles_k32s.spv.h"
+#include "shaders/clip_triangles_k32s_exact.spv.h"
+#include "shaders/fill_background_k32s.spv.h"
+#include "shaders/fill_background_k32s_exact.spv.h"
+#include "shaders/pack_colors_k32s.spv.h"
+#include "shaders/pack_colors_k32s_exact.spv.h"
+#include "shaders/raster_triangles_k32s.spv.h"
+#include "shaders/raster_triangles_k32s_exact.spv.h"
+#include "shaders/resolve_large_k32s.spv.h"
+#include "shaders/resolve_large_k32s_exact.spv.h"
+#include "shaders/resolve_large_keys_k32s.spv.h"
+#include "shaders/resolve_large_keys_k32s_exact.spv.h"
+#include "shaders/resolve_lit_k32s.spv.h"
+#include "shaders/resolve_lit_k32s_exact.spv.h"
+#include "shaders/resolve_small_k32s.spv.h"
+#include "shaders/resolve_small_k32s_exact.spv.h"
+#include "shaders/shade_vertices_k32s.spv.h"
+#include "shaders/shade_vertices_k32s_exact.spv.h"
+
 #include "vulkan/pipeline_cache.h"
 
 #include <chrono>
@@ -61,12 +82,15 @@ struct ShaderCode {
 };
 
 #define SHADER(name) {spirv_##name, sizeof(spirv_##name)}
-#define BUILDS(name) {{SHADER(name), SHADER(name##_exact)}, {SHADER(name##_k32), SHADER(name##_k32_exact)}}
+#define BUILDS(name)                                                                                     \
+  {{SHADER(name), SHADER(name##_exact)}, {SHADER(name##_k32), SHADER(name##_k32_exact)}, \
+   {SHADER(name##_k32s), SHADER(name##_k32s_exact)}}
 
-// Per pass (GpuRenderer::Pass order), for the 64-bit and then the 32-bit key path: the build with
-// the device's own division and sqrt, and the `_exact` build that corrects them
-// (shaders/exact_float.h), for devices whose own are off.
-constexpr ShaderCode SHADERS[][2][2] = {
+// Per pass (GpuRenderer::Pass order), for the 64-bit key path, the 32-bit one, and the 32-bit one
+// reading its arrays from storage buffers (VulkanContext::storageArrays): the build with the
+// device's own division and sqrt, and the `_exact` build that corrects them (shaders/exact_float.h),
+// for devices whose own are off.
+constexpr ShaderCode SHADERS[][3][2] = {
     BUILDS(shade_vertices), BUILDS(raster_triangles), BUILDS(clip_triangles), BUILDS(resolve_small),
     BUILDS(resolve_large), BUILDS(bin_large), BUILDS(fill_background), BUILDS(pack_colors),
     BUILDS(resolve_lit), BUILDS(resolve_large_keys),
@@ -106,7 +130,8 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
   for (const PipelineRequest& r : requests) {
     std::vector<uint32_t> key = pipelineKey(r.shader(), exactFloats_, r.specs);
     if (pipelines_->byKey_.count(key) != 0) continue;
-    const ShaderCode code = SHADERS[r.shader()][context_.info.keys32 ? 1 : 0][exactFloats_ ? 1 : 0];
+    const int path = context_.storageArrays ? 2 : (context_.info.keys32 ? 1 : 0);
+    const ShaderCode code = SHADERS[r.shader()][path][exactFloats_ ? 1 : 0];
     pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
                            return createComputePipeline(context_, code.spirv, code.bytes, bindings_, 0, specs);
                          }));

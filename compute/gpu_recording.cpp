@@ -49,20 +49,18 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 1);
-  bind(RASTER);
-  vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
-  computeBarrier(cmd);
-  bind(CLIP);
-  vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
-  computeBarrier(cmd);
-  if (context_.info.keys32) {  // the keys' low words, among the fragments at each pixel's depth
-    bind(RASTER_IDS);
+  // The triangle and clip passes; on the 32-bit key path twice, the keys' high words and then their
+  // low words among the fragments at each pixel's depth (shaders/raster_loops.glsl).
+  auto raster = [&](Pass triangles, Pass clip) {
+    bind(triangles);
     vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
     computeBarrier(cmd);
-    bind(CLIP_IDS);
+    bind(clip);
     vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
     computeBarrier(cmd);
-  }
+  };
+  raster(RASTER, CLIP);
+  if (context_.info.keys32) raster(RASTER_IDS, CLIP_IDS);
   if (binPass_) {
     bind(BIN_LARGE);
     vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, binGroupsX));

@@ -53,10 +53,10 @@ void loadUniforms() {
   control.loopProbe *= one;
 }
 #endif
-// The arrays the passes only read, as RGBA32UI texels. The 32-bit key path (PHONGVK_KEYS32, for
-// devices without 64-bit integers) reads them from storage buffers instead: such devices tend to
-// have small texel-buffer limits (SwiftShader's is 65,536 texels, a 33,000-vertex mesh).
-#ifdef PHONGVK_KEYS32
+// The arrays the passes only read, as RGBA32UI texels. The 32-bit key path's builds for devices with
+// small texel-buffer limits (PHONGVK_STORAGE_ARRAYS: SwiftShader's is 65,536 texels, a 33,000-vertex
+// mesh) read them from storage buffers instead (vulkan/context.h storageArrays).
+#ifdef PHONGVK_STORAGE_ARRAYS
 #define TEXELS(b, name) layout(std430, binding = b) readonly buffer name##Block { uvec4 name[]; };
 #define TEXEL(name, i) name[i]
 #else

@@ -31,6 +31,8 @@
 
 namespace phongvk {
 
+inline constexpr uint32_t STORAGE_ARRAYS_BELOW = 1u << 24;
+
 struct ContextOptions {
   int deviceIndex = -1;   // -1: the best suitable device (discrete > integrated > virtual > CPU)
   bool validate = false;  // Khronos validation + synchronization validation; also env PHONGVK_VALIDATE=1
@@ -74,6 +76,12 @@ struct VulkanContext {
   std::shared_ptr<ValidationLog> validation;  // null unless validating
   std::shared_ptr<MemoryUsage> memory = std::make_shared<MemoryUsage>();
   DeviceInfo info;                  // the chosen device
+  // The 32-bit key path on a device with small texel buffers (maxTexelBufferElements below
+  // STORAGE_ARRAYS_BELOW texels: SwiftShader's 65,536): the passes read the scene's arrays from
+  // storage buffers (the _k32s builds, bindings.glsl TEXELS). Elsewhere texel buffers, which lavapipe
+  // gathers in SIMD: the 1M-triangle grid's frame took 1.9x the 64-bit path's with storage buffers,
+  // 1.2x with texels.
+  bool storageArrays = false;
 };
 
 // Creates the instance, picks a device (options.deviceIndex or the best suitable one), creates the

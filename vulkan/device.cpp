@@ -193,6 +193,7 @@ void describeDevice(VulkanContext& context, const DeviceInfo& report, std::optio
   uint32_t& limit = context.properties.limits.maxStorageBufferRange;
   if (storageRange && *storageRange < limit) limit = static_cast<uint32_t>(*storageRange);
   vkGetPhysicalDeviceMemoryProperties(context.physicalDevice, &context.memoryProperties);
+  context.storageArrays = report.keys32 && context.properties.limits.maxTexelBufferElements < STORAGE_ARRAYS_BELOW;
   context.queueFamily = *findComputeFamily(context.physicalDevice);
   context.timestampValidBits = queueFamilies(context.physicalDevice)[context.queueFamily].timestampValidBits;
   context.timestamps = context.timestampValidBits > 0 && context.properties.limits.timestampPeriod > 0;

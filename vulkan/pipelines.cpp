@@ -161,7 +161,7 @@ VkDescriptorSet allocateDescriptorSet(const VulkanContext& context, const Descri
 std::vector<Binding> sharedBindings(const VulkanContext& context) {
   std::vector<Binding> bindings(std::begin(SHARED_BINDINGS), std::end(SHARED_BINDINGS));
   for (Binding& b : bindings) {
-    if (context.info.keys32 && b.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) b.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    if (context.storageArrays && b.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) b.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   }
   return bindings;
 }

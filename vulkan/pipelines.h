@@ -34,8 +34,8 @@ constexpr Binding sharedBinding(uint32_t number) {
   return {number, VK_DESCRIPTOR_TYPE_MAX_ENUM};
 }
 
-// The shared set as the context's shaders declare it: on the 32-bit key path every texel binding
-// is a storage buffer (bindings.glsl TEXELS). Indexed by binding number.
+// The shared set as the context's shaders declare it: where the context reads its arrays from
+// storage buffers (VulkanContext::storageArrays) every texel binding is one. Indexed by binding number.
 std::vector<Binding> sharedBindings(const VulkanContext& context);
 
 // A specialization constant: `layout(constant_id = SPEC_X) const uint NAME = default;` in GLSL,
