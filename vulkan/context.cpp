@@ -48,7 +48,6 @@ VulkanContext createContext(const ContextOptions& options) {
     throw;
   }
   rememberContext(context);
-  keepVulkanModulesLoaded();
   return context;
 }
 

@@ -4,14 +4,12 @@
 
 #include "vulkan/vk_check.h"
 
+#include <dlfcn.h>
+#include <link.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-
-#if defined(__SANITIZE_ADDRESS__)
-#include <dlfcn.h>
-#include <link.h>
-#endif
 
 namespace phongvk {
 
@@ -217,6 +215,7 @@ VkInstance createInstance(ValidationLog* log) {
     throw NoDeviceError("no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER); "
                         "install mesa-vulkan-drivers");
   VK_CHECK(result);
+  keepVulkanModulesLoaded();  // the driver is loaded now, whatever fails after
   loadInstanceFunctions(instance);
   return instance;
 }
@@ -226,11 +225,12 @@ void createMessenger(VulkanContext& context) {
   VK_CHECK(vkCreateDebugUtilsMessengerEXT(context.instance, &info, nullptr, &context.messenger));
 }
 
-// ASan builds only. LeakSanitizer reports at exit, after vkDestroyInstance has dlclose'd the
-// driver and the layers, so their own leaks would show as "<unknown module>" and
-// tests/lsan.supp could not name them. Marking them RTLD_NODELETE keeps them resolvable.
+// LeakSanitizer reports at exit, after vkDestroyInstance has dlclose'd the driver and the layers,
+// so their own leaks would show as "<unknown module>" and tests/lsan.supp could not name them.
+// Marking them RTLD_NODELETE keeps them resolvable. Done in every build, not only ASan's, so that
+// LeakSanitizer preloaded into a release build (LD_PRELOAD=liblsan.so.0) reads the same; a
+// process that makes a second instance finds the driver loaded already.
 void keepVulkanModulesLoaded() {
-#if defined(__SANITIZE_ADDRESS__)
   auto pin = [](dl_phdr_info* info, size_t, void*) {
     std::string name = info->dlpi_name ? info->dlpi_name : "";
     if (name.find("libVkLayer_") != std::string::npos || name.find("libvulkan_") != std::string::npos)
@@ -238,7 +238,6 @@ void keepVulkanModulesLoaded() {
     return 0;
   };
   dl_iterate_phdr(pin, nullptr);
-#endif
 }
 
 }  // namespace phongvk

@@ -17,7 +17,7 @@ void initializeLoader();
 bool validationRequested(const ContextOptions& options);
 
 // A Vulkan 1.2 instance, with validation (messages to `log`) unless log is null; loaded into volk.
-// Throws NoDeviceError without a driver, std::runtime_error when validation lacks its layer.
+// Throws NoDeviceError without a driver, DeviceError when validation lacks its layer.
 VkInstance createInstance(ValidationLog* log);
 
 // The debug messenger of a validating context (its messages to context.validation).
@@ -37,7 +37,9 @@ void reloadNewestContext();
 // Held while anything loads volk's tables or calls Vulkan through them (context.h ContextLock).
 std::recursive_mutex& vulkanMutex();
 
-// ASan builds: keeps the driver and layer modules mapped for LeakSanitizer's report at exit.
+// Keeps the driver and layer modules mapped for LeakSanitizer's report at exit.
+// createInstance calls it, so a temporary instance (listDevices) and a context that fails to
+// start are covered as well as a live one.
 void keepVulkanModulesLoaded();
 
 }  // namespace phongvk
