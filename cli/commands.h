@@ -9,7 +9,7 @@
 
 namespace phongvk::cli {
 
-// Exit codes, documented in the README.
+// Exit codes, documented in docs/CLI.md "Exit codes".
 enum ExitCode : int {
   EXIT_OK = 0,
   EXIT_DIFF_ABOVE_TOLERANCE = 1,

@@ -28,10 +28,14 @@ HASH_COMMENTS = (".py", ".sh", ".cmake")
 
 
 def tracked_files(root):
-    """The repository's files: git's list in a checkout, else every file outside build folders."""
-    git = subprocess.run(["git", "-C", root, "ls-files"], capture_output=True, text=True)
+    """The repository's files: in a checkout, git's list of tracked files and of new ones it does not
+    ignore (a document not yet committed is checked and citable), those present on disk; else every
+    file outside build folders."""
+    git = subprocess.run(["git", "-C", root, "ls-files", "--cached", "--others", "--exclude-standard"],
+                         capture_output=True, text=True)
     if git.returncode == 0 and git.stdout:
-        return git.stdout.split()
+        listed = dict.fromkeys(git.stdout.splitlines())
+        return [f for f in listed if os.path.isfile(os.path.join(root, f))]
     files = []
     for folder, subfolders, names in os.walk(root):
         subfolders[:] = [d for d in subfolders if not d.startswith(("build", ".", "out"))]

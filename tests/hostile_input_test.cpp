@@ -364,8 +364,8 @@ TEST(HostileCli, OptionMessagesAreShortAndExitTwo) {
   for (const test::CommandResult& r : {device, tolerance}) EXPECT_LT(r.output.size(), 400u) << r.output;
 }
 
-// An output name the system refuses (longer than NAME_MAX) is an output error, exit 2, as the
-// README promises, with the system's reason.
+// An output name the system refuses (longer than NAME_MAX) is an output error, exit 2, as
+// docs/CLI.md "Exit codes" promises, with the system's reason.
 TEST(HostileCli, AnOutputNameTooLongExitsTwo) {
   const std::string dir = test::makeTempDir();
   const std::string name = dir + "/" + std::string(300, 'a') + ".png";

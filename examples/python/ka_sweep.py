@@ -5,7 +5,7 @@ backend and laid out as a matplotlib grid.
 
     /usr/bin/python3 examples/python/ka_sweep.py [OUT.png] [--backend gpu|cpu]
 
-Needs the phongvk package (README, "Python"): installed, or PYTHONPATH=build/python.
+Needs the phongvk package (docs/PYTHON.md): installed, or PYTHONPATH=build/python.
 """
 
 import argparse

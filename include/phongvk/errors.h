@@ -1,6 +1,6 @@
 // errors.h — the failures phongvk reports as exceptions. Every one derives from phongvk::Error, so
 // one `catch (const phongvk::Error&)` serves a user; the kinds below map to the CLI's exit codes
-// (README "Exit codes") and to Python's exceptions. Only std::bad_alloc (memory ran out past the
+// (docs/CLI.md "Exit codes") and to Python's exceptions. Only std::bad_alloc (memory ran out past the
 // estimate) comes from elsewhere.
 #pragma once
 
