@@ -143,6 +143,11 @@ const std::vector<uint8_t>& PngEncoder::encode(const ImageGrey16& image) {
   return encodePixels(Pixels{{image.width, image.height, 2, 16, 0, bytes.data()}});
 }
 
+const std::vector<uint8_t>& PngEncoder::encode(const ImageGrey8& image) {
+  checkSize(image.width, image.height, image.grey.size(), 1);
+  return encodePixels(Pixels{{image.width, image.height, 1, 8, 0, image.grey.data()}});
+}
+
 const std::vector<uint8_t>& PngEncoder::encodePixels(const Pixels& pixels) {
   State& s = *state_;
   filterRows(pixels, s.filtered);
@@ -183,6 +188,7 @@ void PngEncoder::writeImage(const std::string& path, const AnyImage& image) {
 void PngEncoder::write(const std::string& path, const Image& image) { writeImage(path, image); }
 void PngEncoder::write(const std::string& path, const ImageRGBA& image) { writeImage(path, image); }
 void PngEncoder::write(const std::string& path, const ImageGrey16& image) { writeImage(path, image); }
+void PngEncoder::write(const std::string& path, const ImageGrey8& image) { writeImage(path, image); }
 
 std::vector<uint8_t> encodePng(const Image& image, int level) { return PngEncoder(level).encode(image); }
 
@@ -191,6 +197,8 @@ std::vector<uint8_t> encodePng(const ImageRGBA& image, int level) { return PngEn
 void writePng(const std::string& path, const ImageRGBA& image, int level) { PngEncoder(level).write(path, image); }
 std::vector<uint8_t> encodePng(const ImageGrey16& image, int level) { return PngEncoder(level).encode(image); }
 void writePng(const std::string& path, const ImageGrey16& image, int level) { PngEncoder(level).write(path, image); }
+std::vector<uint8_t> encodePng(const ImageGrey8& image, int level) { return PngEncoder(level).encode(image); }
+void writePng(const std::string& path, const ImageGrey8& image, int level) { PngEncoder(level).write(path, image); }
 
 void checkWritable(const std::string& path) { checkOutputPath(path); }
 

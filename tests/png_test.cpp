@@ -104,7 +104,7 @@ Decoded inflatedBytes(const std::vector<uint8_t>& png) {
     }
     if (chunk.type == "IDAT") stream.insert(stream.end(), chunk.data.begin(), chunk.data.end());
   }
-  const std::map<std::vector<uint8_t>, size_t> bytesPerPixel = {{{8, 2, 0, 0, 0}, 3}, {{8, 6, 0, 0, 0}, 4}, {{16, 0, 0, 0, 0}, 2}};
+  const std::map<std::vector<uint8_t>, size_t> bytesPerPixel = {{{8, 2, 0, 0, 0}, 3}, {{8, 6, 0, 0, 0}, 4}, {{16, 0, 0, 0, 0}, 2}, {{8, 0, 0, 0, 0}, 1}};
   EXPECT_EQ(bytesPerPixel.count(out.header), 1u) << "not a header phongvk writes";
   const size_t step = bytesPerPixel.count(out.header) ? bytesPerPixel.at(out.header) : 3;
   const size_t rowBytes = size_t(out.width) * step;
@@ -252,6 +252,22 @@ TEST(Png, RgbaAndGrey16DecodeToTheSamePixelsAtEveryLevelByTwoDecoders) {
       EXPECT_TRUE(read.grey == image.grey) << "grey16 at level " << level << " (stb_image)";
     }
   }
+}
+
+TEST(Png, Grey8IsEightBitGreyThatReadsBackScaledBy257) {
+  const std::string dir = makeTempDir(), path = dir + "/grey8.png";
+  ImageGrey8 image{13, 5, {}};
+  for (int i = 0; i < 13 * 5; ++i) image.grey.push_back(uint8_t(i * 37));
+  for (int level = PNG_LEVEL_MIN; level <= PNG_LEVEL_MAX; ++level) {
+    const Decoded decoded = inflatedBytes(encodePng(image, level));
+    EXPECT_EQ(decoded.header, (std::vector<uint8_t>{8, 0, 0, 0, 0}));  // 8 bits, grey
+    EXPECT_TRUE(decoded.bytes == image.grey) << "grey8 at level " << level;
+  }
+  writePng(path, image);
+  const ImageGrey16 read = readPngGrey16(path);
+  ASSERT_EQ(read.grey.size(), image.grey.size());
+  for (size_t i = 0; i < read.grey.size(); ++i) EXPECT_EQ(read.grey[i], image.grey[i] * 257) << i;
+  EXPECT_THROW(encodePng(ImageGrey8{4, 4, std::vector<uint8_t>(15)}), ArgumentError);
 }
 
 TEST(Png, AnRgbFileReadAsRgbaIsOpaqueAndMismatchedImagesAreRejected) {

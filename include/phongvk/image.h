@@ -36,6 +36,12 @@ struct ImageGrey16 {
   int height = 0;
   std::vector<uint16_t> grey;  // 1 sample per pixel
 };
+// 8-bit grey: a mask (0 and 255), a coverage, an 8-bit id.
+struct ImageGrey8 {
+  int width = 0;
+  int height = 0;
+  std::vector<uint8_t> grey;  // 1 sample per pixel
+};
 
 // An image with its per-pixel visibility keys: (depth32 << 32) | triangle id, or all ones where no
 // triangle covers the pixel. Keys are empty unless they were asked for (Renderer::renderWithKeys).
@@ -77,12 +83,13 @@ class PHONGVK_API PngEncoder {
   PngEncoder(PngEncoder&&) noexcept;
   PngEncoder& operator=(PngEncoder&&) noexcept;
 
-  // The PNG bytes, valid until the next call: colour type 2 (RGB), 6 (RGBA) or 0 (grey, 16 bits,
-  // samples big-endian as PNG stores them). Throws ArgumentError for an image whose size and pixel
+  // The PNG bytes, valid until the next call: colour type 2 (RGB), 6 (RGBA) or 0 (grey, 8 or 16
+  // bits, 16-bit samples big-endian as PNG stores them). Throws ArgumentError for an image whose size and pixel
   // count disagree.
   const std::vector<uint8_t>& encode(const Image& image);
   const std::vector<uint8_t>& encode(const ImageRGBA& image);
   const std::vector<uint8_t>& encode(const ImageGrey16& image);
+  const std::vector<uint8_t>& encode(const ImageGrey8& image);
   // Encodes and writes the file: atomically (a temporary file in the same folder, then a rename,
   // so a failed or interrupted write never leaves a partial file), through symbolic links, straight
   // into a character device such as /dev/null, to standard output for "-"; a FIFO, socket or block
@@ -91,6 +98,7 @@ class PHONGVK_API PngEncoder {
   void write(const std::string& path, const Image& image);
   void write(const std::string& path, const ImageRGBA& image);
   void write(const std::string& path, const ImageGrey16& image);
+  void write(const std::string& path, const ImageGrey8& image);
 
  private:
   struct State;
@@ -108,6 +116,8 @@ PHONGVK_API std::vector<uint8_t> encodePng(const ImageRGBA& image, int level = P
 PHONGVK_API void writePng(const std::string& path, const ImageRGBA& image, int level = PNG_LEVEL_DEFAULT);
 PHONGVK_API std::vector<uint8_t> encodePng(const ImageGrey16& image, int level = PNG_LEVEL_DEFAULT);
 PHONGVK_API void writePng(const std::string& path, const ImageGrey16& image, int level = PNG_LEVEL_DEFAULT);
+PHONGVK_API std::vector<uint8_t> encodePng(const ImageGrey8& image, int level = PNG_LEVEL_DEFAULT);
+PHONGVK_API void writePng(const std::string& path, const ImageGrey8& image, int level = PNG_LEVEL_DEFAULT);
 
 // Throws OutputError, naming the reason, when a file at `path` could not be written (its folder is
 // missing, not a folder or not writable, or the path is a folder, FIFO, socket or block device);
