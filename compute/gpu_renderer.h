@@ -88,7 +88,7 @@ struct GpuRendererOptions {
 
 class GpuRenderer {
  public:
-  // Uploads the scene's vertices, triangles and materials. Throws std::runtime_error when the
+  // Uploads the scene's vertices, triangles and materials. Throws DeviceError when the
   // scene does not fit the device's buffer limits (naming the limit), VulkanError otherwise.
   GpuRenderer(const VulkanContext& context, const SceneData& data, const GpuRendererOptions& options = {});
   ~GpuRenderer();

@@ -22,7 +22,7 @@ struct RenderTarget {
   VkImageView view = VK_NULL_HANDLE;
 };
 
-// `aspect` is COLOR or DEPTH. Throws std::runtime_error when the device cannot use `format` for
+// `aspect` is COLOR or DEPTH. Throws DeviceError when the device cannot use `format` for
 // `usage` with optimal tiling (naming the format), VulkanError otherwise.
 void createRenderTarget(RenderTarget& result, const VulkanContext& context, VkFormat format, uint32_t width,
                         uint32_t height, VkImageUsageFlags usage, VkImageAspectFlags aspect);

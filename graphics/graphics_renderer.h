@@ -15,7 +15,7 @@ namespace phongvk {
 
 class GraphicsRenderer {
  public:
-  // Uploads the scene once. Throws std::runtime_error naming the device limit a scene exceeds,
+  // Uploads the scene once. Throws DeviceError naming the device limit a scene exceeds,
   // VulkanError otherwise.
   GraphicsRenderer(const VulkanContext& context, const SceneData& data);
   ~GraphicsRenderer();

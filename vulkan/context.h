@@ -86,7 +86,7 @@ struct VulkanContext {
 
 // Creates the instance, picks a device (options.deviceIndex or the best suitable one), creates the
 // device with the features phongvk needs, a compute queue, a command pool and a fence.
-// Throws NoDeviceError when no (or not the requested) device is usable, std::runtime_error when
+// Throws NoDeviceError when no (or not the requested) device is usable, DeviceError when
 // validation was asked for but the layer is not installed, VulkanError on any other failure.
 VulkanContext createContext(const ContextOptions& options);
 
@@ -120,7 +120,7 @@ class ScopedContext {
   VulkanContext context;
 };
 
-// Throws std::runtime_error("scene too large for DEVICE: WHAT need NEED UNIT, more than
+// Throws DeviceError("scene too large for DEVICE: WHAT need NEED UNIT, more than
 // LIMIT_NAME (LIMIT)") when need > limit, the renderers' one message for an exceeded device limit
 // (`unit` may be empty).
 void checkDeviceLimit(const VulkanContext& context, const std::string& what, uint64_t need, const std::string& unit,
