@@ -15,7 +15,7 @@ bool needsKeys(const Outputs& outputs) {
 }
 
 RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& data, const FrameInputs& in,
-                             const Outputs& outputs) {
+                             const Outputs& outputs, const std::vector<int32_t>& objectIds) {
   const int width = out.image.width, height = out.image.height, samples = side * side, sampleWidth = width * side;
   const size_t pixels = size_t(width) * size_t(height);
   // Per pixel, the nearest of its samples (the smallest key), where it lies, and how many of them a
@@ -53,10 +53,16 @@ RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& dat
     frame.objectIds.resize(pixels);
     for (size_t i = 0; i < pixels; ++i) {
       const uint32_t triangle = visibility.triangle[i];  // the whole scene's index (a share's keys are offset)
-      frame.objectIds[i] = triangle == NO_TRIANGLE ? -1 : int32_t(data.triangles[triangle - data.triangleBase].w);
+      frame.objectIds[i] = triangle == NO_TRIANGLE ? -1 : objectIds[data.triangles[triangle - data.triangleBase].w];
     }
   }
   return frame;
+}
+
+std::vector<int32_t> objectIdsOf(const SceneSpec& scene) {
+  std::vector<int32_t> ids;
+  for (size_t i = 0; i < scene.objects.size(); ++i) ids.push_back(scene.objects[i].label.value_or(int32_t(i)));
+  return ids;
 }
 
 }  // namespace phongvk

@@ -36,15 +36,33 @@ std::string meshNotices(const SceneData& data) {
 }
 
 // RendererStats::notice for a scene just built and framed.
+// What messages call the scene: its model file, its scene file, or "the scene".
+std::string sceneName(const SceneSpec& spec) {
+  return spec.modelAlone && !spec.objects.empty() ? spec.objects[0].file
+         : spec.path.empty()                      ? std::string("the scene")
+                                                  : spec.path;
+}
+
 std::string noticeFor(const SceneSpec& spec, const SceneData& data, const CameraSpec& camera) {
   const std::string meshes = meshNotices(data);
   if (!camera.fit || !seenOnlyFromBehind(data, camera.position)) return meshes;
-  const std::string name = spec.modelAlone && !spec.objects.empty() ? spec.objects[0].file
-                           : spec.path.empty()                      ? std::string("the scene")
-                                                                    : spec.path;
-  return name + ": the fitted camera sees only the back of every triangle (their normals face away from it), so "
+  return sceneName(spec) + ": the fitted camera sees only the back of every triangle (their normals face away from it), so "
                 "the model is drawn dark, lit from behind; give the camera another direction or turn the faces" +
          (meshes.empty() ? "" : "; " + meshes);
+}
+
+// The frame's notice: the scene's (noticeFor, made when it was built), and, where the camera looks
+// away from every object (the box around them all lies behind its near plane, as a pose given in
+// the other convention does), that the image is empty and why.
+std::string frameNotice(const std::string& built, const SceneSpec& spec, const SceneData& data, const View& view) {
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? data.boundsMax.x : data.boundsMin.x, (corner & 2) ? data.boundsMax.y : data.boundsMin.y,
+                       (corner & 4) ? data.boundsMax.z : data.boundsMin.z);
+    if (glm::dot(p - view.eye, view.forward) > view.nearPlane) return built;
+  }
+  return sceneName(spec) + ": the camera looks away from every object (all of them lie behind it), so the image " +
+         "is empty; a camera pose given in the other convention (\"opengl\" looks down the pose's -z, \"opencv\" " +
+         "down its +z) looks the other way" + (built.empty() ? "" : "; " + built);
 }
 
 // The samples a frame of `spec` renders: its pixels times the samples per pixel (memory_estimate.h).
@@ -63,6 +81,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
     const size_t materials = data_->materials.size(), lights = data_->lights.size();
     refreshShading(*data_, spec);
     frame(spec);
+    notice_ = frameNotice(builtNotice_, spec, *data_, makeView(camera_));
     // A backend's buffers are sized for the counts it was built with.
     if (data_->materials.size() == materials && data_->lights.size() == lights) return;
   }
@@ -73,7 +92,8 @@ void Renderer::Impl::prepare(const Scene& scene) {
   data_ = buildSceneData(spec);
   checkBuiltSceneMemory(spec, data_->triangles.size(), samples, textureBytes(*data_));
   frame(spec);
-  notice_ = noticeFor(spec, *data_, camera_);
+  builtNotice_ = noticeFor(spec, *data_, camera_);
+  notice_ = frameNotice(builtNotice_, spec, *data_, makeView(camera_));
   buildMs_ += msSince(start);
   upload(*data_, boxClip(*data_, sampleView()));
   builtFrom_ = std::make_shared<const SceneSpec>(spec);
@@ -94,7 +114,8 @@ RenderedFrame Renderer::Impl::renderOutputs(const Scene& scene, const Outputs& o
   const bool keys = needsKeys(outputs);
   RenderOutput out = renderHeld(scene, keys, {});
   if (!keys) return {std::move(out.image)};
-  return outputsFromKeys(std::move(out), sampleGridSide(data_->samples), *data_, makeFrame(*data_, sampleView()), outputs);
+  return outputsFromKeys(std::move(out), sampleGridSide(data_->samples), *data_, makeFrame(*data_, sampleView()), outputs,
+                         objectIdsOf(SceneAccess::spec(scene)));
 }
 
 View Renderer::Impl::sampleView() const {
@@ -136,33 +157,40 @@ RendererStats Renderer::Impl::stats() const {
 Renderer::Renderer(Backend backend, int device) : Renderer(RendererOptions{backend, device, false}) {}
 Renderer::Renderer(const RendererOptions& options) : impl_(makeBackend(options)) {}
 Renderer::~Renderer() = default;
+
+void Renderer::close() { impl_.reset(); }
+
+Renderer::Impl& Renderer::live() const {
+  if (!impl_) throw ArgumentError("the renderer is closed: make a new one to render again");
+  return *impl_;
+}
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
-Image Renderer::render(const Scene& scene) { return impl_->render(scene, false).image; }
+Image Renderer::render(const Scene& scene) { return live().render(scene, false).image; }
 
-void Renderer::render(const Scene& scene, Image& image) { image = impl_->render(scene, false, std::move(image)).image; }
+void Renderer::render(const Scene& scene, Image& image) { image = live().render(scene, false, std::move(image)).image; }
 
 RenderOutput Renderer::renderWithKeys(const Scene& scene) {
-  if (impl_->backend() == Backend::Graphics) {
+  if (live().backend() == Backend::Graphics) {
     throw ArgumentError("the graphics backend has no visibility keys; use the gpu or cpu backend");
   }
-  return impl_->render(scene, true);
+  return live().render(scene, true);
 }
 
 RenderedFrame Renderer::renderOutputs(const Scene& scene, const Outputs& outputs) {
-  if (impl_->backend() == Backend::Graphics && needsKeys(outputs)) {
+  if (live().backend() == Backend::Graphics && needsKeys(outputs)) {
     throw ArgumentError("the graphics backend has no visibility keys, so no alpha, depth, ids or normals; use the gpu or cpu backend");
   }
-  return impl_->renderOutputs(scene, outputs);
+  return live().renderOutputs(scene, outputs);
 }
 
 std::vector<FrameTime> Renderer::timeFrames(const Scene& scene, int repeat) {
   std::vector<FrameTime> frames;
   Image storage;  // reused, as a sequence reuses its frames' images
   const FrameTimes times = phongvk::timeFrames(repeat, [&] {
-    storage = impl_->render(scene, false, std::move(storage)).image;
-    frames.push_back(impl_->lastFrameTime());
+    storage = live().render(scene, false, std::move(storage)).image;
+    frames.push_back(live().lastFrameTime());
     return frames.back().deviceMs;
   });
   frames.erase(frames.begin());  // the warm-up
@@ -170,9 +198,9 @@ std::vector<FrameTime> Renderer::timeFrames(const Scene& scene, int repeat) {
   return frames;
 }
 
-Backend Renderer::backend() const { return impl_->backend(); }
-std::string Renderer::deviceName() const { return impl_->deviceName(); }
-RendererStats Renderer::stats() const { return impl_->stats(); }
+Backend Renderer::backend() const { return live().backend(); }
+std::string Renderer::deviceName() const { return live().deviceName(); }
+RendererStats Renderer::stats() const { return live().stats(); }
 
 const char* backendName(Backend backend) {
   switch (backend) {

@@ -62,7 +62,8 @@ class Renderer::Impl {
   uint64_t framesRendered_ = 0;
   double buildMs_ = 0;
   double firstFrameMs_ = 0;  // RendererStats::firstFrameMs
-  std::string notice_;       // RendererStats::notice, set when a scene is built
+  std::string builtNotice_;  // what the scene's meshes and fitted camera call for, set when it is built
+  std::string notice_;       // RendererStats::notice: that, and what this frame's camera calls for
 };
 
 struct RendererAccess {

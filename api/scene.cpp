@@ -35,6 +35,13 @@ struct AddedMesh {
   bool closed = false;
   Matrix4 pose = IDENTITY_POSE;
   std::shared_ptr<const TextureImage> texture;  // the material's, held in memory (Material::textureImage)
+  int32_t label = 0;  // its id in the object_id output (Scene::objectId)
+};
+
+// A light given to addLight: it follows the scene into its other frames, as added meshes do.
+struct AddedLight {
+  LightId id;
+  Light light;
 };
 
 // Appends `added` to `spec` as a mesh object at its pose; `spec` is unchanged where it throws.
@@ -43,7 +50,18 @@ void appendAdded(SceneSpec& spec, const AddedMesh& added) {
   placeObject(check, added.pose);  // a bad pose throws before the scene changes
   addMeshObject(spec, added.mesh, added.material, added.closed, added.texture);
   placeObject(spec.objects.back(), added.pose);
+  spec.objects.back().label = added.label;
 }
+
+// `spec`'s lights with the added ones after them.
+std::vector<Light> withAddedLights(const SceneSpec& spec, const std::vector<AddedLight>& added) {
+  std::vector<Light> lights = lightsOf(spec);
+  for (const AddedLight& light : added) lights.push_back(light.light);
+  return lights;
+}
+
+// A light handle's tag beside its number: a scene's object and light handles never meet.
+constexpr uint64_t LIGHT_HANDLE = uint64_t(1) << 31;
 
 // Every scene's handles carry its serial, so that a handle one scene gave names nothing in another.
 std::atomic<uint64_t> nextSerial{1};
@@ -57,8 +75,10 @@ struct Scene::State {
   std::shared_ptr<SceneSpec> spec;                // shared with other states until one changes it
   std::shared_ptr<const SceneSequence> sequence;  // where frame() comes from; none for one frame
   std::vector<AddedMesh> added;                   // in the order they were added: the spec's last objects
+  std::vector<AddedLight> addedLights;            // likewise the spec's last lights
   uint64_t serial = nextSerial++;                 // a handle's upper 32 bits
   uint64_t nextObject = 1;                        // its lower 32 bits: each object's number in this scene
+  uint64_t nextLight = 1;                         // each light's, beside LIGHT_HANDLE
 
   // `state` made its scene's own to change: as it is where no other scene shares it, else a copy
   // with a serial of its own.
@@ -79,27 +99,34 @@ struct Scene::State {
     return *spec;
   }
 
-  // Where `id` is in `added`; RangeError for a handle this scene does not hold, saying whether it
-  // was removed or belongs to another scene.
-  size_t position(ObjectId id) const {
-    for (size_t i = 0; i < added.size(); ++i) {
-      if (added[i].id == id) return i;
+  // Where the handle `id` is in `list` (added or addedLights); RangeError for a handle this scene
+  // does not hold, saying whether it was removed or belongs to another scene.
+  template <typename Added, typename Id>
+  size_t position(const std::vector<Added>& list, Id id, const char* kind) const {
+    for (size_t i = 0; i < list.size(); ++i) {
+      if (list[i].id == id) return i;
     }
     const std::string at = spec->path.empty() ? "" : spec->path + ": ";
-    if (id.value >> 32 == serial)
-      throw RangeError(at + "object " + std::to_string(id.value) + " was removed from this scene");
-    throw RangeError(at + "object " + std::to_string(id.value) +
-                     " belongs to another scene (or was removed before this scene was copied)");
+    const std::string what = std::string(kind) + " " + std::to_string(id.value);
+    if (id.value >> 32 == serial) throw RangeError(at + what + " was removed from this scene");
+    throw RangeError(at + what + " belongs to another scene (or was removed before this scene was copied)");
   }
-  // The index in spec->objects of added[i].
+  size_t position(ObjectId id) const { return position(added, id, "object"); }
+  size_t position(LightId id) const { return position(addedLights, id, "light"); }
+  // The index in spec->objects of added[i], and in spec->lights of addedLights[i].
   size_t objectIndex(size_t i) const { return spec->objects.size() - added.size() + i; }
+  size_t lightIndex(size_t i) const { return spec->lights.size() - addedLights.size() + i; }
 
-  // Adds `mesh` with `material` as a scene file's "material"; unchanged where it throws.
+  // Adds `mesh` with `material` as a scene file's "material"; unchanged where it throws. Its id in
+  // the object_id output follows the scene's own objects, one number per add.
   ObjectId add(std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::Json material, bool closed,
                 std::shared_ptr<const TextureImage> texture = nullptr) {
-    if (nextObject >> 32) throw ArgumentError("a scene gives at most 2^32 - 1 handles");
+    const uint64_t ownObjects = spec->objects.size() - added.size();
+    if (nextObject >= LIGHT_HANDLE || ownObjects + nextObject > LIGHT_HANDLE)
+      throw ArgumentError("a scene gives at most 2^31 - 1 object ids");
     const ObjectId id{serial << 32 | nextObject};
-    AddedMesh placed{id, std::move(mesh), std::move(material), closed, pose, std::move(texture)};
+    const auto label = int32_t(ownObjects + nextObject - 1);
+    AddedMesh placed{id, std::move(mesh), std::move(material), closed, pose, std::move(texture), label};
     appendAdded(ownSpec(), placed);
     added.push_back(std::move(placed));
     ++nextObject;
@@ -205,6 +232,63 @@ void Scene::remove(ObjectId object) {
   state.added.erase(state.added.begin() + ptrdiff_t(i));
 }
 
+int32_t Scene::objectId(ObjectId object) const { return state_->added[state_->position(object)].label; }
+
+void Scene::setObjectId(ObjectId object, int32_t id) {
+  if (id < 0) throw ArgumentError("object_id: must be in 0..2147483647, got " + std::to_string(id));
+  const size_t i = state_->position(object);
+  State& state = State::own(state_);
+  state.ownSpec().objects[state.objectIndex(i)].label = id;
+  state.added[i].label = id;
+}
+
+void Scene::setMesh(ObjectId object, const TriangleMesh& mesh) {
+  const size_t i = state_->position(object);
+  State& state = State::own(state_);
+  state.added[i].mesh = TriangleMeshAccess::mesh(mesh);
+  state.ownSpec().objects[state.objectIndex(i)].arrays = state.added[i].mesh;
+}
+
+LightId Scene::addLight(const Light& light) {
+  if (state_->nextLight >= LIGHT_HANDLE) throw ArgumentError("a scene gives at most 2^31 - 1 light handles");
+  std::vector<Light> lights = lightsOf(*state_->spec);
+  lights.push_back(light);
+  SceneSpec spec = withLights(*state_->spec, lights);  // throws before the scene changes
+  State::replaceSpec(state_, std::move(spec));
+  State& state = *state_;
+  const LightId id{state.serial << 32 | LIGHT_HANDLE | state.nextLight++};
+  state.addedLights.push_back({id, light});
+  return id;
+}
+
+Light Scene::light(LightId light) const { return state_->addedLights[state_->position(light)].light; }
+
+void Scene::setLight(LightId light, const Light& value) {
+  setLightAt(state_->lightIndex(state_->position(light)), value);
+}
+
+void Scene::setLightAt(size_t index, const Light& value) {
+  std::vector<Light> lights = lightsOf(*state_->spec);
+  if (index >= lights.size()) {
+    throw RangeError((path().empty() ? "" : path() + ": ") + "light " + std::to_string(index) +
+                     " is out of range: the scene has " + std::to_string(lights.size()) + " lights");
+  }
+  lights[index] = value;
+  State::replaceSpec(state_, withLights(*state_->spec, lights));
+  State& state = *state_;
+  const size_t own = lights.size() - state.addedLights.size();
+  if (index >= own) state.addedLights[index - own].light = value;
+}
+
+void Scene::removeLight(LightId light) {
+  const size_t i = state_->position(light);
+  std::vector<Light> lights = lightsOf(*state_->spec);
+  lights.erase(lights.begin() + ptrdiff_t(state_->lightIndex(i)));
+  State::replaceSpec(state_, withLights(*state_->spec, lights));
+  State& state = *state_;
+  state.addedLights.erase(state.addedLights.begin() + ptrdiff_t(i));
+}
+
 namespace {
 
 // The meshes of `spec` built as a renderer builds them, after the renderer's memory check (a frame of
@@ -267,6 +351,7 @@ std::vector<Light> Scene::lights() const { return lightsOf(*state_->spec); }
 
 void Scene::setLights(const std::vector<Light>& lights) {
   State::replaceSpec(state_, withLights(*state_->spec, lights));
+  state_->addedLights.clear();  // every light handle retired
 }
 
 Vec3 Scene::ambient() const { return ambientOf(*state_->spec); }
@@ -287,6 +372,7 @@ Scene Scene::frame(int index) const {
   if (!state_->sequence) return *this;
   auto spec = std::make_shared<SceneSpec>(state_->sequence->frame(index));
   for (const AddedMesh& added : state_->added) appendAdded(*spec, added);
+  if (!state_->addedLights.empty()) *spec = withLights(*spec, withAddedLights(*spec, state_->addedLights));
   return state_->with(std::move(spec));
 }
 

@@ -22,6 +22,43 @@
 namespace py = pybind11;
 
 namespace phongvk::python {
+// A file path as Python gives one: a str or any os.PathLike (pathlib.Path) naming text.
+struct FsPath {
+  std::string text;
+};
+}  // namespace phongvk::python
+
+namespace pybind11::detail {
+template <>
+struct type_caster<phongvk::python::FsPath> {
+  PYBIND11_TYPE_CASTER(phongvk::python::FsPath, const_name("str | os.PathLike[str]"));
+  bool load(handle source, bool) {
+    if (!isinstance<str>(source) && !hasattr(source, "__fspath__")) return false;
+    const object text = module_::import("os").attr("fspath")(source);
+    if (!isinstance<str>(text)) return false;  // a bytes path
+    value.text = text.cast<std::string>();
+    return true;
+  }
+  static handle cast(const phongvk::python::FsPath& path, return_value_policy, handle) {
+    return str(path.text).release();
+  }
+};
+
+// Three numbers (a position, a colour) read back as a tuple, not a list: a list would take an item
+// assignment (camera.position[0] = 1) and change nothing; a tuple refuses it. Any sequence of
+// three numbers is taken.
+template <>
+struct type_caster<phongvk::Vec3> : array_caster<phongvk::Vec3, double, false, 3> {
+  template <typename T>
+  static handle cast(T&& src, return_value_policy policy, handle parent) {
+    const object items = reinterpret_steal<object>(
+        array_caster<phongvk::Vec3, double, false, 3>::cast(std::forward<T>(src), policy, parent));
+    return items ? tuple(items).release() : handle();
+  }
+};
+}  // namespace pybind11::detail
+
+namespace phongvk::python {
 namespace {
 
 // ---- arrays ----
@@ -40,7 +77,8 @@ py::array_t<uint8_t> imageArray(Image&& image) {
 }
 
 // read_png: the file's pixels in the form `mode` names.
-py::array pngArray(const std::string& path, const std::string& mode) {
+py::array pngArray(const FsPath& file, const std::string& mode) {
+  const std::string& path = file.text;
   if (mode == "rgb") return imageArray(readPng(path));
   if (mode == "rgba") {
     ImageRGBA image = readPngRGBA(path);
@@ -114,18 +152,34 @@ std::vector<T> valuesOf(const py::array& a, const char* name) {
 
 // What the PNG coder takes from Python: an (H, W, 3) or (H, W, 4) uint8 array (RGB, RGBA) or an
 // (H, W) uint16 array (16-bit grey), copied.
-using PngImage = std::variant<Image, ImageRGBA, ImageGrey16>;
+using PngImage = std::variant<Image, ImageRGBA, ImageGrey16, ImageGrey8>;
 
 constexpr const char* PNG_ARRAYS = "a uint8 array of shape (height, width, 3) or (height, width, 4), or a uint16 array "
                                    "of shape (height, width)";
+// write_png and encode_png take grey masks too.
+constexpr const char* PNG_WRITE_ARRAYS = "a uint8 array of shape (height, width, 3) or (height, width, 4), or a uint8, "
+                                         "uint16 or bool array of shape (height, width)";
+
+// A 2-D uint8 or bool array (bool as 0 and 255): an 8-bit grey image; else nothing.
+std::optional<ImageGrey8> grey8FromArray(const py::array& array, const char* name) {
+  const bool bools = array.dtype().kind() == 'b';
+  if (array.ndim() != 2 || !(bools || py::isinstance<py::array_t<uint8_t>>(array))) return std::nullopt;
+  if (array.shape(0) == 0 || array.shape(1) == 0)
+    throw py::value_error(std::string(name) + ": expected a non-empty array, got shape " + shapeText(array));
+  ImageGrey8 image{int(array.shape(1)), int(array.shape(0)), valuesOf<uint8_t>(array, name)};
+  if (bools) {
+    for (uint8_t& v : image.grey) v = v ? 255 : 0;
+  }
+  return image;
+}
 
 // ValueError naming `name` for an array that is not an image PNG_ARRAYS describes, or is empty.
-void checkPngArray(const py::array& array, const char* name) {
+void checkPngArray(const py::array& array, const char* name, const char* expected = PNG_ARRAYS) {
   const std::string shape = shapeText(array);
   const bool bytes = py::isinstance<py::array_t<uint8_t>>(array), words = py::isinstance<py::array_t<uint16_t>>(array);
   const py::ssize_t channels = array.ndim() == 3 ? array.shape(2) : 0;
   if (!(bytes && (channels == 3 || channels == 4)) && !(words && array.ndim() == 2)) {
-    throw py::value_error(std::string(name) + ": expected " + PNG_ARRAYS + ", got " +
+    throw py::value_error(std::string(name) + ": expected " + expected + ", got " +
                           std::string(py::str(array.dtype())) + " of shape " + shape);
   }
   if (array.shape(0) == 0 || array.shape(1) == 0) {
@@ -135,7 +189,8 @@ void checkPngArray(const py::array& array, const char* name) {
 
 // `array`, the argument `name`, as the image it holds (ValueError where checkPngArray refuses it).
 PngImage pngImageFromArray(const py::array& array, const char* name) {
-  checkPngArray(array, name);
+  if (std::optional<ImageGrey8> grey = grey8FromArray(array, name)) return std::move(*grey);
+  checkPngArray(array, name, PNG_WRITE_ARRAYS);
   const int w = int(array.shape(1)), h = int(array.shape(0));
   if (array.ndim() == 2) return ImageGrey16{w, h, valuesOf<uint16_t>(array, name)};
   if (array.shape(2) == 4) return ImageRGBA{w, h, valuesOf<uint8_t>(array, name)};
@@ -203,17 +258,62 @@ std::vector<float> uvRows(const py::object& uvs) {
   return valuesOf<float>(a, "uvs");
 }
 
+// Vertex colours: an (N, 3) or (N, 4) array, of integers 0..255 (uint8, say) or of floats 0..1
+// (rounded to the nearest of 256 steps), as RGBA8 rows (alpha 255 where not given). ValueError
+// naming "colors" and the first bad row.
+std::vector<uint8_t> colorRows(const py::object& colors, py::ssize_t vertices) {
+  const py::array a = numberArray(colors, "colors", "an array of shape (N, 3) or (N, 4)");
+  if (a.ndim() != 2 || (a.shape(1) != 3 && a.shape(1) != 4))
+    throw py::value_error("colors: expected shape (N, 3) or (N, 4), got " + shapeText(a));
+  if (a.shape(0) != vertices)
+    throw py::value_error("colors: expected one row per vertex (" + std::to_string(vertices) + "), got " +
+                          std::to_string(a.shape(0)));
+  const bool floats = a.dtype().kind() == 'f';
+  const std::vector<double> values = valuesOf<double>(a, "colors");
+  const size_t channels = size_t(a.shape(1));
+  std::vector<uint8_t> rgba;
+  rgba.reserve(size_t(vertices) * 4);
+  for (size_t i = 0; i < values.size(); ++i) {
+    const double v = values[i], top = floats ? 1.0 : 255.0;
+    if (!(v >= 0 && v <= top))
+      throw py::value_error("colors: row " + std::to_string(i / channels) + " has " + std::string(py::str(py::float_(v))) + ", outside 0.." +
+                            (floats ? "1 (floats)" : "255 (integers)"));
+    rgba.push_back(uint8_t(floats ? std::lround(v * 255.0) : v));
+    if (channels == 3 && i % 3 == 2) rgba.push_back(255);
+  }
+  return rgba;
+}
+
+// A trimesh-like object's vertex colours and texture coordinates, where its `visual` has them:
+// visual.kind "vertex" with visual.vertex_colors, or visual.uv (trimesh's v runs up from the
+// bottom; phongvk's from the top, so v becomes 1 - v).
+void visualArrays(const py::object& object, MeshArrays& mesh, bool uvsGiven, bool colorsGiven) {
+  if (!py::hasattr(object, "visual")) return;
+  const py::object visual = object.attr("visual");
+  const py::ssize_t vertices = py::ssize_t(mesh.positions.size() / 3);
+  if (!colorsGiven && py::hasattr(visual, "kind") && py::str(visual.attr("kind")).cast<std::string>() == "vertex" &&
+      py::hasattr(visual, "vertex_colors"))
+    mesh.colors = colorRows(visual.attr("vertex_colors"), vertices);
+  if (!uvsGiven && py::hasattr(visual, "uv") && !visual.attr("uv").is_none()) {
+    mesh.uvs = uvRows(visual.attr("uv"));
+    for (size_t i = 1; i < mesh.uvs.size(); i += 2) mesh.uvs[i] = 1.0f - mesh.uvs[i];
+  }
+}
+
 // The arrays of a mesh: vertices and faces, or (faces None) one object with .vertices and .faces
-// arrays (a trimesh.Trimesh, say); texture coordinates if given.
+// arrays (a trimesh.Trimesh, say, whose visual's vertex colours and uvs come too); texture
+// coordinates and vertex colours if given.
 MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const py::object& normals,
-                      const py::object& uvs = py::none()) {
+                      const py::object& uvs = py::none(), const py::object& colors = py::none()) {
   if (faces.is_none()) {
     if (!py::hasattr(vertices, "vertices") || !py::hasattr(vertices, "faces")) {
       throw py::type_error("add_mesh: expected vertices and faces, a phongvk.Mesh, or one object with .vertices "
                            "and .faces arrays (a trimesh.Trimesh, for one), got " +
                            std::string(py::str(py::type::of(vertices).attr("__name__"))));
     }
-    return meshArrays(vertices.attr("vertices"), vertices.attr("faces"), normals, uvs);
+    MeshArrays mesh = meshArrays(vertices.attr("vertices"), vertices.attr("faces"), normals, uvs, colors);
+    visualArrays(vertices, mesh, !uvs.is_none(), !colors.is_none());
+    return mesh;
   }
   const py::array vertexArray = asArray(vertices, "vertices", true);
   MeshArrays mesh;
@@ -228,6 +328,7 @@ MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const
     }
   }
   if (!uvs.is_none()) mesh.uvs = uvRows(uvs);
+  if (!colors.is_none()) mesh.colors = colorRows(colors, vertexArray.shape(0));
   return mesh;
 }
 
@@ -361,34 +462,70 @@ std::optional<Material> materialOf(const py::object& material) {
 
 // What add and add_mesh place: a phongvk.Mesh as it is (shared, built once), or arrays built now.
 TriangleMesh meshOf(const py::object& vertices, const py::object& faces, const py::object& normals,
-                    const py::object& uvs = py::none()) {
-  if (!py::isinstance<TriangleMesh>(vertices)) return TriangleMesh(meshArrays(vertices, faces, normals, uvs));
-  if (!faces.is_none() || !normals.is_none() || !uvs.is_none())
-    throw py::type_error("faces, normals and uvs: not given with a phongvk.Mesh, which has its own");
+                    const py::object& uvs = py::none(), const py::object& colors = py::none()) {
+  if (!py::isinstance<TriangleMesh>(vertices)) return TriangleMesh(meshArrays(vertices, faces, normals, uvs, colors));
+  if (!faces.is_none() || !normals.is_none() || !uvs.is_none() || !colors.is_none())
+    throw py::type_error("faces, normals, uvs and colors: not given with a phongvk.Mesh, which has its own");
   return vertices.cast<TriangleMesh>();
 }
 
-unsigned long long addPlaced(Scene& scene, const TriangleMesh& mesh, const Matrix4& pose, const py::object& material,
-                             bool closed) {
-  if (py::isinstance<py::str>(material)) return scene.add(mesh, pose, material.cast<std::string>(), closed).value;
-  return scene.add(mesh, pose, materialOf(material), closed).value;
+// A trimesh-like object's texture image (visual.material.image, or a PBR material's
+// baseColorTexture: a PIL image or an array), as the material of an object added without one.
+std::optional<Material> visualMaterial(const py::object& object) {
+  if (!py::hasattr(object, "visual") || !py::hasattr(object.attr("visual"), "material")) return std::nullopt;
+  const py::object material = object.attr("visual").attr("material");
+  for (const char* name : {"image", "baseColorTexture"}) {
+    if (!py::hasattr(material, name) || material.attr(name).is_none()) continue;
+    Material textured;
+    textured.textureImage = textureOfArray(numberArray(material.attr(name), "visual.material.image", PNG_ARRAYS),
+                                           "visual.material.image");
+    return textured;
+  }
+  return std::nullopt;
+}
+
+// Adds `mesh` at `pose`; `object` is what the caller gave (a trimesh-like object's texture serves
+// when no material is given), `objectId` the object_id output's number if given.
+unsigned long long addPlaced(Scene& scene, const TriangleMesh& mesh, const py::object& object, const Matrix4& pose,
+                             const py::object& material, bool closed, std::optional<int32_t> objectId) {
+  ObjectId id;
+  if (py::isinstance<py::str>(material)) {
+    id = scene.add(mesh, pose, material.cast<std::string>(), closed);
+  } else {
+    const std::optional<Material> given = materialOf(material);
+    id = scene.add(mesh, pose, given ? given : visualMaterial(object), closed);
+  }
+  if (objectId) {
+    try {
+      scene.setObjectId(id, *objectId);
+    } catch (...) {
+      scene.remove(id);  // the scene as it was
+      throw;
+    }
+  }
+  return id.value;
 }
 
 void addMesh(Scene& scene, const py::object& vertices, const py::object& faces, const py::object& normals,
-             const py::object& material, bool closed, const py::object& uvs) {
-  addPlaced(scene, meshOf(vertices, faces, normals, uvs), IDENTITY_POSE, material, closed);
+             const py::object& material, bool closed, const py::object& uvs, const py::object& colors,
+             std::optional<int32_t> objectId) {
+  addPlaced(scene, meshOf(vertices, faces, normals, uvs, colors), vertices, IDENTITY_POSE, material, closed, objectId);
 }
 
 unsigned long long addObject(Scene& scene, const py::object& object, const py::object& faces, const py::object& pose,
-                             const py::object& material, bool closed) {
-  const TriangleMesh mesh = meshOf(object, faces, py::none());
-  return addPlaced(scene, mesh, matrix4(pose, "pose"), material, closed);
+                             const py::object& material, bool closed, const py::object& normals, const py::object& uvs,
+                             const py::object& colors, std::optional<int32_t> objectId) {
+  const TriangleMesh mesh = meshOf(object, faces, normals, uvs, colors);
+  return addPlaced(scene, mesh, object, matrix4(pose, "pose"), material, closed, objectId);
 }
 
-TriangleMesh meshFromFile(const std::string& path, const std::optional<std::string>& up) {
+// A handle as the scene's object or light handle it is (Scene.remove takes either).
+bool isLightHandle(unsigned long long handle) { return handle & (1ull << 31); }
+
+TriangleMesh meshFromFile(const FsPath& path, const std::optional<std::string>& up) {
   const ModelUp axis = up ? parseModelUp(*up) : ModelUp::Usual;
   py::gil_scoped_release release;
-  return TriangleMesh::fromFile(path, axis);
+  return TriangleMesh::fromFile(path.text, axis);
 }
 
 // `scene` with_render(settings, **options): `settings` (a phongvk.RenderSettings, a dict of its
@@ -624,10 +761,11 @@ from the image's top to its bottom) makes it an orthographic camera, fov then un
             return cameraFromIntrinsics(fx, fy, cx, cy, width, height, matrix4(pose, "pose"), convention(conventionName));
           },
           py::arg("fx"), py::arg("fy"), py::arg("cx"), py::arg("cy"), py::arg("width"), py::arg("height"),
-          py::arg("pose") = py::none(), py::arg("convention") = "opencv",
+          py::arg("pose") = py::none(), py::arg("convention") = "opengl",
           R"(The camera of pinhole intrinsics (pixels, OpenCV's convention: pixel centres at integer
 coordinates, so the centre is ((width - 1) / 2, (height - 1) / 2)) and a (4, 4) camera-to-world pose
-(identity when None). fx and fy may differ; the principal point (cx, cy) may lie off centre, or
+(identity when None) in the convention every pose-taking call defaults to, "opengl" (as from_pose;
+datasets with intrinsics often give "opencv" poses: say so). fx and fy may differ; the principal point (cx, cy) may lie off centre, or
 outside the image within 16384 pixels of it. A focal length that is not positive raises ValueError.)")
       .def("__eq__", [](const Camera& a, const Camera& b) { return a == b; }, py::is_operator())
       .def("__repr__", [](const Camera& c) {
@@ -769,13 +907,14 @@ scene takes the settings (Scene.render_settings, with_render), like a scene file
       });
 
   py::class_<TriangleMesh>(m, "Mesh", R"(A triangle mesh built once, which Scene.add and add_mesh place as many
-times as asked without building or holding it again: Mesh(vertices, faces, normals=None, uvs=None) from
-arrays (or one object with .vertices and .faces, a trimesh.Trimesh), checked as add_mesh checks
-them, or Mesh.from_file(path, up=None) from an OBJ, PLY, STL, glTF or GLB file.)")
-      .def(py::init([](const py::object& vertices, const py::object& faces, const py::object& normals, const py::object& uvs) {
-             return TriangleMesh(meshArrays(vertices, faces, normals, uvs));
-           }),
-           py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none(), py::arg("uvs") = py::none())
+times as asked without building or holding it again: Mesh(vertices, faces, normals=None, uvs=None,
+colors=None) from arrays (or one object with .vertices and .faces, a trimesh.Trimesh, whose
+visual's vertex colours and uvs come with it), checked as add_mesh checks them, or
+Mesh.from_file(path, up=None) from an OBJ, PLY, STL, glTF or GLB file.)")
+      .def(py::init([](const py::object& vertices, const py::object& faces, const py::object& normals, const py::object& uvs,
+                       const py::object& colors) { return TriangleMesh(meshArrays(vertices, faces, normals, uvs, colors)); }),
+           py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none(), py::arg("uvs") = py::none(),
+           py::arg("colors") = py::none())
       .def_static("from_file", &meshFromFile, py::arg("path"), py::arg("up") = py::none(),
                   R"(A mesh file read as a model rendered alone reads it: stood up by up ("y" or "z"; None: the
 format's usual axis, y for glTF and OBJ, z for PLY and STL), a glTF's base colours as vertex colours,
@@ -815,6 +954,7 @@ RenderSettings' (shading, specular, interpolation, samples, background). Checked
                     "file's \"render\" and \"background\".")
       .def("add_mesh", &addMesh, py::arg("vertices"), py::arg("faces") = py::none(), py::arg("normals") = py::none(),
            py::arg("material") = py::none(), py::arg("closed") = false, py::arg("uvs") = py::none(),
+           py::arg("colors") = py::none(), py::arg("object_id") = py::none(),
            R"(Adds a triangle mesh object; it follows the scene into its other frames (frame(i)).
 
 vertices: (N, 3) floating-point array of world positions (or rows of 3 numbers), or, with
@@ -831,23 +971,69 @@ material: None (the scene's default material: Material() in a Scene(width, heigh
 closed: True if the mesh is a closed surface whose back faces may be culled.
 uvs: optional (N, 2) array of texture coordinates, (0, 0) the texture's top-left corner and
     (1, 1) its bottom-right: what the material's texture (Material(texture=...)) is sampled with.
+colors: optional (N, 3) or (N, 4) vertex colours, integers 0..255 (uint8) or floats 0..1, that
+    multiply the material's colour (alpha is kept, not drawn). A trimesh-like object brings its
+    own: visual.vertex_colors where visual.kind is "vertex", visual.uv (v flipped: trimesh's v
+    runs up) and, with no material given, visual.material's image as the texture.
+object_id: the object's number in the object_id output (0..2^31-1, shared by several objects
+    if wanted); by default the next of the scene's ids, kept for the scene's life.
 
 A wrong shape or dtype, a non-finite value or an index out of range raises ValueError naming the
 argument and the first bad row; a bad material raises SceneError.)")
       .def("add", &addObject, py::arg("mesh"), py::arg("faces") = py::none(), py::kw_only(),
            py::arg("pose") = py::none(), py::arg("material") = py::none(), py::arg("closed") = false,
+           py::arg("normals") = py::none(), py::arg("uvs") = py::none(), py::arg("colors") = py::none(),
+           py::arg("object_id") = py::none(),
            R"(Adds a mesh placed by a (4, 4) local-to-world pose (identity when None) and returns its
-handle, for set_pose and remove. mesh: a phongvk.Mesh (built once: placing it many times builds
-and holds it once), one object with .vertices and .faces arrays (a trimesh.Trimesh works), or
-vertices with faces; material and closed as in add_mesh.)")
+handle, for set_pose, set_mesh, object_id and remove. mesh: a phongvk.Mesh (built once: placing it
+many times builds and holds it once), one object with .vertices and .faces arrays (a
+trimesh.Trimesh works, with its vertex colours, uvs and texture), or vertices with faces;
+material, closed, normals, uvs, colors and object_id as in add_mesh.)")
       .def(
           "set_pose", [](Scene& s, unsigned long long id, const py::object& pose) { s.setPose(ObjectId{id}, matrix4(pose, "pose")); },
           py::arg("object"), py::arg("pose"),
           "Moves an object added with add(). IndexError for a handle this scene does not hold: one removed, or "
           "one another scene gave (handles are unique to the scene that gave them).")
       .def(
-          "remove", [](Scene& s, unsigned long long id) { s.remove(ObjectId{id}); }, py::arg("object"),
-          "Takes out an object added with add() (IndexError for a handle this scene does not hold, as set_pose).")
+          "set_mesh",
+          [](Scene& s, unsigned long long id, const py::object& mesh, const py::object& faces, const py::object& normals,
+             const py::object& uvs, const py::object& colors) {
+            s.setMesh(ObjectId{id}, meshOf(mesh, faces, normals, uvs, colors));
+          },
+          py::arg("object"), py::arg("mesh"), py::arg("faces") = py::none(), py::kw_only(), py::arg("normals") = py::none(),
+          py::arg("uvs") = py::none(), py::arg("colors") = py::none(),
+          "Replaces an added object's geometry (what add() takes as mesh) in place: its handle, object_id, pose, "
+          "material and closed stay.")
+      .def(
+          "object_id", [](const Scene& s, unsigned long long id) { return s.objectId(ObjectId{id}); }, py::arg("object"),
+          "The number an object added with add() has in the object_id output: stable for the scene's life, "
+          "whatever is removed or added after it.")
+      .def(
+          "set_object_id", [](Scene& s, unsigned long long id, int32_t value) { s.setObjectId(ObjectId{id}, value); },
+          py::arg("object"), py::arg("object_id"),
+          "Gives an added object your own number in the object_id output (0..2^31-1; objects may share one).")
+      .def(
+          "add_light", [](Scene& s, const Light& light) { return s.addLight(light).value; }, py::arg("light"),
+          "Adds a light (a phongvk.Light, checked like a scene file's) after the scene's lights and returns its "
+          "handle, for light, set_light and remove. It follows the scene into its other frames.")
+      .def(
+          "light", [](const Scene& s, unsigned long long id) { return s.light(LightId{id}); }, py::arg("light"),
+          "The light a handle from add_light names (IndexError for one this scene does not hold).")
+      .def(
+          "set_light", [](Scene& s, unsigned long long id, const Light& light) { s.setLight(LightId{id}, light); },
+          py::arg("light"), py::arg("value"), "Replaces the light a handle from add_light names.")
+      .def(
+          "_set_light_at", [](Scene& s, size_t index, const Light& light) { s.setLightAt(index, light); },
+          py::arg("index"), py::arg("value"), "The light at `index` of lights replaced, its handle kept.")
+      .def(
+          "remove",
+          [](Scene& s, unsigned long long id) {
+            if (isLightHandle(id)) return s.removeLight(LightId{id});
+            s.remove(ObjectId{id});
+          },
+          py::arg("handle"),
+          "Takes out an object added with add() or a light added with add_light() (IndexError for a handle this "
+          "scene does not hold, as set_pose).")
       .def_property_readonly("bounds", &Scene::bounds,
                              "The world box around every object's vertices, as built: (min, max), each (x, y, z). "
                              "Builds the meshes to know; SceneError first for a scene beyond the memory limit, as rendering it.")
@@ -895,8 +1081,8 @@ phongvk.scene_from_dict(scene.to_dict()) renders the same bytes.)")
 
   m.def(
       "load_scene",
-      [](const std::string& path, std::optional<std::string> up, std::optional<std::string> projection) {
-        return loadScene(path, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual,
+      [](const FsPath& path, std::optional<std::string> up, std::optional<std::string> projection) {
+        return loadScene(path.text, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual,
                                            projection ? std::optional<bool>(parseOrthographic(*projection)) : std::nullopt});
       },
       py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = py::none(),
@@ -990,6 +1176,9 @@ same buffers; the graphics backend has none (ValueError).)")
           "with the numbers `phongvk diff` prints and its text as \"report\").")
       .def_property_readonly("backend", [](const Renderer& r) { return backendName(r.backend()); },
                              "The backend's name.")
+      .def("close", &Renderer::close,
+           "Frees the renderer's device, buffers and pipelines now (also at the end of a `with` block); "
+           "calls after it raise ArgumentError.")
       .def_property_readonly("device_name", &Renderer::deviceName,
                              "The Vulkan device's name, or 'cpu (reference)'.")
       .def_property_readonly("stats", [](const Renderer& r) { return statsDict(r.stats()); },
@@ -1020,13 +1209,14 @@ same buffers; the graphics backend has none (ValueError).)")
 by key: the numbers `phongvk diff` prints, as a dict (width, height, pixels, differing, max_abs,
 mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as "report".)");
 
-  m.def("write_png", [](const std::string& path, const py::array& image, int level) {
+  m.def("write_png", [](const FsPath& path, const py::array& image, int level) {
     const PngImage pixels = pngImageFromArray(image, "image");
     const py::gil_scoped_release release;
-    std::visit([&](const auto& any) { writePng(path, any, level); }, pixels);
+    std::visit([&](const auto& any) { writePng(path.text, any, level); }, pixels);
   }, py::arg("path"), py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
         "Writes an image array as a PNG, atomically (no partial file): (height, width, 3) uint8 as RGB, "
-        "(height, width, 4) uint8 as RGBA, (height, width) uint16 as 16-bit grey (a depth in millimetres, ids). "
+        "(height, width, 4) uint8 as RGBA, (height, width) uint16 as 16-bit grey (a depth in millimetres, ids), "
+        "(height, width) uint8 as 8-bit grey and bool as 0 and 255 (a mask). path: str or os.PathLike. "
         "level: deflate level, 0 (stored) to 12 (smallest); the same pixels at every level. Raises OutputError, "
         "or ValueError for another array or a level out of range.");
   m.def("read_png", &pngArray, py::arg("path"), py::arg("mode") = "rgb",
@@ -1038,7 +1228,7 @@ mean_abs, psnr, triangle_mismatch, identical_fraction, device), and its text as 
     return py::bytes(reinterpret_cast<const char*>(png.data()), png.size());
   }, py::arg("image"), py::arg("level") = PNG_LEVEL_DEFAULT,
         "An image array as PNG bytes, deflated at `level` (0 to 12): (height, width, 3) uint8 as RGB, "
-        "(height, width, 4) uint8 as RGBA, (height, width) uint16 as 16-bit grey.");
+        "(height, width, 4) uint8 as RGBA, (height, width) uint16 as 16-bit grey, (height, width) uint8 or bool (0 and 255) as 8-bit grey.");
   m.attr("PNG_LEVEL_DEFAULT") = PNG_LEVEL_DEFAULT;
   m.def("devices", [] {
     py::list list;

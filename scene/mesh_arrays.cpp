@@ -36,6 +36,13 @@ void checkUvs(const std::vector<float>& uvs, size_t vertices) {
   }
 }
 
+// Vertex colours: four bytes a vertex, or none.
+void checkColors(const std::vector<uint8_t>& colors, size_t vertices) {
+  if (!colors.empty() && colors.size() != 4 * vertices)
+    throw ArgumentError("colors: expected one row [r, g, b, a] per vertex (" + std::to_string(vertices) + "), got " +
+                        std::to_string(colors.size() / 4) + (colors.size() % 4 ? " and a part" : ""));
+}
+
 void checkCounts(const MeshArrays& a) {
   if (a.positions.size() % 3 != 0 || a.triangles.size() % 3 != 0 || a.normals.size() % 3 != 0) {
     throw ArgumentError("vertices, faces and normals hold 3 values a row");
@@ -86,7 +93,12 @@ Mesh meshFromArrays(const MeshArrays& a) {
   const size_t vertices = a.positions.size() / 3;
   checkIndices(a.triangles, vertices);
   checkUvs(a.uvs, vertices);
+  checkColors(a.colors, vertices);
   Mesh mesh;
+  for (size_t v = 0; v < a.colors.size() / 4; ++v) {
+    const uint8_t* c = &a.colors[4 * v];
+    mesh.colors.push_back(uint32_t(c[0]) | uint32_t(c[1]) << 8 | uint32_t(c[2]) << 16 | uint32_t(c[3]) << 24);
+  }
   for (size_t v = 0; v < a.uvs.size() / 2; ++v) mesh.uvs.push_back(glm::vec2(a.uvs[2 * v], a.uvs[2 * v + 1]));
   if (!mesh.uvs.empty()) mesh.textureIds.assign(vertices, gpu::TEXTURE_NONE);  // the material's texture
   for (size_t v = 0; v < vertices; ++v) mesh.positions.push_back(glm::vec3(rowOf(a.positions, v)));

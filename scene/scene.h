@@ -133,6 +133,9 @@ struct Object {
   glm::dmat3 rotation{1.0};
   int material = 0;                  // index into SceneSpec::materials
   bool closed = true;                // back faces culled; primitives true, meshes default false
+  // What the object_id output says for it ("object_id" in the file): its index in the scene's
+  // objects where unset. Scene::add gives each added object one for the scene's life.
+  std::optional<int32_t> label;
   std::string jsonPath;              // "objects[3]", for error messages downstream
 };
 

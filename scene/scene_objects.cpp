@@ -7,11 +7,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kObjectKeys = {"shape", "material", "subdivide", "closed", "scale", "rotate"};  // every shape
+const Keys kObjectKeys = {"shape", "material", "subdivide", "closed", "scale", "rotate", "object_id"};  // every shape
 
 struct ShapeInfo {
   Shape shape;
@@ -192,6 +193,7 @@ Object readObject(const Node& node, const std::string& baseDir, MaterialTable& m
   readTransform(node, object);
   if (auto subdivide = node.find("subdivide")) object.subdivide = integer(*subdivide, 0, 10);
   if (auto closed = node.find("closed")) object.closed = boolean(*closed);
+  if (auto label = node.find("object_id")) object.label = integer(*label, 0, std::numeric_limits<int32_t>::max());
   object.baseColors = takesBaseColors(node, object);
   object.material = objectMaterial(node, object, materials);
   return object;

@@ -166,6 +166,7 @@ Json objectJson(const SceneSpec& scene, const Object& object) {
   json["subdivide"] = object.subdivide;
   json["closed"] = object.closed;
   json["material"] = objectMaterialJson(scene, object);
+  if (object.label) json["object_id"] = *object.label;
   return json;
 }
 

@@ -215,7 +215,7 @@ TEST(Api, TypedCameraLightsAndPosesRenderAsTheSameSceneWritten) {
   EXPECT_EQ(built.lights().size(), 2u);
   EXPECT_THROW(built.setCamera(Camera{{0, 0, 3}, {0, 0, 0}, {0, 0, 1}, 45, 96, 64}), SceneError);  // up along the view
   EXPECT_THROW(cameraFromIntrinsics(0, 120, 47.5, 31.5, 96, 64, IDENTITY_POSE), ArgumentError);
-  const Camera fromIntrinsics = cameraFromIntrinsics(100, 120, 40.25, 35, 96, 64, IDENTITY_POSE);
+  const Camera fromIntrinsics = cameraFromIntrinsics(100, 120, 40.25, 35, 96, 64, IDENTITY_POSE, PoseConvention::OpenCV);
   EXPECT_EQ(fromIntrinsics.intrinsics, (Intrinsics{100, 120, 40.25, 35}));
   EXPECT_EQ(fromIntrinsics.lookAt, (Vec3{0, 0, 1}));  // OpenCV: the camera looks down its +z
   EXPECT_EQ(fromIntrinsics.up, (Vec3{0, -1, 0}));     // and its y points down

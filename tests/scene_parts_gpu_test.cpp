@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -228,6 +229,99 @@ TEST_F(SceneParts, BadRenderSettingsFailWithTheFilesMessage) {
             "SceneError: render.shading: must be one of gouraud, flat, phong, got ''");
   EXPECT_EQ(failure([&] { built(Material{}).withRender({.background = {NAN, 0, 0}}); }),
             "ArgumentError: background[0]: must be finite, got nan");
+}
+
+// Each pixel's object id in a frame of `scene`, on both backends (which must agree).
+std::vector<int32_t> objectIdsOf(const Scene& scene) {
+  const RenderedFrame cpu = Renderer(Backend::Cpu).renderOutputs(scene, {.objectIds = true});
+  const RenderedFrame gpu = Renderer(Backend::Gpu).renderOutputs(scene, {.objectIds = true});
+  EXPECT_EQ(cpu.objectIds, gpu.objectIds);
+  std::vector<int32_t> ids = cpu.objectIds;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
+Matrix4 translated(double x) {
+  Matrix4 pose = IDENTITY_POSE;
+  pose[3] = x;
+  return pose;
+}
+
+TEST(SceneHandles, ObjectIdsStayWithTheirObjectsAndTravelWithTheText) {
+  Scene scene(96, 64);
+  MeshArrays small = octahedron();
+  for (float& p : small.positions) p *= 0.5f;
+  const ObjectId a = scene.add(small, translated(-1)), b = scene.add(small), c = scene.add(small, translated(1));
+  EXPECT_EQ(scene.objectId(a), 0);
+  EXPECT_EQ(scene.objectId(c), 2);
+  scene.remove(b);
+  const ObjectId d = scene.add(small, translated(0.2));
+  EXPECT_EQ(scene.objectId(d), 3);
+  EXPECT_EQ(objectIdsOf(scene), (std::vector<int32_t>{-1, 0, 2, 3}));
+  scene.setObjectId(c, 9);
+  EXPECT_EQ(objectIdsOf(scene), (std::vector<int32_t>{-1, 0, 3, 9}));
+  EXPECT_EQ(objectIdsOf(parseScene(scene.toJson())), (std::vector<int32_t>{-1, 0, 3, 9}));
+  EXPECT_THROW(scene.setObjectId(a, -1), ArgumentError);
+  EXPECT_THROW(scene.objectId(b), RangeError);
+}
+
+TEST(SceneHandles, SetMeshKeepsTheObjectsPlaceAndId) {
+  Scene swapped(96, 64), direct(96, 64);
+  MeshArrays small = octahedron();
+  for (float& p : small.positions) p *= 0.5f;
+  const ObjectId id = swapped.add(small, translated(0.5));
+  swapped.setMesh(id, TriangleMesh(octahedron()));
+  direct.add(octahedron(), translated(0.5));
+  EXPECT_EQ(Renderer(Backend::Cpu).render(swapped).rgb, Renderer(Backend::Gpu).render(direct).rgb);
+  EXPECT_EQ(swapped.objectId(id), 0);
+}
+
+TEST(SceneHandles, LightsAddedByHandleAreChangedAndRemovedByIt) {
+  Scene scene(96, 64);
+  scene.add(octahedron());
+  const LightId red = scene.addLight({.position = {2, -3, 2}, .color = {1, 0, 0}});
+  const LightId blue = scene.addLight({.position = {-2, -3, 2}, .color = {0, 0, 1}});
+  EXPECT_EQ(scene.lightCount(), 3u);
+  scene.removeLight(red);
+  EXPECT_EQ(scene.light(blue).color, (Vec3{0, 0, 1}));
+  scene.setLight(blue, {.position = {-2, -3, 2}, .intensity = 2});
+  EXPECT_EQ(scene.lights()[1].intensity, 2);
+  scene.setLightAt(0, {.position = {0, -4, 0}});
+  EXPECT_EQ(scene.light(blue).intensity, 2);  // the handle's light kept its place
+  EXPECT_THROW(scene.light(red), RangeError);
+  EXPECT_THROW(scene.setLightAt(5, {}), RangeError);
+  EXPECT_THROW(scene.addLight({.intensity = NAN}), ArgumentError);
+  EXPECT_EQ(scene.lightCount(), 2u);
+  Scene written = parseScene(scene.toJson());
+  EXPECT_EQ(Renderer(Backend::Cpu).render(scene).rgb, Renderer(Backend::Gpu).render(written).rgb);
+  scene.setLights({Light{}});
+  EXPECT_THROW(scene.light(blue), RangeError);  // setLights retires every handle
+}
+
+TEST(SceneHandles, VertexColoursFromArraysMultiplyTheMaterial) {
+  MeshArrays coloured = octahedron();
+  for (int v = 0; v < 6; ++v) coloured.colors.insert(coloured.colors.end(), {255, uint8_t(40 * v), 0, 255});
+  Scene scene(96, 64), white(96, 64);
+  scene.add(coloured);
+  white.add(octahedron());
+  const Image image = Renderer(Backend::Cpu).render(scene);
+  EXPECT_EQ(image.rgb, Renderer(Backend::Gpu).render(scene).rgb);
+  EXPECT_NE(image.rgb, Renderer(Backend::Cpu).render(white).rgb);
+  EXPECT_EQ(Renderer(Backend::Cpu).render(parseScene(scene.toJson())).rgb, image.rgb);
+  coloured.colors.pop_back();
+  EXPECT_THROW(TriangleMesh{coloured}, ArgumentError);
+}
+
+TEST(SceneHandles, AClosedRendererRefusesToRender) {
+  Renderer renderer(Backend::Gpu);
+  Scene scene(32, 24);
+  scene.add(octahedron());
+  EXPECT_EQ(renderer.render(scene).width, 32);
+  renderer.close();
+  EXPECT_THROW(renderer.render(scene), ArgumentError);
+  EXPECT_THROW(renderer.stats(), ArgumentError);
+  renderer.close();
 }
 
 TEST(SceneNames, EveryChoiceHasTheFilesNameBothWays) {

@@ -82,7 +82,7 @@ constexpr Matrix4 kShearedPose = {0.9, 0.35, -0.2, 0.25,  //
 Scene sceneInCode() {
   Scene scene(150, 100);
   const Matrix4 eye = {1, 0, 0, 0.4, 0, 0, 1, -3.1, 0, -1, 0, 1.3, 0, 0, 0, 1};  // OpenCV axes: looks along +y, z up
-  Camera camera = cameraFromIntrinsics(131.7, 118.3, 81.25, 43.5, 150, 100, eye);
+  Camera camera = cameraFromIntrinsics(131.7, 118.3, 81.25, 43.5, 150, 100, eye, PoseConvention::OpenCV);
   camera.nearPlane = 0.125;
   camera.farPlane = 77.7;
   scene.setCamera(camera);

@@ -19,11 +19,12 @@ for i in range(views):  # a Fibonacci spiral over the sphere, poles left out
     right = np.cross(forward, (0, 0, 1)) / np.linalg.norm(np.cross(forward, (0, 0, 1)))
     pose = np.eye(4)
     pose[:3, :3], pose[:3, 3] = np.stack([right, np.cross(forward, right), forward], axis=1), eye
-    scene.camera = phongvk.Camera.from_intrinsics(f, f, (width - 1) / 2, (height - 1) / 2, width, height, pose=pose)
+    scene.camera = phongvk.Camera.from_intrinsics(f, f, (width - 1) / 2, (height - 1) / 2, width, height, pose=pose,
+                                                  convention="opencv")
     frame = renderer.render(scene, outputs=["color", "depth", "object_id"])
-    phongvk.write_png(str(out / f"{i:03d}_rgb.png"), frame["color"])
+    phongvk.write_png(out / f"{i:03d}_rgb.png", frame["color"])
     np.save(out / f"{i:03d}_depth.npy", frame["depth"])
-    phongvk.write_png(str(out / f"{i:03d}_mask.png"), np.repeat((frame["object_id"] >= 0)[..., None] * 255, 3, 2).astype(np.uint8))
+    phongvk.write_png(out / f"{i:03d}_mask.png", frame["object_id"] >= 0)  # 8-bit grey, 0 and 255
     cameras.append({"file": f"{i:03d}_rgb.png", "camera_to_world": pose.tolist()})
 intrinsics = {"fx": f, "fy": f, "cx": (width - 1) / 2, "cy": (height - 1) / 2, "width": width, "height": height}
 (out / "cameras.json").write_text(json.dumps({"intrinsics": intrinsics, "convention": "opencv", "views": cameras}, indent=1))

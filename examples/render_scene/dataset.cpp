@@ -43,7 +43,7 @@ int main(int argc, char** argv) try {
     const double z = 0.9 * (1 - 2 * (i + 0.5) / views), a = i * M_PI * (3 - std::sqrt(5.0)), s = std::sqrt(1 - z * z);
     const Vec3 eye = {centre[0] + distance * s * std::cos(a), centre[1] + distance * s * std::sin(a), centre[2] + distance * z};
     const Matrix4 pose = lookAtPose(eye, centre);
-    scene.setCamera(cameraFromIntrinsics(f, f, cx, cy, width, height, pose));
+    scene.setCamera(cameraFromIntrinsics(f, f, cx, cy, width, height, pose, PoseConvention::OpenCV));
     RenderedFrame frame = renderer.renderOutputs(scene, {.depth = true, .objectIds = true});
     const std::string name = std::to_string(1000 + i).substr(1);
     writePng(out + "/" + name + "_rgb.png", frame.image);

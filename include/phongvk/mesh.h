@@ -24,6 +24,10 @@ struct MeshArrays {
   // Texture coordinates u0 v0 u1 v1 ... (2N finite floats; (0, 0) the texture's top-left corner,
   // docs/DESIGN.md "Textures"), or none: what a material's texture is sampled with ("uvs").
   std::vector<float> uvs;
+  // Vertex colours r0 g0 b0 a0 r1 ... (4N bytes, 0..255), or none (white): each multiplies the
+  // material's colour at its vertex, as a PLY's or glTF's vertex colours do ("colors"). Alpha is
+  // kept with the mesh (a scene written out holds it) and not drawn.
+  std::vector<uint8_t> colors;
 };
 
 // How a model file loaded alone (no scene file: loadScene("model.ply"), TriangleMesh::fromFile) is

@@ -103,6 +103,28 @@ class PHONGVK_API Scene {
   // another scene.
   void setPose(ObjectId object, const Matrix4& pose);
   void remove(ObjectId object);
+  // The object's id in the object_id output (Outputs::objectIds): given by add for the scene's
+  // life, whatever is removed or added after it (a scene's own objects first, by index, then one
+  // number per add), or the one setObjectId gave it (a label of the caller's: any number in
+  // 0..2^31-1, several objects may share one, as classes in a segmentation do; ArgumentError
+  // outside that range).
+  int32_t objectId(ObjectId object) const;
+  void setObjectId(ObjectId object, int32_t id);
+  // The object's geometry replaced by `mesh` in place: its handle, id, pose, material and
+  // closedness stay.
+  void setMesh(ObjectId object, const TriangleMesh& mesh);
+
+  // Lights added with a handle, as objects are: appended after the scene's lights (those of its
+  // file, or set with setLights), checked as a scene file's "lights[N]" (SceneError, the scene
+  // unchanged then), changed or taken out by handle (RangeError as for objects). setLights
+  // replaces every light and retires every light handle.
+  LightId addLight(const Light& light);
+  Light light(LightId light) const;
+  void setLight(LightId light, const Light& value);
+  void removeLight(LightId light);
+  // The light at `index` in lights() replaced, its handle (if any) kept; RangeError outside
+  // 0..lightCount()-1.
+  void setLightAt(size_t index, const Light& value);
 
   // The world box around every object's vertices, as built: {min, max}. Builds the meshes to know
   // (a renderer builds its own again), so a program placing cameras about a model asks once.
@@ -310,8 +332,13 @@ class PHONGVK_API Renderer {
   std::string deviceName() const;
   RendererStats stats() const;
 
+  // Frees what the renderer holds (its Vulkan device, buffers and pipelines) now, before it is
+  // destroyed; every call after it throws ArgumentError. Not while another thread renders with it.
+  void close();
+
  private:
   class Impl;  // api/renderer_impl.h
+  Impl& live() const;  // ArgumentError once closed
   std::unique_ptr<Impl> impl_;
   friend struct RendererAccess;  // the backends' way to the Impl they implement (api/renderer_impl.h)
 };

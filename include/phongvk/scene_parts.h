@@ -75,7 +75,7 @@ PHONGVK_API Camera cameraFromPose(const Matrix4& cameraToWorld, PoseConvention c
 // the camera is assigned to a scene (SceneError "camera.cx: ...", as a scene file's camera).
 PHONGVK_API Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int width, int height,
                                         const Matrix4& cameraToWorld,
-                                        PoseConvention convention = PoseConvention::OpenCV);
+                                        PoseConvention convention = PoseConvention::OpenGL);
 
 // A light (docs/DESIGN.md "Lights"): a point light at `position`, or one that moves with the camera
 // (atCamera), or a directional light (directional: its light travels along `direction` and reaches
@@ -179,6 +179,13 @@ PHONGVK_API TextureFilter parseTextureFilter(const std::string& name);
 struct ObjectId {
   unsigned long long value = 0;
   bool operator==(const ObjectId&) const = default;
+};
+
+// A light added in code (Scene::addLight): its handle for setLight and removeLight, unique to the
+// scene that gave it, and never equal to an object's handle of that scene.
+struct LightId {
+  unsigned long long value = 0;
+  bool operator==(const LightId&) const = default;
 };
 
 }  // namespace phongvk

@@ -43,8 +43,6 @@ from ._phongvk import (
     Texture,
     __revision__,
     __version__,
-    devices,
-    diff,
     encode_png,
     load_scene,
     scene_from_dict,
@@ -60,16 +58,38 @@ __all__ = [
     "ArgumentError", "Camera", "DeviceError", "Error", "Image", "Light", "Material", "Mesh", "NO_TRIANGLE",
     "NoticeWarning", "PNG_LEVEL_DEFAULT",
     "NoDeviceError", "OutputError", "RangeError", "RenderSettings", "Renderer", "Scene", "SceneError", "Texture",
+    "RendererStats", "DiffResult", "Device",
     "devices", "diff", "encode_png", "load_scene", "read_png", "scene_from_dict", "write_png",
 ]
 
 
 class Image(_np.ndarray):
     """An RGB image: a C-contiguous uint8 numpy array of shape (height, width, 3), row 0 at the
-    top, that shows itself as a picture in Jupyter. Everything numpy does with arrays works."""
+    top, that shows itself as a picture in Jupyter. Everything numpy does with arrays works; what
+    numpy's functions compute from it (img / 255, img.mean(axis=2)) is a plain array."""
+
+    def __array_wrap__(self, array, context=None, return_scalar=False):
+        return array.view(_np.ndarray) if isinstance(array, _np.ndarray) else array
 
     def _repr_png_(self):
-        return encode_png(_np.asarray(self))
+        return _displayable_png(_np.asarray(self))
+
+
+def _displayable_png(array):
+    """The PNG Jupyter shows for an image-like array: uint8 as it is (RGB, RGBA or grey), bool as
+    black and white, floats within 0..1 scaled to 0..255; None (Jupyter shows the text instead)
+    for anything else."""
+    if array.ndim not in (2, 3) or (array.ndim == 3 and array.shape[2] not in (3, 4)) or array.size == 0:
+        return None
+    if array.dtype == _np.bool_:
+        array = array.astype(_np.uint8) * 255
+    elif array.dtype.kind == "f":
+        if not (_np.isfinite(array).all() and array.min() >= 0 and array.max() <= 1):
+            return None
+        array = _np.rint(array * 255).astype(_np.uint8)
+    elif array.dtype != _np.uint8:
+        return None
+    return encode_png(_np.ascontiguousarray(array))
 
 
 class NoticeWarning(UserWarning):
@@ -77,8 +97,64 @@ class NoticeWarning(UserWarning):
     sees only the back of every triangle, so the model is drawn dark."""
 
 
+class _Record(dict):
+    """A result read by attribute (stats.triangles) that is still the dict it was (stats["triangles"],
+    dict(stats), json.dumps(stats))."""
+
+    def __getattr__(self, name):
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError("%s has no %r (it has %s)" % (type(self).__name__, name, ", ".join(self))) from None
+
+    def __dir__(self):
+        return sorted(set(self) | set(dir(dict)))
+
+
+class RendererStats(_Record):
+    """Renderer.stats: what a renderer has done so far (keys as its help says)."""
+
+
+class DiffResult(_Record):
+    """phongvk.diff and Renderer.diff: the reference against the compute port."""
+
+
+class Device(_Record):
+    """One entry of phongvk.devices(): a Vulkan device, whether phongvk can use it, its key path."""
+
+
+def diff(scene, device=None):
+    return DiffResult(_phongvk.diff(scene, device))
+
+
+def devices():
+    return [Device(d) for d in _phongvk.devices()]
+
+
+diff.__doc__ = _phongvk.diff.__doc__
+devices.__doc__ = _phongvk.devices.__doc__
+
+
 class Renderer(_phongvk.Renderer):
     __doc__ = _phongvk.Renderer.__doc__
+
+    @property
+    def stats(self):
+        return RendererStats(_phongvk.Renderer.stats.fget(self))
+
+    stats.__doc__ = _phongvk.Renderer.stats.__doc__
+
+    def diff(self, scene):
+        return DiffResult(super().diff(scene))
+
+    diff.__doc__ = _phongvk.Renderer.diff.__doc__
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exception):
+        self.close()
+        return False
 
     def render(self, scene, width=None, height=None, outputs=None):
         """One frame of `scene` as an Image (a uint8 array of shape (height, width, 3)); at
@@ -120,3 +196,110 @@ def read_png(path, mode="rgb"):
     8-bit samples scaled by 257)."""
     pixels = _phongvk.read_png(path, mode)
     return pixels.view(Image) if mode == "rgb" else pixels
+
+
+# ---- live views: what a scene gives back edits the scene ----
+#
+# scene.camera, scene.render_settings, scene.lights[i] and scene.light(handle) are live views:
+# reading an attribute reads the scene as it is now, and assigning one checks the new value as the
+# scene file's section would and sets it in the scene at once (SceneError, the scene unchanged, for
+# a bad one). Each view is also a plain phongvk.Camera, RenderSettings or Light, holding the value it
+# had when taken plus what was set through it, so it can be kept, compared or given to another
+# scene. Three numbers (a position, a colour) read back as a tuple, which refuses item assignment:
+# assign the whole attribute (scene.camera.position = (0, -4, 2)).
+
+class _Live:
+    """The live-view behaviour, mixed into a subclass of each value class."""
+
+    def __init__(self, value, read, write):
+        type(self).__bases__[1].__init__(self)
+        for name in self._FIELDS:
+            type(self).__bases__[1].__dict__[name].__set__(self, getattr(value, name))
+        object.__setattr__(self, "_read", read)
+        object.__setattr__(self, "_write", write)
+
+    def __getattribute__(self, name):
+        if name.startswith("_") or name not in type(self)._FIELDS:
+            return object.__getattribute__(self, name)
+        return getattr(object.__getattribute__(self, "_read")(), name)
+
+    def __setattr__(self, name, value):
+        if name not in self._FIELDS:
+            raise AttributeError("%s has no attribute %r" % (type(self).__bases__[1].__name__, name))
+        current = self._read()
+        setattr(current, name, value)
+        self._write(current)
+        type(self).__bases__[1].__dict__[name].__set__(self, value)
+
+
+def _live_class(base, fields):
+    return type(base.__name__, (_Live, base), {"_FIELDS": fields, "__doc__": base.__doc__, "__module__": __name__})
+
+
+_LiveCamera = _live_class(Camera, ("position", "look_at", "up", "fov", "width", "height", "near", "far", "intrinsics",
+                                   "ortho_height"))
+_LiveLight = _live_class(Light, ("position", "direction", "intensity", "color", "at_camera"))
+_LiveRenderSettings = _live_class(RenderSettings, ("shading", "specular", "interpolation", "samples", "background",
+                                                   "texture_filter"))
+
+
+class _LightList:
+    """scene.lights: a sequence of live views of the scene's lights, by index (scene.light(handle)
+    follows a light added with add_light wherever it moves)."""
+
+    def __init__(self, scene):
+        self._scene = scene
+
+    def __len__(self):
+        return self._scene.light_count
+
+    def _view(self, index):
+        scene = self._scene
+        return _LiveLight(_LIGHTS.fget(scene)[index], lambda: _LIGHTS.fget(scene)[index],
+                          lambda value: scene._set_light_at(index, value))
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            return [self._view(i) for i in range(*index.indices(len(self)))]
+        count = len(self)
+        if not -count <= index < count:
+            raise IndexError("light %d is out of range: the scene has %d lights" % (index, count))
+        return self._view(index % count)
+
+    def __iter__(self):
+        return (self._view(i) for i in range(len(self)))
+
+    def __eq__(self, other):
+        return list(_LIGHTS.fget(self._scene)) == list(other)
+
+    def __add__(self, other):
+        return list(self) + list(other)
+
+    def __repr__(self):
+        return repr(_LIGHTS.fget(self._scene))
+
+
+_CAMERA = Scene.camera
+_LIGHTS = Scene.lights
+_RENDER_SETTINGS = Scene.render_settings
+_LIGHT = Scene.light
+
+Scene.camera = property(
+    lambda scene: _LiveCamera(_CAMERA.fget(scene), lambda: _CAMERA.fget(scene), lambda v: _CAMERA.fset(scene, v)),
+    _CAMERA.fset, doc=_CAMERA.__doc__ + " A live view: assigning an attribute (scene.camera.fov = 30) sets it in the scene.")
+Scene.render_settings = property(
+    lambda scene: _LiveRenderSettings(_RENDER_SETTINGS.fget(scene), lambda: _RENDER_SETTINGS.fget(scene),
+                                      lambda v: _RENDER_SETTINGS.fset(scene, v)),
+    _RENDER_SETTINGS.fset,
+    doc=_RENDER_SETTINGS.__doc__ + " A live view: scene.render_settings.samples = 4 sets it in the scene.")
+Scene.lights = property(
+    _LightList, lambda scene, lights: _LIGHTS.fset(scene, list(lights)),
+    doc=_LIGHTS.__doc__ + " Live views: scene.lights[0].color = (1, 0, 0) sets it in the scene.")
+
+
+def _light(scene, handle):
+    return _LiveLight(_LIGHT(scene, handle), lambda: _LIGHT(scene, handle), lambda v: scene.set_light(handle, v))
+
+
+_light.__doc__ = _LIGHT.__doc__ + " A live view, as scene.lights[i]."
+Scene.light = _light

@@ -51,7 +51,7 @@ def test_dataset_script_writes_views_whose_cameras_and_depths_agree(tmp_path):
     margin = 0.01 * np.linalg.norm(high - low)
     assert cameras["convention"] == "opencv" and len(cameras["views"]) == 3
     for i, view in enumerate(cameras["views"]):
-        mask = np.array(PIL.Image.open(tmp_path / f"{i:03d}_mask.png"))[..., 0] > 0
+        mask = np.array(PIL.Image.open(tmp_path / f"{i:03d}_mask.png")) > 0  # 8-bit grey
         depth = np.load(tmp_path / f"{i:03d}_depth.npy")
         assert PIL.Image.open(tmp_path / view["file"]).size == (k["width"], k["height"])
         assert mask.sum() > 1000 and np.array_equal(mask, np.isfinite(depth))

@@ -128,11 +128,11 @@ def test_rgba_and_16_bit_depth_pngs_read_back_by_pil(tmp_path):
         phongvk.read_png(str(tmp_path / "rgba.png"), "rgb16")
 
 
-@pytest.mark.parametrize("array", [np.zeros((4, 5, 2), np.uint8), np.zeros((4, 5), np.uint8),
+@pytest.mark.parametrize("array", [np.zeros((4, 5, 2), np.uint8), np.zeros((4, 5, 3), bool),
                                    np.zeros((4, 5, 4), np.uint16), np.zeros((4, 5), np.float32)])
 def test_write_png_names_the_arrays_it_takes(tmp_path, array):
     message = (r"image: expected a uint8 array of shape \(height, width, 3\) or \(height, width, 4\), "
-               r"or a uint16 array of shape \(height, width\), got " + str(array.dtype))
+               r"or a uint8, uint16 or bool array of shape \(height, width\), got " + str(array.dtype))
     with pytest.raises(ValueError, match=message):
         phongvk.write_png(str(tmp_path / "x.png"), array)
     with pytest.raises(ValueError, match=message):

@@ -92,7 +92,7 @@ def test_poses_and_intrinsics_project_as_numpy_does(eye, intrinsics):
     pose = look_at_pose_opencv(eye, (0, 0, 0))
     scene = phongvk.scene_from_dict({"camera": {"position": [9, 9, 9], "look_at": [0, 0, 0]},
                                      "lights": [{"position": "camera"}], "objects": []})
-    scene.camera = phongvk.Camera.from_intrinsics(fx, fy, cx, cy, width, height, pose=pose)
+    scene.camera = phongvk.Camera.from_intrinsics(fx, fy, cx, cy, width, height, pose=pose, convention="opencv")
     assert scene.camera.intrinsics == intrinsics
     points = np.array([[0, 0, 0], [0.4, 0.2, 0.1], [-0.3, 0.1, 0.3], [0.1, -0.4, -0.2]])
     vertices, faces = square(0.15)  # about 5 pixels across
@@ -492,7 +492,7 @@ def test_a_mesh_built_once_is_placed_many_times():
     built.camera = written.camera
     built.add(phongvk.Mesh.from_file(torus, up="z"))
     assert np.array_equal(cpu.render(built), cpu.render(written))
-    with pytest.raises(TypeError, match=r"faces, normals and uvs: not given with a phongvk.Mesh"):
+    with pytest.raises(TypeError, match=r"faces, normals, uvs and colors: not given with a phongvk.Mesh"):
         built.add(mesh, faces)
     with pytest.raises(phongvk.ArgumentError, match=r"path: expected a mesh file"):
         phongvk.Mesh.from_file(scene_path("scenes/basic.json"))

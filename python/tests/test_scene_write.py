@@ -31,7 +31,7 @@ def round_trip(scene):
 def test_a_scene_built_in_code_renders_the_same_bytes_from_its_dict():
     scene = phongvk.Scene(160, 120)
     pose = np.array([[1, 0, 0, 0.4], [0, 0, 1, -3.1], [0, -1, 0, 1.3], [0, 0, 0, 1]])  # OpenCV: along +y, z up
-    scene.camera = phongvk.Camera.from_intrinsics(141.5, 127.25, 83.5, 52.0, 160, 120, pose=pose)
+    scene.camera = phongvk.Camera.from_intrinsics(141.5, 127.25, 83.5, 52.0, 160, 120, pose=pose, convention="opencv")
     scene.lights = [phongvk.Light(position=(1.3, -2.2, 2.9), intensity=0.7, color=(1, 0.9, 0.8)),
                     phongvk.Light(at_camera=True, intensity=0.3),
                     phongvk.Light(direction=(-0.3, 0.6, -1), intensity=0.45, color=(0.2, 0.4, 1))]
