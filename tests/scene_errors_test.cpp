@@ -110,13 +110,13 @@ TEST(SceneErrors, UnknownKeyNested) {
             "a.json: lights[0].power: unknown key (allowed: position, direction, intensity, color)");
   EXPECT_EQ(objectError(R"({"shape": "sphere", "radiu": 1})"),
             "a.json: objects[0].radiu: unknown key (allowed: shape, material, subdivide, closed, "
-            "scale, rotate, center, radius, segments)");
+            "scale, rotate, object_id, center, radius, segments)");
 }
 
 TEST(SceneErrors, KeyOfAnotherShape) {
   EXPECT_EQ(objectError(R"({"shape": "cube", "radius": 1})"),
             "a.json: objects[0].radius: unknown key, not used by shape 'cube' (allowed: shape, "
-            "material, subdivide, closed, scale, rotate, center, size)");
+            "material, subdivide, closed, scale, rotate, object_id, center, size)");
 }
 
 TEST(SceneErrors, MissingRequiredField) {
