@@ -12,8 +12,10 @@ using namespace gpu;
 namespace {
 
 // A vertex's homogeneous pixel-space position in this frame, as the shade pass computes it.
-ShadedVertex projected(const VertexIn& v, const FrameInputs& in) {
-  return {vec4(toHomogeneous(v.position, in.objects[v.object].viewOffset, in.frame), 1.0f), vec4(0.0f)};
+ShadedVertex projected(const VertexIn& stored, const FrameInputs& in) {
+  const ObjectData& object = in.objects[stored.object];
+  const VertexIn v = posedVertex(stored, object);
+  return {vec4(toHomogeneous(v.position, object.viewOffset, in.frame), 1.0f), vec4(0.0f)};
 }
 
 // A world-axes direction in the camera's axes: (right, up, forward).

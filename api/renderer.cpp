@@ -79,6 +79,7 @@ void Renderer::Impl::prepare(const Scene& scene) {
   if (data_ && builtFrom_ && sameGeometry(*builtFrom_, spec)) {
     checkBuiltSceneMemory(spec, data_->triangles.size(), samples, textureBytes(*data_));  // this frame's size and samples
     const size_t materials = data_->materials.size(), lights = data_->lights.size();
+    placeObjects(*data_, spec);  // posed objects may have moved
     refreshShading(*data_, spec);
     frame(spec);
     notice_ = frameNotice(builtNotice_, spec, *data_, makeView(camera_));

@@ -8,10 +8,12 @@
 #include "api/scene_parts.h"
 #include "prepare/memory_estimate.h"
 #include "prepare/scene_data.h"
+#include "shaders/phong.h"
 
 #include "scene/animate.h"
 #include "scene/camera.h"
 #include "scene/mesh_arrays.h"
+#include "scene/object_pose.h"
 #include "scene/scene.h"
 #include "scene/scene_write.h"
 
@@ -327,7 +329,8 @@ SceneTriangles Scene::triangles() const {
   SceneTriangles out;
   out.mesh.positions.reserve(data.vertices.size() * 3);
   out.mesh.normals.reserve(data.vertices.size() * 3);
-  for (const gpu::VertexIn& v : data.vertices) {
+  for (const gpu::VertexIn& stored : data.vertices) {
+    const gpu::VertexIn v = gpu::posedVertex(stored, data.objects[stored.object]);  // as the renderers turn it
     const glm::dvec3 world = data.objectOrigins[v.object] + glm::dvec3(v.position);
     out.mesh.positions.insert(out.mesh.positions.end(), {float(world.x), float(world.y), float(world.z)});
     out.mesh.normals.insert(out.mesh.normals.end(), {v.normal.x, v.normal.y, v.normal.z});

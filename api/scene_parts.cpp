@@ -3,6 +3,7 @@
 
 #include "base/number_text.h"
 #include "scene/camera.h"
+#include "scene/object_pose.h"
 #include "scene/scene_json.h"
 
 #include <array>
@@ -22,24 +23,9 @@ Json vec3Json(const Vec3& v, const std::string& what) {
   return Json::array({v[0], v[1], v[2]});
 }
 
-// Column `c` of the upper 3x3 block.
-glm::dvec3 column(const Matrix4& m, int c) { return {m[c], m[4 + c], m[8 + c]}; }
-
-// The checks every pose gets: finite values and a last row of 0 0 0 1.
-void checkAffine(const Matrix4& m, const std::string& what) {
-  for (size_t i = 0; i < m.size(); ++i) {
-    if (!std::isfinite(m[i]))
-      throw ArgumentError(what + ": row " + std::to_string(i / 4) + " is not finite: " + formatNumber(m[i]));
-  }
-  if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1) {
-    throw ArgumentError(what + ": the last row must be 0 0 0 1, got " + formatNumber(m[12]) + " " +
-                        formatNumber(m[13]) + " " + formatNumber(m[14]) + " " + formatNumber(m[15]));
-  }
-}
-
 // A camera pose's rotation block must be a rotation: orthonormal columns (within 1e-6) and no mirror.
 void checkRotation(const Matrix4& m) {
-  const glm::dvec3 x = column(m, 0), y = column(m, 1), z = column(m, 2);
+  const glm::dvec3 x = matrixColumn(m, 0), y = matrixColumn(m, 1), z = matrixColumn(m, 2);
   const double worst = std::max({std::abs(glm::dot(x, x) - 1), std::abs(glm::dot(y, y) - 1),
                                  std::abs(glm::dot(z, z) - 1), std::abs(glm::dot(x, y)), std::abs(glm::dot(y, z)),
                                  std::abs(glm::dot(z, x))});
@@ -54,8 +40,8 @@ Camera cameraFromPose(const Matrix4& m, PoseConvention convention, double fov, i
   checkAffine(m, "pose");
   checkRotation(m);
   const glm::dvec3 position = {m[3], m[7], m[11]};
-  const glm::dvec3 forward = convention == PoseConvention::OpenGL ? -column(m, 2) : column(m, 2);
-  const glm::dvec3 up = convention == PoseConvention::OpenGL ? column(m, 1) : -column(m, 1);
+  const glm::dvec3 forward = convention == PoseConvention::OpenGL ? -matrixColumn(m, 2) : matrixColumn(m, 2);
+  const glm::dvec3 up = convention == PoseConvention::OpenGL ? matrixColumn(m, 1) : -matrixColumn(m, 1);
   Camera camera;
   camera.position = {position.x, position.y, position.z};
   camera.lookAt = {position.x + forward.x, position.y + forward.y, position.z + forward.z};
@@ -238,21 +224,5 @@ Interpolation parseInterpolation(const std::string& name) {
 }
 const char* textureFilterName(TextureFilter filter) { return nameOf(filter, TEXTURE_FILTER_NAMES); }
 TextureFilter parseTextureFilter(const std::string& name) { return renderOption("texture_filter", name).textureFilter; }
-
-void placeObject(Object& object, const Matrix4& pose) {
-  checkAffine(pose, "pose");
-  glm::dmat3 linear;
-  for (int c = 0; c < 3; ++c) linear[c] = column(pose, c);  // glm: linear[column][row]
-  if (!(std::abs(glm::determinant(linear)) > 0)) throw ArgumentError("pose: the upper 3x3 block is not invertible");
-  const glm::dvec3 translation = {pose[3], pose[7], pose[11]};
-  for (int axis = 0; axis < 3; ++axis) {
-    if (std::abs(translation[axis]) > MAX_COORDINATE)
-      throw ArgumentError("pose: the translation " + formatNumber(translation[axis]) + " is beyond the " +
-                          formatNumber(MAX_COORDINATE) + " m a scene may use");
-  }
-  object.rotation = linear;
-  object.scale = {1, 1, 1};
-  object.translate = translation;
-}
 
 }  // namespace phongvk

@@ -37,9 +37,4 @@ RenderSettings renderSettingsOf(const SceneSpec& scene);
 // the camera, no objects.
 SceneSpec sceneInCode(int width, int height);
 
-// `object` placed by `pose` (its linear part and translation), replacing its own; ArgumentError
-// naming "pose" for a matrix that is not an affine map (non-finite, last row not 0 0 0 1, linear
-// part not invertible) or a translation beyond the coordinates a scene may use.
-void placeObject(Object& object, const Matrix4& pose);
-
 }  // namespace phongvk

@@ -64,6 +64,10 @@ void runDevicesOnly(const BenchOptions& options) {
 
 void runBench(const BenchOptions& options) {
   if (options.devicesOnly) return runDevicesOnly(options);
+  if (options.movingOnly) {  // printed only: a quick look at one section
+    runMovingObjects(options.quick);
+    return;
+  }
   checkWritable(options.out);
   checkWritable(options.plot);
   // The context; each backend makes its own renderer per scene.
@@ -90,6 +94,8 @@ void runBench(const BenchOptions& options) {
     report.meshLoads = runMeshLoads(options.quick);
     std::printf("a new mesh each frame:\n");
     report.geometryChanges = runGeometryChanges(options.quick);
+    std::printf("a moving object:\n");
+    report.movingObjects = runMovingObjects(options.quick);
     if (report.plotNote.empty()) {
       report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
     }

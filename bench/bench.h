@@ -17,6 +17,7 @@ struct BenchOptions {
   int device = -1;                           // Vulkan device index, -1 = best
   std::string cli;                           // the phongvk command the end-to-end section runs
   bool devicesOnly = false;                  // only the device table (device_table.h)
+  bool movingOnly = false;                   // only the moving-object runs (moving_object.h), printed
 };
 
 // Runs everything and writes the report and the plot. Throws on failure (a bad output path, no

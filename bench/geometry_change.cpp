@@ -1,6 +1,7 @@
 // geometry_change.cpp — see geometry_change.h.
 #include "geometry_change.h"
 
+#include "api/timing.h"
 #include "phongvk/phongvk.h"
 #include "tools/statistics.h"
 
@@ -12,8 +13,6 @@
 namespace phongvk::bench {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 constexpr int FRAMES = GEOMETRY_CHANGE_FRAMES;
 
@@ -43,8 +42,6 @@ Scene sceneOf(const MeshArrays& mesh, int width, int height) {
   return scene;
 }
 
-double msOf(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
-
 GeometryChangeRun named(Backend backend, int n, int width, int height) {
   const size_t triangles = size_t(2) * size_t(n) * size_t(n);
   return {std::string(backendName(backend)) + ", " + std::to_string(triangles) + " triangles", backendName(backend),
@@ -64,7 +61,7 @@ GeometryChangeRun measure(Backend backend, int n, int width, int height, int rou
     for (int f = 0; f < FRAMES; ++f) {
       const auto start = Clock::now();
       renderer.render(variants[f % 2]);
-      fixedMs.push_back(msOf(start));
+      fixedMs.push_back(msSince(start));
     }
     std::vector<Scene> meshes;  // built before the clock starts: the user's side of the frame
     for (int f = 0; f < FRAMES; ++f) meshes.push_back(sceneOf(waveGrid(n, 1.0f + float(round * FRAMES + f)), width, height));
@@ -73,7 +70,7 @@ GeometryChangeRun measure(Backend backend, int n, int width, int height, int rou
       const double builtBefore = renderer.stats().buildMs;
       const auto start = Clock::now();
       renderer.render(s);
-      newMs.push_back(msOf(start));
+      newMs.push_back(msSince(start));
       buildMs.push_back(renderer.stats().buildMs - builtBefore);
     }
     pipelines += renderer.stats().pipelinesMs - compiledBefore;

@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   app.add_option("--only", options.only, "Only the suite, mesh setup and end-to-end scenes whose name contains this (a partial run)");
   app.add_option("--cli", options.cli, "The phongvk command timed end to end (default: this build's)");
   app.add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")->check(CLI::NonNegativeNumber);
+  app.add_flag("--moving-only", options.movingOnly,
+               "Only a moving object against a moving camera (printed, no report written)");
   app.add_flag("--devices-only", options.devicesOnly,
                "Only the device table (each Vulkan device and key path), in a report of its own");
   try {

@@ -123,6 +123,33 @@ std::string geometryChangeSection(const Report& r) {
   return s + "\n";
 }
 
+std::string movingObjectTarget(const std::vector<MovingObjectRun>& runs) {
+  return runsTargetRow<MovingObjectRun>(
+      "a moving object <= " + number(MOVING_OBJECT_TARGET, 1) + "x a moving camera, no mesh built again (public Renderer)",
+      runs, [](const MovingObjectRun& x) { return x.ratio() <= MOVING_OBJECT_TARGET && x.builds == 0; },
+      [](const MovingObjectRun& x) { return x.ratio(); });
+}
+
+std::string movingObjectSection(const Report& r) {
+  std::string s = "## A moving object\n\nThe public `Renderer`, one grid mesh added by handle (`Scene::add`), a "
+                  "new pose each frame (`setPose`: a turn and a shift) against a new camera each frame (a step "
+                  "of an orbit), " + std::to_string(r.quick ? 1 : MOVING_OBJECT_ROUNDS) + " interleaved rounds of " +
+                  std::to_string(MOVING_OBJECT_FRAMES) + " frames each way, medians. A posed object's vertices "
+                  "are turned by the passes (docs/DESIGN.md \"Camera\"), so a pose builds nothing: \"builds\" "
+                  "counts the meshes built during the timed frames.\n\n";
+  s += header({"backend", "triangles", "image", "camera moved ms", "object moved ms", "object / camera", "builds"});
+  for (const MovingObjectRun& x : r.movingObjects) {
+    const std::string image = std::to_string(x.width) + "x" + std::to_string(x.height);
+    if (!x.failure.empty()) {
+      s += row({x.backend, std::to_string(x.triangles), image, x.failure, "–", "–", "–"});
+      continue;
+    }
+    s += row({x.backend, std::to_string(x.triangles), image, number(x.cameraMs, 2), number(x.objectMs, 2),
+              ratio(x.ratio()), std::to_string(x.builds)});
+  }
+  return s + "\n";
+}
+
 std::string endToEndTargets(const EndToEnd& e) {
   return runsTargetRow<SequenceRun>(
              "`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
@@ -172,6 +199,7 @@ std::string targetTable(const Report& r) {
   s += endToEndTargets(r.endToEnd);
   s += meshLoadTarget(r.meshLoads);
   s += geometryChangeTarget(r.geometryChanges);
+  s += movingObjectTarget(r.movingObjects);
   s += "\nSpeed ratios are wall clock (the render call, as a user of either backend waits for it); ";
   s += "each scene's misses and what its time or memory went to are listed under the suite.\n\n";
   return s;
@@ -379,7 +407,7 @@ std::string method(const Report& r) {
 std::string formatReport(const Report& report) {
   return preamble(report) + machine(report) + targetTable(report) + suite(report) +
          deviceTableSection(report.devices, report.repeat) + setupSection(report) +
-         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) +
+         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) + movingObjectSection(report) +
          method(report);
 }
 

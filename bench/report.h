@@ -6,6 +6,7 @@
 #include "end_to_end.h"
 #include "error_sweep.h"
 #include "geometry_change.h"
+#include "moving_object.h"
 #include "machine.h"
 #include "mesh_load.h"
 #include "scene_bench.h"
@@ -29,6 +30,7 @@ struct Report {
   EndToEnd endToEnd;
   std::vector<MeshLoadRun> meshLoads;
   std::vector<GeometryChangeRun> geometryChanges;
+  std::vector<MovingObjectRun> movingObjects;
   std::string plotLink;  // the plot, relative to the report; empty when there is none
   std::string plotNote;  // why there is no plot
 };

@@ -7,6 +7,7 @@
 #include "vulkan/vk_check.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <stdexcept>
 
@@ -221,13 +222,32 @@ void GpuRenderer::updateDescriptors() {
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
 }
 
+namespace {
+
+// Whether an object's place for lighting changed (a posed object moved): what ObjectData holds
+// from lightOffset on (offset, flags, pose). Its viewOffset follows the camera, and the positions
+// alone.
+bool lightingPlacesChanged(const std::vector<ObjectData>& now, const std::vector<ObjectData>& last) {
+  if (now.size() != last.size()) return true;
+  constexpr size_t FROM = offsetof(ObjectData, lightOffset);
+  for (size_t i = 0; i < now.size(); ++i) {
+    if (std::memcmp(reinterpret_cast<const char*>(&now[i]) + FROM, reinterpret_cast<const char*>(&last[i]) + FROM,
+                    sizeof(ObjectData) - FROM) != 0)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 // Sends only what changed since the last frame: the scene's frame as makeFrame built it, the
 // objects, materials and lights where they differ, and the pass control (writeControl). Vertex
 // colours are recomputed only when their inputs changed: materials, lights, ambient, the shading
-// mode or specular model, or the eye when some material is specular.
+// mode or specular model, a posed object's place, or the eye when some material is specular.
 void GpuRenderer::uploadFrame(const FrameInputs& in) {
   const bool materialsChanged = uploadIfChanged(context_, scene_.materials.buffer, in.materials, lastMaterials_, "materials");
   const bool lightsChanged = uploadIfChanged(context_, scene_.lights.buffer, in.lights, lastLights_, "lights");
+  const bool objectsMoved = lightingPlacesChanged(in.objects, lastObjects_);
   const bool objectsChanged = uploadIfChanged(context_, scene_.objects.buffer, in.objects, lastObjects_, "objects");
   const FrameData& f = in.frame;
   // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
@@ -238,7 +258,7 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
   const bool ambientChanged = !framesSent_ || f.ambient != frame_.ambient;
   // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.
   const bool modelChanged = !framesSent_ || f.shading != frame_.shading || f.specular != frame_.specular;
-  const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged || modelChanged ||
+  const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged || modelChanged || objectsMoved ||
                            (eyeMoved && !lightingIsViewIndependent(in));
   frame_ = f;
   uploadToBuffer(context_, perFrame_.frame, &frame_, sizeof(FrameData));

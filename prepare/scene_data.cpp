@@ -107,10 +107,10 @@ bool anyTexture(const std::vector<ObjectMesh>& meshes, const SceneSpec& scene) {
 void appendObject(SceneData& data, const ObjectMesh& built, uint32_t objectIndex) {
   const Mesh& mesh = built.mesh;
   const uint64_t base = data.vertices.size();
+  std::array<glm::dvec3, 2> box = {glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    const glm::dvec3 world = built.origin + glm::dvec3(mesh.positions[i]);
-    data.boundsMin = glm::min(data.boundsMin, world);
-    data.boundsMax = glm::max(data.boundsMax, world);
+    box[0] = glm::min(box[0], glm::dvec3(mesh.positions[i]));
+    box[1] = glm::max(box[1], glm::dvec3(mesh.positions[i]));
     const uint32_t color = mesh.colors.empty() ? gpu::VERTEX_WHITE : mesh.colors[i];
     data.vertices.push_back({mesh.positions[i], objectIndex, mesh.normals[i], color});
   }
@@ -118,6 +118,7 @@ void appendObject(SceneData& data, const ObjectMesh& built, uint32_t objectIndex
     data.triangles.push_back(glm::uvec4(glm::uvec3(static_cast<uint32_t>(base)) + t, objectIndex));
   }
   data.objectOrigins.push_back(built.origin);
+  data.objectBoxes.push_back(box);
   gpu::ObjectData o{};
   o.flags = built.closed ? gpu::OBJECT_CULL_BACK : 0u;  // the material: refreshShading
   data.objects.push_back(o);
@@ -172,8 +173,6 @@ SceneData buildSceneData(const SceneSpec& scene) {
   std::vector<ObjectMesh> meshes = buildMeshes(scene, vertices, triangles);
   reserveLarge(data.vertices, vertices);
   reserveLarge(data.triangles, triangles);
-  data.boundsMin = glm::dvec3(HUGE_VAL);
-  data.boundsMax = glm::dvec3(-HUGE_VAL);
   const bool textured = anyTexture(meshes, scene);
   if (textured) reserveLarge(data.uvs, vertices);
   for (size_t i = 0; i < meshes.size(); ++i) {
@@ -189,12 +188,62 @@ SceneData buildSceneData(const SceneSpec& scene) {
     if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, texture);
   }
   keepShare(data, scene);
+  placeObjects(data, scene);
+  refreshShading(data, scene);
+  return data;
+}
+
+namespace {
+
+// The rows of `m` (glm: m[column][row]) as ObjectData holds them.
+void setRows(const glm::dmat3& m, glm::vec4& r0, glm::vec4& r1, glm::vec4& r2) {
+  glm::vec4* rows[3] = {&r0, &r1, &r2};
+  for (int r = 0; r < 3; ++r) *rows[r] = glm::vec4(float(m[0][r]), float(m[1][r]), float(m[2][r]), 0.0f);
+}
+
+// Object i's place: its origin and pose from the scene where it has one.
+void placeOne(SceneData& data, const Object& object, size_t i) {
+  gpu::ObjectData& o = data.objects[i];
+  o.flags &= ~gpu::OBJECT_POSED;
+  if (!object.poseLinear) return;
+  data.objectOrigins[i] = object.translate;  // a mesh's origin (object_mesh.cpp makeShape)
+  const glm::dmat3& linear = *object.poseLinear;
+  if (linear == glm::dmat3(1.0)) return;
+  o.flags |= gpu::OBJECT_POSED;
+  setRows(linear, o.linear0, o.linear1, o.linear2);
+  setRows(glm::transpose(glm::inverse(linear)), o.normal0, o.normal1, o.normal2);
+}
+
+// Object i's world box: its own box about its origin, where posed the box around its eight
+// corners turned by the pose (a box that holds the turned vertices, a little larger than theirs).
+std::array<glm::dvec3, 2> worldBox(const SceneData& data, const std::optional<glm::dmat3>& pose, size_t i) {
+  const auto& [low, high] = data.objectBoxes[i];
+  const glm::dvec3 origin = data.objectOrigins[i];
+  if (!pose || *pose == glm::dmat3(1.0)) return {origin + low, origin + high};
+  std::array<glm::dvec3, 2> box = {glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y, corner & 4 ? high.z : low.z);
+    box[0] = glm::min(box[0], origin + *pose * p);
+    box[1] = glm::max(box[1], origin + *pose * p);
+  }
+  return box;
+}
+
+}  // namespace
+
+void placeObjects(SceneData& data, const SceneSpec& scene) {
+  data.boundsMin = glm::dvec3(HUGE_VAL);
+  data.boundsMax = glm::dvec3(-HUGE_VAL);
+  for (size_t i = 0; i < data.objects.size(); ++i) {
+    placeOne(data, scene.objects[i], i);
+    const auto [low, high] = worldBox(data, scene.objects[i].poseLinear, i);
+    data.boundsMin = glm::min(data.boundsMin, low);
+    data.boundsMax = glm::max(data.boundsMax, high);
+  }
   data.lightingOrigin = meanOrigin(data.objectOrigins);
   for (size_t i = 0; i < data.objects.size(); ++i) {
     data.objects[i].lightOffset = glm::vec3(data.objectOrigins[i] - data.lightingOrigin);
   }
-  refreshShading(data, scene);
-  return data;
 }
 
 uint64_t textureBytes(const SceneData& data) {
@@ -239,7 +288,8 @@ bool sameObjectGeometry(const Object& a, const Object& b) {
          a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
          a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
          a.scale == b.scale && a.rotation == b.rotation && a.up == b.up && a.baseColors == b.baseColors &&
-         a.translate == b.translate && a.closed == b.closed;
+         a.closed == b.closed && a.poseLinear.has_value() == b.poseLinear.has_value() &&
+         (a.poseLinear.has_value() || a.translate == b.translate);  // a posed object's place is not its geometry
 }
 
 // Whether the materials of a and b sample the same textures (the texel pool is built with the meshes).

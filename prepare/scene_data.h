@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <vector>
@@ -22,8 +23,10 @@ struct SceneData {
   std::vector<gpu::VertexIn> vertices;      // local to their object's origin
   std::vector<glm::uvec4> triangles;        // xyz: vertex indices; w: object index
   std::vector<glm::dvec3> objectOrigins;    // world, double: offsets are taken in double
-  // Lighting is evaluated relative to this point (the mean object origin): fixed per scene, so
-  // a moving camera leaves view-independent lighting bitwise unchanged.
+  // Each object's box about its origin, in its own axes (a posed object's before its pose).
+  std::vector<std::array<glm::dvec3, 2>> objectBoxes;
+  // Lighting is evaluated relative to this point (the mean object origin): fixed while no posed
+  // object moves, so a moving camera leaves view-independent lighting bitwise unchanged.
   glm::dvec3 lightingOrigin{0.0};
   std::vector<gpu::ObjectData> objects;     // material, flags, lightOffset; viewOffset per frame
   std::vector<gpu::MaterialData> materials;
@@ -84,8 +87,17 @@ SceneData buildSceneData(const SceneSpec& scene);
 
 // True when a and b make the same meshes: the same objects, in order, with the same shapes,
 // geometry values, mesh files (unchanged on disk) or mesh arrays (the same added mesh), and culling. Materials, lights, the camera and
-// the render options may differ: refreshShading and makeFrame take those from b.
+// the render options may differ: refreshShading and makeFrame take those from b. Objects placed
+// by a pose (Object::poseLinear) may stand elsewhere: placeObjects takes their places from b.
 bool sameGeometry(const SceneSpec& a, const SceneSpec& b);
+
+// Places every object of `data` as `scene` says: the posed objects' origins and linear parts
+// (ObjectData rows and OBJECT_POSED, set only for a linear part other than the identity, so an
+// object posed by a translation alone renders as one without a pose), the scene's box, and the
+// lighting origin with each object's offset from it. buildSceneData calls it, and a renderer again
+// for a frame of the same geometry (sameGeometry), so a moved object renders the bytes of one
+// built where it now stands. Call refreshShading after it (the lights follow the lighting origin).
+void placeObjects(SceneData& data, const SceneSpec& scene);
 
 // Replaces what a frame of a sequence may change without touching geometry: materials, lights,
 // ambient, background and the render options. The scene must have the same objects as `data`'s.

@@ -16,8 +16,8 @@ using namespace gpu;
 std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs& in) {
   std::vector<ShadedVertex> shaded(data.vertices.size());
   for (size_t i = 0; i < data.vertices.size(); ++i) {
-    const VertexIn& v = data.vertices[i];
-    const ObjectData& object = in.objects[v.object];
+    const ObjectData& object = in.objects[data.vertices[i].object];
+    const VertexIn v = posedVertex(data.vertices[i], object);
     const MaterialData m = vertexMaterial(in.materials[object.material], v.color);
     const vec3 P = lightingPosition(v.position, object.lightOffset);
     const vec3 V = viewVector(P, in.frame);
@@ -68,7 +68,8 @@ vec2 pixelBarycentrics(const FrameData& frame, const ShadedVertex& s0, const Sha
 SurfacePoint surfaceAt(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, vec2 bary) {
   const ObjectData& object = in.objects[tri.w];
   const MaterialData& m = in.materials[object.material];
-  const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
+  const VertexIn a = posedVertex(data.vertices[tri.x], object), b = posedVertex(data.vertices[tri.y], object),
+                 c = posedVertex(data.vertices[tri.z], object);
   if (in.frame.shading == SHADING_FLAT) return flatSurface(a, b, c, object.lightOffset, m);
   return phongSurface(a, b, c, object.lightOffset, m, bary);
 }

@@ -133,6 +133,10 @@ struct Object {
   glm::dmat3 rotation{1.0};
   int material = 0;                  // index into SceneSpec::materials
   bool closed = true;                // back faces culled; primitives true, meshes default false
+  // Placed by a pose (object_pose.h: Scene::add, the file's "pose"): the pose's linear part, which
+  // both renderers apply per vertex to a mesh built in its own coordinates (rotation and scale
+  // then none, translate the pose's translation). Moving such an object builds nothing again.
+  std::optional<glm::dmat3> poseLinear;
   // What the object_id output says for it ("object_id" in the file): its index in the scene's
   // objects where unset. Scene::add gives each added object one for the scene's life.
   std::optional<int32_t> label;

@@ -4,6 +4,7 @@
 
 #include "geometry/transform.h"
 #include "meshio/mesh_file.h"
+#include "scene/object_pose.h"
 
 #include <cmath>
 #include <filesystem>
@@ -27,7 +28,7 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
-    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "textures", "texture_ids", "translate", "up"}},
+    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "textures", "texture_ids", "translate", "up", "pose"}},
 };
 
 
@@ -157,10 +158,36 @@ UpAxis readUp(const Node& node) {
   return up == "y" ? UpAxis::Y : UpAxis::Z;
 }
 
+// A mesh's "pose": 4 rows of 4 numbers placing it as Scene::add does (object_pose.h), in place of
+// "translate", "scale" and "rotate".
+void readPose(const Node& node, Object& object) {
+  const std::optional<Node> pose = node.find("pose");
+  if (!pose) return;
+  for (std::string_view key : {"translate", "scale", "rotate"}) {
+    if (node.find(key)) node.failAt(key, "cannot be given with 'pose'");
+  }
+  requireArray(*pose);
+  if (pose->json().size() != 4) pose->fail("must be 4 rows of 4 numbers, got " + std::to_string(pose->json().size()) + " rows");
+  Matrix4 m{};
+  for (size_t r = 0; r < 4; ++r) {
+    const Node row = pose->element(r);
+    requireArray(row);
+    if (row.json().size() != 4) row.fail("must be 4 numbers, got " + std::to_string(row.json().size()));
+    for (size_t c = 0; c < 4; ++c) m[4 * r + c] = number(row.element(c));
+  }
+  try {
+    placeObject(object, m);
+  } catch (const ArgumentError& error) {
+    const std::string why = error.what();
+    pose->fail(why.rfind("pose: ", 0) == 0 ? why.substr(6) : why);
+  }
+}
+
 void readTransform(const Node& node, Object& object) {
   if (auto scale = node.find("scale")) object.scale = readScale(*scale);
   if (auto rotate = node.find("rotate")) object.rotation = readRotation(*rotate);
   if (auto up = node.find("up")) object.up = readUp(*up);
+  readPose(node, object);
 }
 
 // A glTF file's base colours are its objects' colours unless the scene sets one: a named material,

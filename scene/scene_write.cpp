@@ -3,6 +3,7 @@
 #include "scene/scene_write.h"
 
 #include "image/texture_uri.h"
+#include "scene/object_pose.h"
 
 #include <filesystem>
 
@@ -167,6 +168,13 @@ Json objectJson(const SceneSpec& scene, const Object& object) {
   json["closed"] = object.closed;
   json["material"] = objectMaterialJson(scene, object);
   if (object.label) json["object_id"] = *object.label;
+  if (object.poseLinear) {  // placed by a pose: the pose, for the object to read back posed
+    for (const char* key : {"translate", "scale", "rotate"}) json.erase(key);
+    const Matrix4 m = objectPose(object);
+    Json rows = Json::array();
+    for (int r = 0; r < 4; ++r) rows.push_back(Json::array({m[4 * r], m[4 * r + 1], m[4 * r + 2], m[4 * r + 3]}));
+    json["pose"] = std::move(rows);
+  }
   return json;
 }
 

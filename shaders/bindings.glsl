@@ -137,9 +137,18 @@ VertexIn vertexIn(uint i) {
 }
 
 ObjectData objectData(uint i) {
-  uvec4 a = TEXEL(objectTexels, 2u * i);
-  uvec4 b = TEXEL(objectTexels, 2u * i + 1u);
-  return ObjectData(floats(a).xyz, a.w, floats(b).xyz, b.w);
+  uvec4 a = TEXEL(objectTexels, OBJECT_TEXELS * i);
+  uvec4 b = TEXEL(objectTexels, OBJECT_TEXELS * i + 1u);
+  ObjectData o = ObjectData(floats(a).xyz, a.w, floats(b).xyz, b.w, vec4(0.0f), vec4(0.0f), vec4(0.0f), vec4(0.0f),
+                            vec4(0.0f), vec4(0.0f));
+  if ((b.w & OBJECT_POSED) == 0u) return o;  // the pose is read only where there is one
+  o.linear0 = floats(TEXEL(objectTexels, OBJECT_TEXELS * i + 2u));
+  o.linear1 = floats(TEXEL(objectTexels, OBJECT_TEXELS * i + 3u));
+  o.linear2 = floats(TEXEL(objectTexels, OBJECT_TEXELS * i + 4u));
+  o.normal0 = floats(TEXEL(objectTexels, OBJECT_TEXELS * i + 5u));
+  o.normal1 = floats(TEXEL(objectTexels, OBJECT_TEXELS * i + 6u));
+  o.normal2 = floats(TEXEL(objectTexels, OBJECT_TEXELS * i + 7u));
+  return o;
 }
 
 MaterialData materialData(uint i) {
@@ -216,7 +225,7 @@ void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVer
 // Triangle `id`'s homogeneous vertices and whether its back face is culled.
 void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullBack) {
   uvec4 tri = TEXEL(triangleTexels, id);
-  cullBack = (TEXEL(objectTexels, 2u * tri.w + 1u).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
+  cullBack = (TEXEL(objectTexels, OBJECT_TEXELS * tri.w + 1u).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
   h0 = floats(TEXEL(shadedTexels, tri.x)).xyz;
   h1 = floats(TEXEL(shadedTexels, tri.y)).xyz;
   h2 = floats(TEXEL(shadedTexels, tri.z)).xyz;

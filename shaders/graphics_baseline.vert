@@ -45,8 +45,9 @@ vec4 clipPosition(vec3 h) {
 
 void main() {
   loadUniforms();
-  VertexIn v = vertexIn(gl_VertexIndex);
-  ObjectData object = objectData(v.object);
+  VertexIn stored = vertexIn(gl_VertexIndex);
+  ObjectData object = objectData(stored.object);
+  VertexIn v = posedVertex(stored, object);
   MaterialData m = vertexMaterial(materialData(object.material), v.color);
   vec3 h = toHomogeneous(v.position, object.viewOffset, frame);
   gl_Position = clipPosition(h);

@@ -159,6 +159,30 @@ FN vec3 phongAmbient(MaterialData m, vec3 ambient) {
   return a;
 }
 
+// v / |v|, or 0 for a zero vector.
+FN vec3 unitOrZero(vec3 v) {
+  PRECISE float len = squareRoot(dot3(v, v));
+  PRECISE vec3 u = len > 0.0f ? divide(v, len) : vec3(0.0f);
+  return u;
+}
+
+// Vertex `v` of `object` as every pass uses it: of an object placed by a pose (OBJECT_POSED), its
+// position turned by the pose's linear part (still relative to the object's origin, now in world
+// axes) and its normal by the inverse transpose, made unit again; of any other, as stored (its
+// transform was applied when its mesh was built). The same float operations in every pass, on
+// both renderers.
+FN VertexIn posedVertex(VertexIn v, ObjectData object) {
+  if ((object.flags & OBJECT_POSED) == 0u) return v;
+  VertexIn p = v;
+  PRECISE vec3 position = vec3(dot3(vec3(object.linear0), v.position), dot3(vec3(object.linear1), v.position),
+                               dot3(vec3(object.linear2), v.position));
+  PRECISE vec3 normal = vec3(dot3(vec3(object.normal0), v.normal), dot3(vec3(object.normal1), v.normal),
+                             dot3(vec3(object.normal2), v.normal));
+  p.position = position;
+  p.normal = unitOrZero(normal);
+  return p;
+}
+
 // A vertex's position relative to the lighting origin, in world axes. Lighting is computed in
 // this frame, fixed per scene, so when only the camera moves and no material has a specular term
 // the colours are bitwise the same and a sequence may skip recomputing them.

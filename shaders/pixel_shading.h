@@ -23,13 +23,6 @@ struct SurfacePoint {
   MaterialData m;
 };
 
-// v / |v|, or 0 for a zero vector.
-FN vec3 unitOrZero(vec3 v) {
-  PRECISE float len = squareRoot(dot3(v, v));
-  PRECISE vec3 u = len > 0.0f ? divide(v, len) : vec3(0.0f);
-  return u;
-}
-
 // x0 + b1 (x1 - x0) + b2 (x2 - x0), as Gouraud interpolates colours.
 FN vec3 interpolate3(vec3 x0, vec3 x1, vec3 x2, vec2 b) {
   PRECISE vec3 x = x0 + b.x * (x1 - x0) + b.y * (x2 - x0);

@@ -43,7 +43,8 @@ uint pixelColor(uint id, int x, int y) {
   }
   uint texel = TEXTURED ? pixelTexel(tri, m, bary) : VERTEX_WHITE;
   if (SHADING == SHADING_GOURAUD) return packColor(texturedColor(interpolateColorAt(g, bary), texel));
-  VertexIn a = vertexIn(tri.x), b = vertexIn(tri.y), c = vertexIn(tri.z);
+  VertexIn a = posedVertex(vertexIn(tri.x), object), b = posedVertex(vertexIn(tri.y), object),
+           c = posedVertex(vertexIn(tri.z), object);
   SurfacePoint s;
   if (SHADING == SHADING_FLAT) {
     s = flatSurface(a, b, c, object.lightOffset, m);

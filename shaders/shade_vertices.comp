@@ -16,8 +16,9 @@ layout(constant_id = SPEC_BLINN) const bool BLINN = false;  // Blinn's half vect
 layout(constant_id = SPEC_SHADING) const uint SHADING = SHADING_GOURAUD;
 
 void shadeVertex(uint i) {
-  VertexIn v = vertexIn(i);
-  ObjectData object = objectData(v.object);
+  VertexIn stored = vertexIn(i);
+  ObjectData object = objectData(stored.object);
+  VertexIn v = posedVertex(stored, object);
   MaterialData m = vertexMaterial(materialData(object.material), v.color);
   // Only when the view or an object moved: a loop of 0 or 1 trips, the same for every lane (on
   // lavapipe no cheaper than an if: a loop body runs once, masked, even when no lane enters it).

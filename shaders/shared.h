@@ -62,6 +62,7 @@ PHONGVK_CONST uint SPECULAR_BLINN = 1;
 
 // Object flags.
 PHONGVK_CONST uint OBJECT_CULL_BACK = 1;     // closed surface: back faces are never visible
+PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices turned on the fly (phong.h posedVertex)
 
 // ---- Descriptor bindings: the one table (one set; every pass sees it, bindings.glsl) ----
 // X(name, binding, descriptor type). The host makes its set layouts and descriptor writes from
@@ -144,12 +145,23 @@ struct ShadedVertex {
 
 // Offsets computed in double on the host, so far-away objects keep float precision
 // (local + offset instead of world - eye).
+// An object placed by a pose (OBJECT_POSED) keeps its mesh in its own coordinates; the pose's
+// linear part (rows; w unused) turns its positions and the inverse transpose its normals, per
+// vertex, in the passes, so moving it changes these and no vertex.
 struct ObjectData {
   vec3 viewOffset;     // camera-basis coordinates of (origin - eye); per frame
   uint material;
-  vec3 lightOffset;    // origin - lighting origin (SceneData::lightingOrigin); fixed per scene
+  vec3 lightOffset;    // origin - lighting origin (SceneData::lightingOrigin); changes when a posed object moves
   uint flags;
+  vec4 linear0;        // the pose's linear part, row by row (OBJECT_POSED)
+  vec4 linear1;
+  vec4 linear2;
+  vec4 normal0;        // its inverse transpose, row by row
+  vec4 normal1;
+  vec4 normal2;
 };
+// ObjectData in 16-byte texels (bindings.glsl objectData).
+PHONGVK_CONST uint OBJECT_TEXELS = 8;
 
 struct MaterialData {
   vec3 color;
@@ -226,7 +238,8 @@ struct FrameData {
 #ifdef __cplusplus
 static_assert(sizeof(VertexIn) == 32 && offsetof(VertexIn, normal) == 16);
 static_assert(sizeof(ShadedVertex) == 32);
-static_assert(sizeof(ObjectData) == 32 && offsetof(ObjectData, lightOffset) == 16);
+static_assert(sizeof(ObjectData) == 16 * OBJECT_TEXELS && offsetof(ObjectData, lightOffset) == 16 &&
+              offsetof(ObjectData, normal2) == 112);
 static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && offsetof(MaterialData, ks) == 32);
 static_assert(offsetof(MaterialData, texture) == 40);
 static_assert(sizeof(VertexUv) == 16 && sizeof(TextureData) == 16);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -311,6 +312,37 @@ TEST(SceneHandles, VertexColoursFromArraysMultiplyTheMaterial) {
   EXPECT_EQ(Renderer(Backend::Cpu).render(parseScene(scene.toJson())).rgb, image.rgb);
   coloured.colors.pop_back();
   EXPECT_THROW(TriangleMesh{coloured}, ArgumentError);
+}
+
+// A turn by `angle` about z, scaled along x by `scale`, then shifted by `x`.
+Matrix4 turned(double angle, double x, double scale = 1) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * scale, -s, 0, x, s * scale, c, 0, 0.1, 0, 0, 1, -0.2, 0, 0, 0, 1};
+}
+
+TEST(SceneHandles, AMovedObjectBuildsNothingAndRendersAsOneBuiltWhereItStands) {
+  Renderer cpu(Backend::Cpu), gpu(Backend::Gpu);
+  setenv("PHONGVK_KEY_PATH", "32", 1);  // the 32-bit key path's passes turn posed vertices too
+  Renderer gpu32(Backend::Gpu);
+  unsetenv("PHONGVK_KEY_PATH");
+  Scene scene(96, 64);
+  scene.setRenderSettings({.shading = Shading::Phong});
+  const ObjectId id = scene.add(octahedron(), turned(0.2, 0));
+  for (const Matrix4& pose : {turned(0.9, 0.3, 1.4), IDENTITY_POSE, turned(-0.4, -0.2)}) {
+    scene.setPose(id, pose);
+    Scene fresh(96, 64);
+    fresh.setRenderSettings({.shading = Shading::Phong});
+    fresh.add(octahedron(), pose);
+    const Outputs outputs{.depth = true, .normals = true};
+    const RenderedFrame expected = Renderer(Backend::Cpu).renderOutputs(fresh, outputs);
+    for (Renderer* r : {&cpu, &gpu, &gpu32}) {
+      const RenderedFrame moved = r->renderOutputs(scene, outputs);
+      EXPECT_EQ(moved.image.rgb, expected.image.rgb) << r->deviceName();
+      EXPECT_EQ(moved.depth, expected.depth) << r->deviceName();
+      EXPECT_EQ(moved.normals, expected.normals) << r->deviceName();
+    }
+  }
+  for (Renderer* r : {&cpu, &gpu, &gpu32}) EXPECT_EQ(r->stats().sceneBuilds, 1u) << r->deviceName();
 }
 
 TEST(SceneHandles, AClosedRendererRefusesToRender) {

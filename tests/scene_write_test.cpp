@@ -125,9 +125,10 @@ TEST(SceneWrite, AMeshPlacedByAShearedPoseRoundTripsToTheSameBytes) {
   EXPECT_GT(drawnPixels(reference().render(scene)), 200u);
   expectRoundTrip(scene);
   const auto json = nlohmann::json::parse(scene.toJson());
-  const auto rows = json["objects"][0]["rotate"]["matrix"];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) EXPECT_EQ(rows[r][c].get<double>(), kShearedPose[size_t(4 * r + c)]);
+  const auto rows = json["objects"][0]["pose"];  // the pose itself, for the object to read back posed
+  EXPECT_FALSE(json["objects"][0].contains("rotate"));
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(rows[r][c].get<double>(), kShearedPose[size_t(4 * r + c)]);
 }
 
 TEST(SceneWrite, NamedMaterialsStayNamedAndTheFileDefaultResolvesToItsValues) {

@@ -280,3 +280,44 @@ def test_stats_diff_and_devices_read_by_attribute_and_stay_dicts():
     assert isinstance(result, phongvk.DiffResult) and result.differing == result["differing"] == 0
     devices = phongvk.devices()
     assert devices and devices[0].name == devices[0]["name"]
+
+
+# ---- poses ----
+
+def turn(angle, shift=(0, 0, 0), scale=1.0):
+    c, s = np.cos(angle), np.sin(angle)
+    pose = np.eye(4)
+    pose[:3, :3] = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]]) @ np.diag([scale, 1, 1])
+    pose[:3, 3] = shift
+    return pose
+
+
+def test_a_moving_object_builds_nothing_and_renders_as_one_placed_there():
+    scene = small_scene()
+    handle = scene.add(*octahedron(), pose=turn(0.3))
+    renderers = {name: phongvk.Renderer(name) for name in ("cpu", "gpu")}
+    for k, pose in enumerate([turn(0.5, (0.2, 0, 0)), turn(1.1, (0, 0.3, 0.1), 1.5), np.eye(4), turn(2.0)]):
+        scene.set_pose(handle, pose)
+        moved = {name: r.render(scene, outputs=["color", "depth", "normal"]) for name, r in renderers.items()}
+        fresh = small_scene()
+        fresh.add(*octahedron(), pose=pose)
+        built = both(fresh, ["color", "depth", "normal"])
+        for name in ("color", "depth", "normal"):
+            assert np.array_equal(moved["cpu"][name], moved["gpu"][name]), (k, name)
+            assert np.array_equal(moved["gpu"][name], built[name]), (k, name)
+    assert renderers["gpu"].stats.scene_builds == 1 and renderers["cpu"].stats.scene_builds == 1
+
+
+def test_a_posed_object_writes_its_pose_and_reads_back_the_same():
+    scene = small_scene()
+    scene.add(*octahedron(), pose=turn(0.7, (0.1, 0.2, 0), 1.3), material={"color": [1, 0.5, 0.2]})
+    written = scene.to_dict()
+    assert written["objects"][0]["pose"][0][3] == pytest.approx(0.1)
+    assert "rotate" not in written["objects"][0]
+    assert np.array_equal(both(phongvk.scene_from_dict(written))["color"], both(scene)["color"])
+    bad = dict(written, objects=[dict(written["objects"][0], pose=[[1, 0, 0, 0]] * 4)])
+    with pytest.raises(phongvk.SceneError, match=r"objects\[0\]\.pose: the last row must be 0 0 0 1"):
+        phongvk.scene_from_dict(bad)
+    both_keys = dict(written, objects=[dict(written["objects"][0], scale=2)])
+    with pytest.raises(phongvk.SceneError, match=r"objects\[0\]\.scale: cannot be given with 'pose'"):
+        phongvk.scene_from_dict(both_keys)

@@ -49,7 +49,7 @@ def test_a_scene_built_in_code_renders_the_same_bytes_from_its_dict():
     assert (image != image[0, 0]).any(axis=2).sum() > 1000
     d = scene.to_dict()
     assert d["camera"]["fx"] == 141.5 and d["camera"]["cy"] == 52.0
-    assert d["objects"][0]["rotate"]["matrix"] == sheared[:3, :3].tolist()
+    assert d["objects"][0]["pose"] == sheared.tolist()
     assert len(d["objects"][2]["vertices"]) == 4 and len(d["objects"][2]["normals"]) == 4
     back = phongvk.scene_from_dict(d)
     assert back.camera.intrinsics == scene.camera.intrinsics
