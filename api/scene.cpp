@@ -27,16 +27,14 @@ namespace phongvk {
 
 namespace {
 
-// A mesh given to addMesh, built once, with what it was added with (its material as a scene file's
-// "material": a name or an object of fields): it follows the scene into its other frames
-// (Scene::frame).
+// A mesh given to addMesh, built once, with what it was added with (its material: the default, a
+// name, or its own values): it follows the scene into its other frames (Scene::frame).
 struct AddedMesh {
   ObjectId id;
   std::shared_ptr<const Mesh> mesh;
-  scenejson::Json material;
+  scenejson::MaterialChoice material;
   bool closed = false;
   Matrix4 pose = IDENTITY_POSE;
-  std::shared_ptr<const TextureImage> texture;  // the material's, held in memory (Material::textureImage)
   int32_t label = 0;  // its id in the object_id output (Scene::objectId)
 };
 
@@ -50,7 +48,7 @@ struct AddedLight {
 void appendAdded(SceneSpec& spec, const AddedMesh& added) {
   Object check;
   placeObject(check, added.pose);  // a bad pose throws before the scene changes
-  addMeshObject(spec, added.mesh, added.material, added.closed, added.texture);
+  addMeshObject(spec, added.mesh, added.material, added.closed);
   placeObject(spec.objects.back(), added.pose);
   spec.objects.back().label = added.label;
 }
@@ -121,14 +119,13 @@ struct Scene::State {
 
   // Adds `mesh` with `material` as a scene file's "material"; unchanged where it throws. Its id in
   // the object_id output follows the scene's own objects, one number per add.
-  ObjectId add(std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::Json material, bool closed,
-                std::shared_ptr<const TextureImage> texture = nullptr) {
+  ObjectId add(std::shared_ptr<const Mesh> mesh, const Matrix4& pose, scenejson::MaterialChoice material, bool closed) {
     const uint64_t ownObjects = spec->objects.size() - added.size();
     if (nextObject >= LIGHT_HANDLE || ownObjects + nextObject > LIGHT_HANDLE)
       throw ArgumentError("a scene gives at most 2^31 - 1 object ids");
     const ObjectId id{serial << 32 | nextObject};
     const auto label = int32_t(ownObjects + nextObject - 1);
-    AddedMesh placed{id, std::move(mesh), std::move(material), closed, pose, std::move(texture), label};
+    AddedMesh placed{id, std::move(mesh), std::move(material), closed, pose, label};
     appendAdded(ownSpec(), placed);
     added.push_back(std::move(placed));
     ++nextObject;
@@ -172,7 +169,7 @@ Scene Scene::withRender(const RenderSettings& settings) const {
   return state_->with(std::make_shared<SceneSpec>(withRenderSettings(*state_->spec, settings)));
 }
 
-RenderSettings Scene::renderSettings() const { return renderSettingsOf(*state_->spec); }
+RenderSettings Scene::renderSettings() const { return scenejson::renderSettingsOf(*state_->spec); }
 
 void Scene::setRenderSettings(const RenderSettings& settings) {
   State::replaceSpec(state_, withRenderSettings(*state_->spec, settings));
@@ -207,14 +204,15 @@ ObjectId Scene::add(const MeshArrays& mesh, const Matrix4& pose, const std::stri
 
 ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::optional<Material>& material,
                     bool closed) {
-  const scenejson::Json json = material ? materialJson(*material) : scenejson::Json();
-  std::shared_ptr<const TextureImage> texture;
-  if (material && material->textureImage) texture = TextureAccess::image(*material->textureImage);
-  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, json, closed, std::move(texture));
+  scenejson::MaterialChoice choice;
+  if (material) {
+    choice = materialValues(*material, material->textureImage ? TextureAccess::image(*material->textureImage) : nullptr);
+  }
+  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, std::move(choice), closed);
 }
 
 ObjectId Scene::add(const TriangleMesh& mesh, const Matrix4& pose, const std::string& materialName, bool closed) {
-  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, scenejson::Json(materialName), closed);
+  return State::own(state_).add(TriangleMeshAccess::mesh(mesh), pose, materialName, closed);
 }
 
 void Scene::setPose(ObjectId object, const Matrix4& pose) {

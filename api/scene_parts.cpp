@@ -4,7 +4,7 @@
 #include "base/number_text.h"
 #include "scene/camera.h"
 #include "scene/object_pose.h"
-#include "scene/scene_json.h"
+#include "scene/scene_checks.h"
 
 #include <array>
 #include <cmath>
@@ -12,15 +12,19 @@
 namespace phongvk {
 namespace {
 
-using scenejson::Json;
+using scenejson::toVec;
+using scenejson::Where;
 
-void requireFinite(double value, const std::string& what) {
+// A value given in code that no scene file can hold (JSON has no NaN or infinity): ArgumentError,
+// before the file's checks.
+double requireFinite(double value, const std::string& what) {
   if (!std::isfinite(value)) throw ArgumentError(what + ": must be finite, got " + formatNumber(value));
+  return value;
 }
 
-Json vec3Json(const Vec3& v, const std::string& what) {
+glm::dvec3 finite3(const Vec3& v, const std::string& what) {
   for (int i = 0; i < 3; ++i) requireFinite(v[i], what + "[" + std::to_string(i) + "]");
-  return Json::array({v[0], v[1], v[2]});
+  return toVec(v);
 }
 
 // A camera pose's rotation block must be a rotation: orthonormal columns (within 1e-6) and no mirror.
@@ -68,37 +72,31 @@ Camera cameraFromIntrinsics(double fx, double fy, double cx, double cy, int widt
 
 namespace {
 
-// `camera` at width x height as a scene file's "camera".
-Json cameraJson(const Camera& camera, int width, int height) {
+// `camera` at width x height as the values a scene file's "camera" would give.
+scenejson::CameraValues cameraValues(const Camera& camera, int width, int height) {
+  scenejson::CameraValues c;
+  c.position = finite3(camera.position, "camera.position");
+  c.lookAt = finite3(camera.lookAt, "camera.look_at");
+  c.up = finite3(camera.up, "camera.up");
+  c.width = width;
+  c.height = height;
+  c.nearPlane = requireFinite(camera.nearPlane, "camera.near");
+  c.farPlane = requireFinite(camera.farPlane, "camera.far");
   requireFinite(camera.fov, "camera.fov");
-  requireFinite(camera.nearPlane, "camera.near");
-  requireFinite(camera.farPlane, "camera.far");
-  Json json = {{"position", vec3Json(camera.position, "camera.position")},
-               {"look_at", vec3Json(camera.lookAt, "camera.look_at")},
-               {"up", vec3Json(camera.up, "camera.up")},
-               {"width", width},
-               {"height", height},
-               {"near", camera.nearPlane},
-               {"far", camera.farPlane}};
   if (camera.orthoHeight) {
     if (camera.intrinsics) throw ArgumentError("camera: intrinsics describe a pinhole camera, not an orthographic one");
-    requireFinite(*camera.orthoHeight, "camera.ortho_height");
-    json["projection"] = "orthographic";
-    json["ortho_height"] = *camera.orthoHeight;
-    return json;
+    c.orthographic = true;
+    c.orthoHeight = requireFinite(*camera.orthoHeight, "camera.ortho_height");
+  } else if (camera.intrinsics) {
+    const Intrinsics& k = *camera.intrinsics;
+    c.fx = requireFinite(k.fx, "camera.fx");
+    c.fy = requireFinite(k.fy, "camera.fy");
+    c.cx = requireFinite(k.cx, "camera.cx");
+    c.cy = requireFinite(k.cy, "camera.cy");
+  } else {
+    c.fov = camera.fov;
   }
-  if (!camera.intrinsics) {
-    json["fov"] = camera.fov;
-    return json;
-  }
-  const Intrinsics& k = *camera.intrinsics;
-  for (const auto& [value, name] : {std::pair{k.fx, "fx"}, {k.fy, "fy"}, {k.cx, "cx"}, {k.cy, "cy"}})
-    requireFinite(value, std::string("camera.") + name);
-  json["fx"] = k.fx;
-  json["fy"] = k.fy;
-  json["cx"] = k.cx;
-  json["cy"] = k.cy;
-  return json;
+  return c;
 }
 
 }  // namespace
@@ -106,8 +104,11 @@ Json cameraJson(const Camera& camera, int width, int height) {
 SceneSpec withCamera(const SceneSpec& scene, const Camera& camera) {
   const View current = makeView(scene.camera);
   const bool sized = camera.width > 0 || camera.height > 0;  // else the scene's own size
-  const Json json = cameraJson(camera, sized ? camera.width : current.width, sized ? camera.height : current.height);
-  return withSection(scene, "camera", json.dump());
+  SceneSpec changed = scene;
+  changed.camera = scenejson::cameraSpec(
+      cameraValues(camera, sized ? camera.width : current.width, sized ? camera.height : current.height),
+      Where("camera", scene.path));
+  return changed;
 }
 
 Camera cameraOf(const SceneSpec& scene) {
@@ -128,20 +129,16 @@ Camera cameraOf(const SceneSpec& scene) {
 }
 
 SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights) {
-  Json json = Json::array();
   for (size_t i = 0; i < lights.size(); ++i) {
-    const Light& light = lights[i];
     const std::string at = "lights[" + std::to_string(i) + "]";
-    requireFinite(light.intensity, at + ".intensity");
-    Json entry = {{"intensity", light.intensity}, {"color", vec3Json(light.color, at + ".color")}};
-    if (light.directional) {
-      entry["direction"] = vec3Json(light.direction, at + ".direction");
-    } else {
-      entry["position"] = light.atCamera ? Json("camera") : vec3Json(light.position, at + ".position");
-    }
-    json.push_back(std::move(entry));
+    requireFinite(lights[i].intensity, at + ".intensity");
+    finite3(lights[i].color, at + ".color");
+    finite3(lights[i].directional ? lights[i].direction : lights[i].position,
+            at + (lights[i].directional ? ".direction" : ".position"));
   }
-  return withSection(scene, "lights", json.dump());
+  SceneSpec changed = scene;
+  changed.lights = scenejson::lightSpecs(lights, Where("lights", scene.path));
+  return changed;
 }
 
 std::vector<Light> lightsOf(const SceneSpec& scene) {
@@ -154,44 +151,39 @@ std::vector<Light> lightsOf(const SceneSpec& scene) {
 }
 
 SceneSpec withAmbient(const SceneSpec& scene, const Vec3& ambient) {
-  return withSection(scene, "ambient", vec3Json(ambient, "ambient").dump());
+  SceneSpec changed = scene;
+  changed.ambient = scenejson::color(finite3(ambient, "ambient"), Where("ambient", scene.path));
+  return changed;
 }
 
 Vec3 ambientOf(const SceneSpec& scene) { return {scene.ambient.x, scene.ambient.y, scene.ambient.z}; }
 
-Json materialJson(const Material& m) {
-  for (const auto& [value, key] : {std::pair{m.ka, "ka"}, {m.kd, "kd"}, {m.ks, "ks"}, {m.n, "n"}})
-    requireFinite(value, std::string("material.") + key);
-  Json json = {{"ka", m.ka},
-               {"kd", m.kd},
-               {"ks", m.ks},
-               {"n", m.n},
-               {"attenuation", vec3Json(m.attenuation, "material.attenuation")},
-               {"color", vec3Json(m.color, "material.color")}};
-  if (!m.texture.empty() && m.textureImage)
+scenejson::MaterialValues materialValues(const Material& m, std::shared_ptr<const TextureImage> textureImage) {
+  scenejson::MaterialValues values;
+  values.ka = requireFinite(m.ka, "material.ka");
+  values.kd = requireFinite(m.kd, "material.kd");
+  values.ks = requireFinite(m.ks, "material.ks");
+  values.n = requireFinite(m.n, "material.n");
+  values.attenuation = finite3(m.attenuation, "material.attenuation");
+  values.color = finite3(m.color, "material.color");
+  if (!m.texture.empty() && textureImage)
     throw ArgumentError("material: a texture file (texture) or one held in memory (textureImage), not both");
-  if (!m.texture.empty()) json["texture"] = m.texture;
-  return json;
+  if (!m.texture.empty()) values.texture = m.texture;
+  values.textureImage = std::move(textureImage);
+  return values;
 }
 
 SceneSpec withRenderSettings(const SceneSpec& scene, const RenderSettings& settings) {
-  const Json render = {{"shading", shadingName(settings.shading)},
-                       {"specular", specularName(settings.specular)},
-                       {"interpolation", interpolationName(settings.interpolation)},
-                       {"samples", settings.samples},
-                       {"texture_filter", textureFilterName(settings.textureFilter)}};
-  const Json background = vec3Json(settings.background, "background");
-  return withSection(withSection(scene, "render", render.dump()), "background", background.dump());
-}
-
-RenderSettings renderSettingsOf(const SceneSpec& scene) {
-  const glm::vec3 b = scene.background;
-  return {scene.shading, scene.specular, scene.interpolation, scene.samples, {b.x, b.y, b.z}, scene.textureFilter};
+  SceneSpec changed = scene;
+  scenejson::setRenderSettings(changed, settings, Where("render", scene.path));
+  changed.background = scenejson::unitColor(finite3(settings.background, "background"), Where("background", scene.path));
+  return changed;
 }
 
 SceneSpec sceneInCode(int width, int height) {
-  const SceneSpec camera = withSection(SceneSpec{}, "camera", cameraJson(Camera{}, width, height).dump());
-  SceneSpec spec = withLights(camera, {Light{.atCamera = true}});
+  SceneSpec spec;
+  spec.camera = scenejson::cameraSpec(cameraValues(Camera{}, width, height), Where("camera"));
+  spec.lights = scenejson::lightSpecs({Light{.atCamera = true}}, Where("lights"));
   spec.materials.push_back(noFallOffMaterial());  // the default material (Scene(width, height))
   spec.defaultMaterial = int(spec.materials.size()) - 1;
   return spec;
@@ -207,9 +199,10 @@ const char* nameOf(E value, const std::array<const char*, N>& names) {
   return index < N ? names[index] : "";
 }
 
-// The choice `name` stands for, read as a scene file's render.KEY.
-SceneSpec renderOption(const char* key, const std::string& name) {
-  return withSection(SceneSpec{}, "render", Json{{key, name}}.dump());
+// The choice `name` stands for, checked as a scene file's render.KEY.
+template <typename E, size_t N>
+E renderOption(const char* key, const std::string& name, const std::array<const char*, N>& names) {
+  return scenejson::choice<E>(name, names, Where(std::string("render.") + key));
 }
 
 }  // namespace
@@ -217,12 +210,14 @@ SceneSpec renderOption(const char* key, const std::string& name) {
 const char* shadingName(Shading shading) { return nameOf(shading, SHADING_NAMES); }
 const char* specularName(Specular specular) { return nameOf(specular, SPECULAR_NAMES); }
 const char* interpolationName(Interpolation interpolation) { return nameOf(interpolation, INTERPOLATION_NAMES); }
-Shading parseShading(const std::string& name) { return renderOption("shading", name).shading; }
-Specular parseSpecular(const std::string& name) { return renderOption("specular", name).specular; }
+Shading parseShading(const std::string& name) { return renderOption<Shading>("shading", name, SHADING_NAMES); }
+Specular parseSpecular(const std::string& name) { return renderOption<Specular>("specular", name, SPECULAR_NAMES); }
 Interpolation parseInterpolation(const std::string& name) {
-  return renderOption("interpolation", name).interpolation;
+  return renderOption<Interpolation>("interpolation", name, INTERPOLATION_NAMES);
 }
 const char* textureFilterName(TextureFilter filter) { return nameOf(filter, TEXTURE_FILTER_NAMES); }
-TextureFilter parseTextureFilter(const std::string& name) { return renderOption("texture_filter", name).textureFilter; }
+TextureFilter parseTextureFilter(const std::string& name) {
+  return renderOption<TextureFilter>("texture_filter", name, TEXTURE_FILTER_NAMES);
+}
 
 }  // namespace phongvk

@@ -1,12 +1,12 @@
-// scene_parts.h — the typed camera, lights, materials, render settings and poses
-// (include/phongvk/scene_parts.h) to and from the scene model: each becomes the scene file's
-// section (or material object) and goes through its checks (scene.h withSection, scene_sections.h
-// MaterialTable), so a typed value and a file say the same and fail with the same messages.
+// scene_parts.h — the typed camera, lights, materials and render settings
+// (include/phongvk/scene_parts.h) to and from the scene model: each goes through the checks a
+// scene file's section gets (scene/scene_checks.h), so a typed value and a file say the same and
+// fail with the same messages; values no file can hold (NaN, infinity) are ArgumentErrors first.
 #pragma once
 
 #include "phongvk/scene_parts.h"
 #include "scene/scene.h"
-#include "scene/scene_json.h"
+#include "scene/scene_checks.h"
 
 #include <string>
 #include <vector>
@@ -25,13 +25,13 @@ std::vector<Light> lightsOf(const SceneSpec& scene);
 SceneSpec withAmbient(const SceneSpec& scene, const Vec3& ambient);
 Vec3 ambientOf(const SceneSpec& scene);
 
-// `material` as a scene file's material object, for the scene's MaterialTable to read;
-// ArgumentError naming material.KEY for a value that is not finite.
-scenejson::Json materialJson(const Material& material);
+// `material` (its texture held in memory, if any, as `textureImage`) as the values a scene file's
+// material object gives, for the scene's MaterialTable to check; ArgumentError naming material.KEY
+// for a value that is not finite, or for both kinds of texture.
+scenejson::MaterialValues materialValues(const Material& material, std::shared_ptr<const TextureImage> textureImage);
 
 // `scene` with `settings` (its "render" and "background"); SceneError as a file's.
 SceneSpec withRenderSettings(const SceneSpec& scene, const RenderSettings& settings);
-RenderSettings renderSettingsOf(const SceneSpec& scene);
 
 // The scene Scene(width, height) starts from: the default Camera at that size, one white light at
 // the camera, no objects.

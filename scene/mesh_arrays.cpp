@@ -120,8 +120,8 @@ Mesh meshFromArrays(const MeshArrays& a) {
   return mesh;
 }
 
-void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::Json& material, bool closed,
-                   std::shared_ptr<const TextureImage> texture) {
+void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::MaterialChoice& material,
+                   bool closed) {
   Object object;
   object.shape = Shape::Mesh;
   object.jsonPath = "objects[" + std::to_string(scene.objects.size()) + "]";
@@ -132,15 +132,8 @@ void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const sce
   const size_t materials = scene.materials.size();
   const std::optional<int> defaultMaterial = scene.defaultMaterial;
   scenejson::MaterialTable table(scene, "");
-  std::optional<scenejson::Node> node;
-  if (!material.is_null()) node.emplace(material, object.jsonPath + ".material", scene.path);
   try {
-    object.material = table.forObject(node);
-    if (texture) {
-      if (!material.is_object() || material.contains("texture"))
-        throw std::logic_error("addMeshObject: a texture held in memory needs an inline material without one");
-      scene.materials[size_t(object.material)].textureImage = std::move(texture);
-    }
+    object.material = table.forObject(material, scenejson::Where(object.jsonPath + ".material", scene.path));
   } catch (...) {
     scene.materials.erase(scene.materials.begin() + ptrdiff_t(materials), scene.materials.end());
     scene.defaultMaterial = defaultMaterial;

@@ -5,6 +5,7 @@
 #include "geometry/mesh.h"
 #include "phongvk/mesh.h"
 #include "scene/scene.h"
+#include "scene/scene_checks.h"
 #include "scene/scene_json.h"
 
 #include <memory>
@@ -19,12 +20,10 @@ namespace phongvk {
 Mesh meshFromArrays(const MeshArrays& arrays);
 
 // Appends a mesh built from arrays (meshFromArrays, once: a scene's added meshes follow it into its
-// other frames) as a mesh object ("objects[N]") to `scene`, with `material`: null for the default
-// material, a string naming one of the scene's materials, or an object of material fields, read
-// like a scene file's "material" (messages name "objects[N].material"). `texture`, if any, is the
-// inline material's texture, held in memory (its fields name none then). Throws SceneError for a
-// bad material; `scene` is unchanged then.
-void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::Json& material, bool closed,
-                   std::shared_ptr<const TextureImage> texture = nullptr);
+// other frames) as a mesh object ("objects[N]") to `scene`, with `material`: the scene's default,
+// one of its materials by name, or values checked as a scene file's material object (messages name
+// "objects[N].material"). Throws SceneError for a bad material; `scene` is unchanged then.
+void addMeshObject(SceneSpec& scene, std::shared_ptr<const Mesh> mesh, const scenejson::MaterialChoice& material,
+                   bool closed);
 
 }  // namespace phongvk

@@ -23,27 +23,44 @@ const Keys kSceneKeys = {"camera",  "background", "ambient", "lights",
 const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples", "texture_filter"};
 
 // Samples per pixel: a square of 1 to 4 on a side.
-int samplesPerPixel(const Node& node) {
-  const int samples = integer(node, 1, 16);
+int samplesPerPixel(int samples, const Where& at) {
+  inRange(samples, 1, 16, at);
   const int side = int(std::lround(std::sqrt(double(samples))));
-  if (side * side != samples) node.fail("must be 1, 4, 9 or 16 (a regular grid of samples per pixel), got " + std::to_string(samples));
+  if (side * side != samples) at.fail("must be 1, 4, 9 or 16 (a regular grid of samples per pixel), got " + std::to_string(samples));
   return samples;
 }
 
-// "render": interpolation, shading, specular model, samples per pixel and texture filter (docs/DESIGN.md).
+// "render": interpolation, shading, specular model, samples per pixel and texture filter
+// (docs/DESIGN.md), its keys and types checked, over the scene's own (the values are
+// setRenderSettings').
 void readRender(const Node& node, SceneSpec& scene) {
   requireObject(node);
   checkKeys(node, kRenderKeys);
-  if (auto v = node.find("interpolation")) scene.interpolation = choice<Interpolation>(*v, INTERPOLATION_NAMES);
-  if (auto v = node.find("shading")) scene.shading = choice<Shading>(*v, SHADING_NAMES);
-  if (auto v = node.find("specular")) scene.specular = choice<Specular>(*v, SPECULAR_NAMES);
-  if (auto v = node.find("samples")) scene.samples = samplesPerPixel(*v);
-  if (auto v = node.find("texture_filter")) scene.textureFilter = choice<TextureFilter>(*v, TEXTURE_FILTER_NAMES);
+  RenderSettings s = renderSettingsOf(scene);
+  if (auto v = node.find("interpolation")) s.interpolation = choice<Interpolation>(*v, INTERPOLATION_NAMES);
+  if (auto v = node.find("shading")) s.shading = choice<Shading>(*v, SHADING_NAMES);
+  if (auto v = node.find("specular")) s.specular = choice<Specular>(*v, SPECULAR_NAMES);
+  if (auto v = node.find("samples")) s.samples = integer(*v, 1, 16);
+  if (auto v = node.find("texture_filter")) s.textureFilter = choice<TextureFilter>(*v, TEXTURE_FILTER_NAMES);
+  setRenderSettings(scene, s, node.where());
 }
 
 }  // namespace
 
 namespace scenejson {
+
+void setRenderSettings(SceneSpec& scene, const RenderSettings& s, const Where& at) {
+  scene.interpolation = choice(s.interpolation, INTERPOLATION_NAMES, at.at("interpolation"));
+  scene.shading = choice(s.shading, SHADING_NAMES, at.at("shading"));
+  scene.specular = choice(s.specular, SPECULAR_NAMES, at.at("specular"));
+  scene.samples = samplesPerPixel(s.samples, at.at("samples"));
+  scene.textureFilter = choice(s.textureFilter, TEXTURE_FILTER_NAMES, at.at("texture_filter"));
+}
+
+RenderSettings renderSettingsOf(const SceneSpec& scene) {
+  const glm::vec3 b = scene.background;
+  return {scene.shading, scene.specular, scene.interpolation, scene.samples, {b.x, b.y, b.z}, scene.textureFilter};
+}
 
 SceneSpec readScene(const Node& root, const std::string& path, const std::string& baseDir, bool objectsLater) {
   requireObject(root);
@@ -70,18 +87,6 @@ FileVersion fileVersion(const std::string& path) {
   const auto modified = std::filesystem::last_write_time(path, error);
   if (!error) version.modified = std::chrono::duration_cast<std::chrono::nanoseconds>(modified.time_since_epoch()).count();
   return version;
-}
-
-SceneSpec withSection(SceneSpec scene, const std::string& key, const std::string& json) {
-  const Json value = parseJson(json, scene.path);
-  const Node node(value, key, scene.path);
-  if (key == "camera") scene.camera = readCamera(node);
-  else if (key == "lights") scene.lights = readLights(node);
-  else if (key == "background") scene.background = unitColor(node);
-  else if (key == "ambient") scene.ambient = color(node);
-  else if (key == "render") readRender(node, scene);
-  else throw std::logic_error("withSection: no section '" + key + "'");
-  return scene;
 }
 
 std::string readSceneText(const std::string& path) {

@@ -167,13 +167,6 @@ struct SceneSpec {
   int shareParts = 1;
 };
 
-// `scene` with the scene file's top-level section `key` ("camera", "lights", "background",
-// "ambient" or "render") read from `json` and validated as the file's section of that name
-// (SceneError "camera.fov: ..."). "render" replaces the options `json` names and keeps the others;
-// the other sections are replaced whole. How a scene built in code takes a typed camera, lights or
-// render settings (api/scene_parts.cpp): one set of checks and messages for both.
-SceneSpec withSection(SceneSpec scene, const std::string& key, const std::string& json);
-
 // Reads and validates a scene file. Throws SceneError naming the file and the JSON path.
 // A file with an "animate" block gives its frame 0 (animate.h has the other frames).
 SceneSpec loadSceneSpec(const std::string& path);

@@ -156,10 +156,16 @@ Json parseJson(const std::string& text, const std::string& file) {
 Node::Node(const Json& value, std::string path, const std::string& file)
     : value_(&value), path_(std::move(path)), file_(&file) {}
 
-void Node::fail(const std::string& what) const {
-  throw SceneError((file_->empty() ? "" : *file_ + ": ") + (path_.empty() ? "top level" : path_) + ": " +
+Where Where::at(std::string_view key) const { return Where(childPath(path_, key), file_); }
+
+Where Where::element(size_t index) const { return Where(path_ + "[" + std::to_string(index) + "]", file_); }
+
+void Where::fail(const std::string& what) const {
+  throw SceneError((file_.empty() ? "" : file_ + ": ") + (path_.empty() ? "top level" : path_) + ": " +
                    shortened(what, 1000));
 }
+
+void Node::fail(const std::string& what) const { where().fail(what); }
 
 void Node::failAt(std::string_view key, const std::string& what) const {
   Node(*value_, childPath(path_, key), *file_).fail(what);
@@ -211,34 +217,52 @@ void checkKeys(const Node& object, const Keys& allowed, const Keys& usedElsewher
 
 double number(const Node& node) { return numberAs(node, "a number"); }
 
-double atLeast(const Node& node, double min) {
-  double value = number(node);
-  if (value < min) node.fail("must be >= " + formatNumber(min) + ", got " + formatNumber(value));
+double atLeast(double value, double min, const Where& at) {
+  if (value < min) at.fail("must be >= " + formatNumber(min) + ", got " + formatNumber(value));
   return value;
 }
 
-double positive(const Node& node) {
-  double value = number(node);
-  if (value <= 0) node.fail("must be > 0, got " + formatNumber(value));
+double positive(double value, const Where& at) {
+  if (value <= 0) at.fail("must be > 0, got " + formatNumber(value));
   return value;
 }
 
-double inRange(const Node& node, double min, double max) {
-  double value = number(node);
+double inRange(double value, double min, double max, const Where& at) {
   if (value < min || value > max) {
-    node.fail("must be between " + formatNumber(min) + " and " + formatNumber(max) + ", got " +
-              formatNumber(value));
+    at.fail("must be between " + formatNumber(min) + " and " + formatNumber(max) + ", got " + formatNumber(value));
   }
   return value;
 }
 
-double inOpenRange(const Node& node, double min, double max) {
-  double value = number(node);
+double inOpenRange(double value, double min, double max, const Where& at) {
   if (value <= min || value >= max) {
-    node.fail("must be > " + formatNumber(min) + " and < " + formatNumber(max) + ", got " +
-              formatNumber(value));
+    at.fail("must be > " + formatNumber(min) + " and < " + formatNumber(max) + ", got " + formatNumber(value));
   }
   return value;
+}
+
+int inRange(int value, int min, int max, const Where& at) {
+  if (value < min || value > max) {
+    at.fail("must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " +
+            std::to_string(value));
+  }
+  return value;
+}
+
+float toFloat(double value, const Where& at) {
+  if (std::abs(value) > FLT_MAX) at.fail("too large for a 32-bit float, got " + formatNumber(value));
+  return static_cast<float>(value);
+}
+
+glm::dvec3 checked3(const glm::dvec3& v, ValueCheck check, const Where& at) {
+  return {check(v.x, at.element(0)), check(v.y, at.element(1)), check(v.z, at.element(2))};
+}
+
+double atLeast(const Node& node, double min) { return atLeast(number(node), min, node.where()); }
+double positive(const Node& node) { return positive(number(node), node.where()); }
+double inRange(const Node& node, double min, double max) { return inRange(number(node), min, max, node.where()); }
+double inOpenRange(const Node& node, double min, double max) {
+  return inOpenRange(number(node), min, max, node.where());
 }
 
 int integer(const Node& node, int min, int max) {
@@ -252,12 +276,7 @@ int integer(const Node& node, int min, int max) {
   return static_cast<int>(value);
 }
 
-float toFloat(const Node& node, double value) {
-  if (std::abs(value) > FLT_MAX) {
-    node.fail("too large for a 32-bit float, got " + formatNumber(value));
-  }
-  return static_cast<float>(value);
-}
+float toFloat(const Node& node, double value) { return toFloat(value, node.where()); }
 
 bool boolean(const Node& node) {
   if (!node.json().is_boolean()) failType(node, "true or false");

@@ -24,6 +24,22 @@ using Keys = std::vector<std::string_view>;
 // and a duplicate key name their JSON path.
 Json parseJson(const std::string& text, const std::string& file);
 
+// Where a value sits: its JSON path and its file (none: empty). The checks of a scene's values
+// take one, so a value read from a file and the same value given in code (scene_parts.h) fail
+// with the same message: "<file>: <path>: <what is wrong>".
+class Where {
+ public:
+  explicit Where(std::string path, std::string file = "") : path_(std::move(path)), file_(std::move(file)) {}
+  const std::string& path() const { return path_; }
+  Where at(std::string_view key) const;  // "camera" -> "camera.fov"
+  Where element(size_t index) const;     // "camera.position" -> "camera.position[0]"
+  [[noreturn]] void fail(const std::string& what) const;
+
+ private:
+  std::string path_;
+  std::string file_;
+};
+
 // A JSON value together with where it sits, so every check can say where it failed.
 class Node {
  public:
@@ -31,6 +47,7 @@ class Node {
 
   const Json& json() const { return *value_; }
   const std::string& path() const { return path_; }
+  Where where() const { return Where(path_, *file_); }
 
   [[noreturn]] void fail(const std::string& what) const;
   // Fails at a member that may be absent, e.g. "camera.resolution" for an image size that
@@ -64,6 +81,18 @@ void requireArray(const Node& node);
 void checkKeys(const Node& object, const Keys& allowed, const Keys& usedElsewhere = {},
                std::string_view whyNotHere = {});
 
+// The checks of a number wherever it came from, failing at `at` (the Node forms below read a JSON
+// number first and check it with these).
+double atLeast(double value, double min, const Where& at);                  // >= min
+double positive(double value, const Where& at);                             // > 0
+double inRange(double value, double min, double max, const Where& at);      // min <= x <= max
+double inOpenRange(double value, double min, double max, const Where& at);  // min < x < max
+int inRange(int value, int min, int max, const Where& at);
+float toFloat(double value, const Where& at);
+// Each of v's three elements checked by `check` at at[i].
+using ValueCheck = double (*)(double, const Where&);
+glm::dvec3 checked3(const glm::dvec3& v, ValueCheck check, const Where& at);
+
 // Numbers: JSON numbers only (no bools, no strings), always finite.
 double number(const Node& node);
 double atLeast(const Node& node, double min);                  // >= min
@@ -78,17 +107,26 @@ float toFloat(const Node& node, double value);
 bool boolean(const Node& node);
 std::string string(const Node& node);
 
-// The value of an enumerated option: the index of `node`'s string among `names` (joined for the
-// message when it is none of them).
+// The value of an enumerated option: the index of `value` among `names` (joined for the message
+// when it is none of them).
 template <typename E, size_t N>
-E choice(const Node& node, const std::array<const char*, N>& names) {
-  const std::string value = string(node);
+E choice(const std::string& value, const std::array<const char*, N>& names, const Where& at) {
   std::string list;
   for (size_t i = 0; i < N; ++i) {
     if (value == names[i]) return E(i);
     list += (i ? ", " : "") + std::string(names[i]);
   }
-  node.fail("must be one of " + list + ", got '" + value + "'");
+  at.fail("must be one of " + list + ", got '" + value + "'");
+}
+template <typename E, size_t N>
+E choice(const Node& node, const std::array<const char*, N>& names) {
+  return choice<E>(string(node), names, node.where());
+}
+// An enumerated option given in code: one of `names`' choices, else the file's message for a name
+// that is none of them ("").
+template <typename E, size_t N>
+E choice(E value, const std::array<const char*, N>& names, const Where& at) {
+  return choice<E>(size_t(value) < N ? std::string(names[size_t(value)]) : std::string(), names, at);
 }
 
 // An array of exactly 3 numbers, each read (and range checked) by `element`.

@@ -10,39 +10,64 @@ namespace {
 const Keys kLightKeys = {"position", "direction", "intensity", "color"};
 const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color", "texture"};
 
-LightSpec readLight(const Node& node) {
+// The file's light as a value, its keys and types checked (the values are lightSpec's).
+Light lightValues(const Node& node) {
   requireObject(node);
   checkKeys(node, kLightKeys);
-  LightSpec light;
+  Light light;
+  const auto array = [](const Node& n) {
+    const glm::dvec3 v = vec3(n);
+    return Vec3{v.x, v.y, v.z};
+  };
   const std::optional<Node> direction = node.find("direction");
   if (direction) {
     if (node.find("position")) node.failAt("direction", "a light has a position or a direction, not both");
     light.directional = true;
-    light.direction = usableDirection(*direction, vec3(*direction));
+    light.direction = array(*direction);
   }
-  if (auto intensity = node.find("intensity")) light.intensity = nonNegativeFloat(*intensity);
-  if (auto lightColor = node.find("color")) light.color = color(*lightColor);
+  if (auto intensity = node.find("intensity")) light.intensity = number(*intensity);
+  if (auto lightColor = node.find("color")) light.color = array(*lightColor);
   if (direction) return light;
   const Node position = node.require("position");
   if (position.json().is_string()) {
     if (string(position) != "camera") position.fail("must be a point or \"camera\", got '" + string(position) + "'");
     light.atCamera = true;
   } else {
-    light.position = point(position);
+    light.position = array(position);
   }
-  if (auto intensity = node.find("intensity")) light.intensity = nonNegativeFloat(*intensity);
-  if (auto lightColor = node.find("color")) light.color = color(*lightColor);
   return light;
 }
 
 }  // namespace
+
+LightSpec lightSpec(const Light& light, const Where& at) {
+  LightSpec spec;
+  if (light.directional) {
+    spec.directional = true;
+    spec.direction = usableDirection(toVec(light.direction), at.at("direction"));
+  }
+  spec.intensity = nonNegativeFloat(light.intensity, at.at("intensity"));
+  spec.color = color(toVec(light.color), at.at("color"));
+  if (light.directional) return spec;
+  spec.atCamera = light.atCamera;
+  if (!light.atCamera) spec.position = point(toVec(light.position), at.at("position"));
+  return spec;
+}
+
+std::vector<LightSpec> lightSpecs(const std::vector<Light>& lights, const Where& at) {
+  if (lights.size() > MAX_LIGHTS)
+    at.fail("a scene has at most " + std::to_string(MAX_LIGHTS) + " lights, this one " + std::to_string(lights.size()));
+  std::vector<LightSpec> specs;
+  for (size_t i = 0; i < lights.size(); ++i) specs.push_back(lightSpec(lights[i], at.element(i)));
+  return specs;
+}
 
 std::vector<LightSpec> readLights(const Node& node) {
   requireArray(node);
   if (node.json().size() > MAX_LIGHTS)
     node.fail("a scene has at most " + std::to_string(MAX_LIGHTS) + " lights, this one " + std::to_string(node.json().size()));
   std::vector<LightSpec> lights;
-  for (size_t i = 0; i < node.json().size(); ++i) lights.push_back(readLight(node.element(i)));
+  for (size_t i = 0; i < node.json().size(); ++i) lights.push_back(lightSpec(lightValues(node.element(i)), node.element(i).where()));
   return lights;
 }
 
@@ -51,42 +76,57 @@ namespace {
 // 1 / (a + b d + c d^2) needs a + b d + c d^2 > 0 for every distance d > 0: a and c may not be
 // negative (small and large d), not all zero, and a negative b needs the quadratic to have no
 // real root (b^2 < 4ac). Checked on the floats the renderers will use.
-glm::vec3 readAttenuation(const Node& node) {
-  glm::vec3 abc = glm::vec3(vec3(node, floatComponent));
+glm::vec3 attenuation(const glm::dvec3& value, const Where& at) {
+  const glm::vec3 abc = glm::vec3(checked3(value, floatComponent, at));
   double a = abc.x, b = abc.y, c = abc.z;
   bool allZero = a == 0 && b == 0 && c == 0;
   if (a < 0 || c < 0 || allZero || !(b >= 0 || b * b < 4 * a * c)) {
-    node.fail("a + b*d + c*d^2 must stay positive for all distances d > 0, got [" +
-              formatNumber(abc.x) + ", " + formatNumber(abc.y) + ", " + formatNumber(abc.z) + "]");
+    at.fail("a + b*d + c*d^2 must stay positive for all distances d > 0, got [" + formatNumber(abc.x) + ", " +
+            formatNumber(abc.y) + ", " + formatNumber(abc.z) + "]");
   }
   return abc;
 }
 
-}  // namespace
-
-MaterialSpec readMaterial(const Node& node, const std::string& baseDir) {
+// The file's material as values, its keys and types checked (the values are materialSpec's).
+MaterialValues materialValues(const Node& node) {
   requireObject(node);
   checkKeys(node, kMaterialKeys);
-  MaterialSpec material;
-  if (auto ka = node.find("ka")) material.ka = nonNegativeFloat(*ka);
-  if (auto kd = node.find("kd")) material.kd = nonNegativeFloat(*kd);
-  if (auto ks = node.find("ks")) material.ks = nonNegativeFloat(*ks);
-  if (auto n = node.find("n")) material.n = nonNegativeFloat(*n);
-  if (auto attenuation = node.find("attenuation")) {
-    material.attenuation = readAttenuation(*attenuation);
+  MaterialValues m;
+  for (auto [key, field] : {std::pair{"ka", &m.ka}, {"kd", &m.kd}, {"ks", &m.ks}, {"n", &m.n}}) {
+    if (auto value = node.find(key)) *field = number(*value);
   }
-  if (auto materialColor = node.find("color")) material.color = color(*materialColor);
-  if (auto texture = node.find("texture")) {
-    const std::string source = string(*texture);
-    if (source.empty()) texture->fail("must name a PNG or JPEG file or be a data URI of one, got ''");
+  if (auto value = node.find("attenuation")) m.attenuation = vec3(*value);
+  if (auto value = node.find("color")) m.color = vec3(*value);
+  if (auto texture = node.find("texture")) m.texture = string(*texture);
+  return m;
+}
+
+}  // namespace
+
+MaterialSpec materialSpec(const MaterialValues& m, const std::string& baseDir, const Where& at) {
+  MaterialSpec material;
+  material.ka = nonNegativeFloat(m.ka, at.at("ka"));
+  material.kd = nonNegativeFloat(m.kd, at.at("kd"));
+  material.ks = nonNegativeFloat(m.ks, at.at("ks"));
+  material.n = nonNegativeFloat(m.n, at.at("n"));
+  material.attenuation = attenuation(m.attenuation, at.at("attenuation"));
+  material.color = color(m.color, at.at("color"));
+  material.textureImage = m.textureImage;
+  if (m.texture) {
+    const std::string& source = *m.texture;
+    if (source.empty()) at.at("texture").fail("must name a PNG or JPEG file or be a data URI of one, got ''");
     try {
       material.textureImage = sceneTexture(source, baseDir);
     } catch (const SceneError& error) {
-      texture->fail(error.what());
+      at.at("texture").fail(error.what());
     }
     material.texture = textureSourceOf(source, baseDir);
   }
   return material;
+}
+
+MaterialSpec readMaterial(const Node& node, const std::string& baseDir) {
+  return materialSpec(materialValues(node), baseDir, node.where());
 }
 
 }  // namespace phongvk::scenejson

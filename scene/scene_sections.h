@@ -6,6 +6,7 @@
 
 #include "base/regular_file.h"
 #include "scene/scene.h"
+#include "scene/scene_checks.h"
 #include "scene/scene_json.h"
 
 #include <memory>
@@ -31,6 +32,14 @@ glm::dvec3 point(const Node& node);
 double length(const Node& node);  // > 0 and <= MAX_COORDINATE
 // A direction the camera basis can normalize: length neither zero nor overflowing.
 glm::dvec3 usableDirection(const Node& node, glm::dvec3 direction);
+// The same checks of values wherever they came from (scene_checks.h), failing at `at`.
+float nonNegativeFloat(double value, const Where& at);
+double nonNegativeComponent(double value, const Where& at);
+double unitComponent(double value, const Where& at);
+double floatComponent(double value, const Where& at);
+double coordinate(double value, const Where& at);
+glm::dvec3 point(const glm::dvec3& value, const Where& at);
+glm::dvec3 usableDirection(const glm::dvec3& direction, const Where& at);
 // ---- sections ----
 CameraSpec readCamera(const Node& camera);       // scene_camera.cpp
 std::vector<LightSpec> readLights(const Node& node);  // scene_lighting.cpp
@@ -67,12 +76,19 @@ class MaterialTable {
 
   int forObject(const std::optional<Node>& node) {
     if (!node) return defaultIndex();
-    if (node->json().is_string()) return named(*node);
+    if (node->json().is_string()) return named(string(*node), node->where());
     if (!node->json().is_object()) {
       node->fail(std::string("must be a material name or a material object, got ") +
                  node->json().type_name());
     }
     return add(readMaterial(*node, baseDir_));
+  }
+
+  // The same for a material given in code: the default, a name, or values checked at `at`.
+  int forObject(const MaterialChoice& choice, const Where& at) {
+    if (const auto* name = std::get_if<std::string>(&choice)) return named(*name, at);
+    if (const auto* values = std::get_if<MaterialValues>(&choice)) return add(materialSpec(*values, baseDir_, at));
+    return defaultIndex();
   }
 
  private:
@@ -81,13 +97,12 @@ class MaterialTable {
     return *scene_.defaultMaterial;
   }
 
-  int named(const Node& node) const {
+  int named(const std::string& name, const Where& at) const {
     const std::vector<std::string>& names = scene_.materialNames;
-    std::string name = string(node);
     for (size_t i = 0; i < names.size(); ++i) {
       if (names[i] == name) return int(i);
     }
-    node.fail("unknown material '" + name + "' (" + describeNames() + ")");
+    at.fail("unknown material '" + name + "' (" + describeNames() + ")");
   }
 
   std::string describeNames() const {

@@ -152,7 +152,7 @@ TEST(SceneSpec, RenderModesDefaultToThePapersAndCanBeChanged) {
   EXPECT_EQ(scene.shading, Shading::Phong);
   EXPECT_EQ(scene.specular, Specular::Blinn);
   EXPECT_EQ(scene.samples, 9);
-  const SceneSpec flat = withSection(scene, "render", R"({"shading": "flat", "samples": 1})");
+  const SceneSpec flat = test::withRenderOptions(scene, R"({"shading": "flat", "samples": 1})");
   EXPECT_EQ(flat.shading, Shading::Flat);
   EXPECT_EQ(flat.specular, Specular::Blinn) << "options not named keep the scene's";
   EXPECT_EQ(flat.samples, 1);

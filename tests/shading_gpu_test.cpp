@@ -99,7 +99,7 @@ TEST(ShadingLayouts, EveryLayoutAndOutputGivesTheReferenceBytes) {
   VulkanContext context = createContext({-1, true});
   for (const char* file : {"scenes/floor_and_walls.json", "scenes/paper/fig3_two_lights.json", "scenes/stress/near_plane.json"}) {
     for (const char* mode : {R"({"shading": "flat"})", R"({"shading": "phong", "specular": "blinn"})"}) {
-      const SceneSpec spec = withSection(loadSceneSpec(test::sourcePath(file)), "render", mode);
+      const SceneSpec spec = test::withRenderOptions(loadSceneSpec(test::sourcePath(file)), mode);
       const SceneData data = buildSceneData(spec);
       const FrameInputs in = makeFrame(data, makeView(withImageSize(spec.camera, 320, 240)));
       const RenderOutput reference = renderReference(data, in);

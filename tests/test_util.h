@@ -3,6 +3,7 @@
 
 #include "phongvk/phongvk.h"
 #include "prepare/scene_data.h"
+#include "scene/scene_checks.h"
 #include "scene/scene_json.h"
 
 #include <gtest/gtest.h>
@@ -96,8 +97,7 @@ CommandResult runCliUnprivileged(const std::string& args);
 // `scene` with the render options of `json`, an object of a scene file's "render" keys
 // ({"shading": "phong", "samples": 4}), in place of its own; the options it does not name keep the
 // scene's. The tests' render modes are written as a scene file writes them.
-inline Scene withRenderOptions(const Scene& scene, const std::string& json) {
-  RenderSettings settings = scene.renderSettings();
+inline RenderSettings withRenderOptions(RenderSettings settings, const std::string& json) {
   const scenejson::Json options = scenejson::Json::parse(json);
   for (const auto& [key, value] : options.items()) {
     if (key == "shading") settings.shading = parseShading(value.get<std::string>());
@@ -107,7 +107,17 @@ inline Scene withRenderOptions(const Scene& scene, const std::string& json) {
     else if (key == "texture_filter") settings.textureFilter = value.get<std::string>() == "nearest" ? TextureFilter::Nearest : TextureFilter::Bilinear;
     else ADD_FAILURE() << "no render option '" << key << "'";
   }
-  return scene.withRender(settings);
+  return settings;
+}
+
+inline Scene withRenderOptions(const Scene& scene, const std::string& json) {
+  return scene.withRender(withRenderOptions(scene.renderSettings(), json));
+}
+
+// The same for a scene model (the renderers' own input), checked as a scene file's "render".
+inline SceneSpec withRenderOptions(SceneSpec spec, const std::string& json) {
+  scenejson::setRenderSettings(spec, withRenderOptions(scenejson::renderSettingsOf(spec), json), scenejson::Where("render"));
+  return spec;
 }
 
 }  // namespace phongvk::test
