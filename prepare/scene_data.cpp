@@ -1,6 +1,7 @@
 #include "prepare/scene_data.h"
 
 #include "base/huge_pages.h"
+#include "base/number_text.h"
 #include "scene/object_mesh.h"
 
 #include <algorithm>
@@ -211,7 +212,12 @@ void placeOne(SceneData& data, const Object& object, size_t i) {
   if (linear == glm::dmat3(1.0)) return;
   o.flags |= gpu::OBJECT_POSED;
   setRows(linear, o.linear0, o.linear1, o.linear2);
-  setRows(glm::transpose(glm::inverse(linear)), o.normal0, o.normal1, o.normal2);
+  // The normals are made unit after this map, so it is scaled to a largest entry of 1: the turned
+  // normal stays far from float overflow and underflow whatever the pose's scale.
+  const glm::dmat3 normals = glm::transpose(glm::inverse(linear));
+  double largest = 0;
+  for (int c = 0; c < 3; ++c) largest = std::max({largest, std::abs(normals[c].x), std::abs(normals[c].y), std::abs(normals[c].z)});
+  setRows(normals / largest, o.normal0, o.normal1, o.normal2);
 }
 
 // Object i's world box: its own box about its origin, where posed the box around its eight
@@ -237,6 +243,11 @@ void placeObjects(SceneData& data, const SceneSpec& scene) {
   for (size_t i = 0; i < data.objects.size(); ++i) {
     placeOne(data, scene.objects[i], i);
     const auto [low, high] = worldBox(data, scene.objects[i].poseLinear, i);
+    if (scene.objects[i].poseLinear && !(glm::all(glm::lessThanEqual(glm::abs(low), glm::dvec3(MAX_COORDINATE))) &&
+                                         glm::all(glm::lessThanEqual(glm::abs(high), glm::dvec3(MAX_COORDINATE))))) {
+      throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + scene.objects[i].jsonPath +
+                       ".pose: places the mesh beyond the " + formatNumber(MAX_COORDINATE) + " m a scene may use");
+    }
     data.boundsMin = glm::min(data.boundsMin, low);
     data.boundsMax = glm::max(data.boundsMax, high);
   }

@@ -24,7 +24,20 @@ void placeObject(Object& object, const Matrix4& pose) {
   checkAffine(pose, "pose");
   glm::dmat3 linear;
   for (int c = 0; c < 3; ++c) linear[c] = matrixColumn(pose, c);  // glm: linear[column][row]
+  for (int i = 0; i < 9; ++i) {
+    if (std::abs(pose[4 * (i / 3) + i % 3]) > MAX_COORDINATE)  // as a file's scale factors
+      throw ArgumentError("pose: row " + std::to_string(i / 3) + " has " + formatNumber(pose[4 * (i / 3) + i % 3]) +
+                          ", beyond the " + formatNumber(MAX_COORDINATE) + " a pose's linear part may hold");
+  }
   if (!(std::abs(glm::determinant(linear)) > 0)) throw ArgumentError("pose: the upper 3x3 block is not invertible");
+  const glm::dmat3 inverse = glm::inverse(linear);  // the normals' map: finite, or the block is all but singular
+  for (int c = 0; c < 3; ++c) {
+    for (int r = 0; r < 3; ++r) {
+      if (!(std::abs(inverse[c][r]) <= MAX_COORDINATE))
+        throw ArgumentError("pose: the upper 3x3 block is too close to singular (its inverse holds " +
+                            formatNumber(inverse[c][r]) + ")");
+    }
+  }
   const glm::dvec3 translation = {pose[3], pose[7], pose[11]};
   for (int axis = 0; axis < 3; ++axis) {
     if (std::abs(translation[axis]) > MAX_COORDINATE)

@@ -223,7 +223,7 @@ if wanted python && [ -n "$bundle" ]; then
   [ -z "$pbinc" ] && [ -d /usr/include/pybind11 ] && pbinc=/usr/include  # Debian's, headers only
   if ! command -v c++ >/dev/null || [ -z "$pbinc" ] || [ ! -e "$pyinc/Python.h" ]; then
     note python FAIL "this machine's python3 ($py) lacks pybind11 or Python.h, or there is no c++: the module was not built"
-  elif ! c++ -O2 -std=c++20 -shared -fPIC -fvisibility=hidden -DNDEBUG python/module.cpp -Iinclude -Ipython \
+  elif ! c++ -O2 -std=c++20 -shared -fPIC -fvisibility=hidden -DNDEBUG python/*.cpp -Iinclude -Ipython \
       -I"$pyinc" -I"$pbinc" -L"$build/api" -lphongvk -Wl,-rpath,"$build/api" -o "$pkg/_phongvk$ext" >"$out/python_build.log" 2>&1; then
     tail -20 "$out/python_build.log"
     note python FAIL "the module did not build for $py (python_build.log)"

@@ -1,6 +1,6 @@
-# Type stubs of phongvk's compiled core (python/module.cpp), for type checkers and editors; the
-# docstrings are the module's own (help()). A test checks that they name exactly what the module
-# defines.
+# Type stubs of phongvk's compiled core (python/module.cpp and its bind_*.cpp), for type checkers
+# and editors; the docstrings are the module's own (help()). A test checks that they name exactly
+# what the module defines.
 import os
 from typing import Any, Iterable, Optional, Sequence, Tuple, Union
 

@@ -321,3 +321,21 @@ def test_a_posed_object_writes_its_pose_and_reads_back_the_same():
     both_keys = dict(written, objects=[dict(written["objects"][0], scale=2)])
     with pytest.raises(phongvk.SceneError, match=r"objects\[0\]\.scale: cannot be given with 'pose'"):
         phongvk.scene_from_dict(both_keys)
+
+
+def test_poses_no_float_can_carry_are_clear_errors():
+    scene = small_scene()
+    with pytest.raises(ValueError, match=r"pose: row 0 has 1e\+300, beyond"):
+        scene.add(*octahedron(), pose=np.diag([1e300, 1, 1, 1]))
+    with pytest.raises(ValueError, match=r"pose: the upper 3x3 block is too close to singular"):
+        scene.add(*octahedron(), pose=np.diag([1e-20, 1, 1, 1]))
+    far = np.diag([1e15, 1, 1, 1])
+    far[0, 3] = 9e14
+    scene.add(*octahedron(), pose=far)
+    with pytest.raises(phongvk.SceneError, match=r"objects\[0\]\.pose: places the mesh beyond the 1e\+15 m"):
+        phongvk.Renderer("cpu").render(scene)
+    written = {"camera": {"position": [0, -4, 0], "look_at": [0, 0, 0]}, "objects": [
+        {"shape": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 0, 1]], "faces": [[0, 1, 2]],
+         "pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1e300, 1]]}]}
+    with pytest.raises(phongvk.SceneError, match=r"objects\[0\]\.pose: the last row must be 0 0 0 1"):
+        phongvk.scene_from_dict(written)
