@@ -25,9 +25,7 @@ uint32_t groupCapFor(const VulkanContext& context) {
 
 }  // namespace
 
-GpuPipelineSet::~GpuPipelineSet() {
-  for (auto& [key, p] : byKey_) destroyComputePipeline(p, context_);
-}
+GpuPipelineSet::~GpuPipelineSet() = default;  // each pipeline frees itself (ComputePipeline)
 
 GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, const GpuRendererOptions& options)
     : context_(context),
@@ -97,8 +95,8 @@ void GpuRenderer::release() {
   scene_ = {};
   image_ = {};
   perFrame_ = {};
-  destroyTimestampPool(timestamps_, context_);
-  destroyDescriptorArena(arena_, context_);
+  timestamps_.reset();
+  arena_.reset();
 }
 
 RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image storage) {

@@ -201,7 +201,7 @@ class GpuRenderer {
   uint32_t listChunk_ = 0;     // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many entries a round
   uint64_t framesRepeated_ = 0;
   std::shared_ptr<GpuPipelineSet> pipelines_;  // compiled ones, kept across renderers (GpuRendererOptions)
-  ComputePipeline current_[PASS_COUNT];         // this frame's (owned by pipelines_)
+  ComputePipelineHandles current_[PASS_COUNT];  // this frame's (owned by pipelines_)
   std::vector<Binding> bindings_;  // the shared set as this context's shaders declare it (sharedBindings)
   DescriptorArena arena_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

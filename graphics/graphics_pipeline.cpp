@@ -34,7 +34,7 @@ void checkFormat(const VulkanContext& context, VkFormat format, VkImageUsageFlag
                              " (format features " + std::to_string(have) + ", need " + std::to_string(need) + ")");
 }
 
-void allocateImageMemory(RenderTarget& target, const VulkanContext& context) {
+void allocateImageMemory(RenderTargetHandles& target, const VulkanContext& context) {
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(context.device, target.image, &requirements);
   VkMemoryAllocateInfo info = { VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO };
@@ -121,7 +121,7 @@ VkAttachmentDescription attachment(VkFormat format, VkAttachmentStoreOp store, V
 void createRenderTarget(RenderTarget& result, const VulkanContext& context, VkFormat format, uint32_t width,
                         uint32_t height, VkImageUsageFlags usage, VkImageAspectFlags aspect) {
   checkFormat(context, format, usage);
-  result = {};
+  result = RenderTarget({}, context);
   VkImageCreateInfo info = { VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO };
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = format;
@@ -142,19 +142,19 @@ void createRenderTarget(RenderTarget& result, const VulkanContext& context, VkFo
     viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
     VK_CHECK(vkCreateImageView(context.device, &viewInfo, nullptr, &result.view));
   } catch (...) {
-    destroyRenderTarget(result, context);
+    result.reset();
     throw;
   }
 }
 
-void destroyRenderTarget(RenderTarget& target, const VulkanContext& context) {
+void destroyRenderTarget(RenderTargetHandles& target, const VulkanContext& context) {
   if (target.view) vkDestroyImageView(context.device, target.view, nullptr);
   if (target.image) vkDestroyImage(context.device, target.image, nullptr);
   if (target.memory) vkFreeMemory(context.device, target.memory, nullptr);
   target = {};
 }
 
-VkRenderPass createColorDepthRenderPass(const VulkanContext& context, VkFormat colorFormat, VkFormat depthFormat) {
+RenderPass createColorDepthRenderPass(const VulkanContext& context, VkFormat colorFormat, VkFormat depthFormat) {
   const VkAttachmentDescription attachments[] = {
       attachment(colorFormat, VK_ATTACHMENT_STORE_OP_STORE, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL),
       attachment(depthFormat, VK_ATTACHMENT_STORE_OP_DONT_CARE, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL),
@@ -189,31 +189,44 @@ VkRenderPass createColorDepthRenderPass(const VulkanContext& context, VkFormat c
   info.pSubpasses = &subpass;
   info.dependencyCount = static_cast<uint32_t>(std::size(dependencies));
   info.pDependencies = dependencies;
-  VkRenderPass pass = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateRenderPass(context.device, &info, nullptr, &pass));
+  RenderPass pass({}, context);
+  VK_CHECK(vkCreateRenderPass(context.device, &info, nullptr, &pass.pass));
   return pass;
 }
 
+void destroyRenderPass(RenderPassHandles& pass, const VulkanContext& context) {
+  if (pass.pass) vkDestroyRenderPass(context.device, pass.pass, nullptr);
+  pass = {};
+}
+
+void destroyFramebuffer(FramebufferHandles& framebuffer, const VulkanContext& context) {
+  if (framebuffer.framebuffer) vkDestroyFramebuffer(context.device, framebuffer.framebuffer, nullptr);
+  framebuffer = {};
+}
+
+void destroyGraphicsPipeline(GraphicsPipelineHandles& pipeline, const VulkanContext& context) {
+  if (pipeline.pipeline) vkDestroyPipeline(context.device, pipeline.pipeline, nullptr);
+  pipeline = {};
+}
+
 GraphicsLayout createGraphicsLayout(const VulkanContext& context, std::span<const Binding> bindings) {
-  GraphicsLayout result;
+  GraphicsLayout result({}, context);  // freed if the pipeline layout fails
   result.setLayout = createSetLayout(context, bindings, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
 
   VkPipelineLayoutCreateInfo layoutInfo = { VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO };
   layoutInfo.setLayoutCount = 1;
   layoutInfo.pSetLayouts = &result.setLayout;
-  VkResult made = vkCreatePipelineLayout(context.device, &layoutInfo, nullptr, &result.layout);
-  if (made != VK_SUCCESS) destroyGraphicsLayout(result, context);
-  VK_CHECK(made);
+  VK_CHECK(vkCreatePipelineLayout(context.device, &layoutInfo, nullptr, &result.layout));
   return result;
 }
 
-void destroyGraphicsLayout(GraphicsLayout& layout, const VulkanContext& context) {
+void destroyGraphicsLayout(GraphicsLayoutHandles& layout, const VulkanContext& context) {
   if (layout.layout) vkDestroyPipelineLayout(context.device, layout.layout, nullptr);
   if (layout.setLayout) vkDestroyDescriptorSetLayout(context.device, layout.setLayout, nullptr);
   layout = {};
 }
 
-VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPipelineInfo& info) {
+GraphicsPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPipelineInfo& info) {
   const ShaderModule vertex(context, info.vertexSpirv);
   const ShaderModule fragment(context, info.fragmentSpirv);
   const Specialization spec(info.specs);
@@ -236,8 +249,8 @@ VkPipeline createGraphicsPipeline(const VulkanContext& context, const GraphicsPi
   pipelineInfo.pDynamicState = &fixed.dynamic;
   pipelineInfo.layout = info.layout;
   pipelineInfo.renderPass = info.renderPass;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateGraphicsPipelines(context.device, context.pipelineCache, 1, &pipelineInfo, nullptr, &pipeline));
+  GraphicsPipeline pipeline({}, context);
+  VK_CHECK(vkCreateGraphicsPipelines(context.device, context.pipelineCache, 1, &pipelineInfo, nullptr, &pipeline.pipeline));
   return pipeline;
 }
 

@@ -136,9 +136,7 @@ void uploadSameSize(const VulkanContext& context, Buffer& buffer, const std::vec
 
 struct GraphicsRenderer::State {
   explicit State(const VulkanContext& context) : context(context) {}
-  ~State() { release(); }
 
-  void release();
   void createFixedObjects();
   void uploadScene(const SceneData& data);
   void ensureTargets(uint32_t width, uint32_t height);
@@ -150,9 +148,9 @@ struct GraphicsRenderer::State {
 
   const VulkanContext& context;
   GraphicsLayout layout;
-  VkRenderPass renderPass = VK_NULL_HANDLE;
+  RenderPass renderPass;
   // [projection][interpolation][cullBack], made when a frame first needs one
-  VkPipeline pipelines[2][2][2] = {};
+  GraphicsPipeline pipelines[2][2][2];
   DescriptorArena arena;
   VkDescriptorSet set = VK_NULL_HANDLE;
   TimestampPool timestamps;
@@ -164,24 +162,10 @@ struct GraphicsRenderer::State {
   std::vector<DrawRun> runs;
 
   RenderTarget color, depth;
-  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  Framebuffer framebuffer;
   Buffer readback;
   uint32_t width = 0, height = 0;
 };
-
-void GraphicsRenderer::State::release() {
-  releaseTargets();
-  for (Buffer* b : {&frame, &indices}) destroyBuffer(*b, context);
-  for (TexelBuffer* t : {&vertices, &objects, &materials, &lights}) destroyTexelBuffer(*t, context);
-  destroyTimestampPool(timestamps, context);
-  destroyDescriptorArena(arena, context);
-  for (auto& byInterpolation : pipelines)
-    for (auto& byCull : byInterpolation)
-      for (VkPipeline& p : byCull)
-        if (p) vkDestroyPipeline(context.device, std::exchange(p, VK_NULL_HANDLE), nullptr);
-  if (renderPass) vkDestroyRenderPass(context.device, std::exchange(renderPass, VK_NULL_HANDLE), nullptr);
-  destroyGraphicsLayout(layout, context);
-}
 
 void GraphicsRenderer::State::createFixedObjects() {
   checkGraphicsQueue(context);
@@ -215,9 +199,9 @@ void GraphicsRenderer::State::uploadScene(const SceneData& data) {
 }
 
 void GraphicsRenderer::State::releaseTargets() {
-  if (framebuffer) vkDestroyFramebuffer(context.device, std::exchange(framebuffer, VK_NULL_HANDLE), nullptr);
-  destroyRenderTarget(color, context);
-  destroyRenderTarget(depth, context);
+  framebuffer.reset();
+  color.reset();
+  depth.reset();
   destroyBuffer(readback, context);
   width = height = 0;
 }
@@ -234,13 +218,14 @@ void GraphicsRenderer::State::ensureTargets(uint32_t w, uint32_t h) {
                      VK_IMAGE_ASPECT_DEPTH_BIT);
   const VkImageView views[] = {color.view, depth.view};
   VkFramebufferCreateInfo info = { VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO };
-  info.renderPass = renderPass;
+  info.renderPass = renderPass.pass;
   info.attachmentCount = static_cast<uint32_t>(std::size(views));
   info.pAttachments = views;
   info.width = w;
   info.height = h;
   info.layers = 1;
-  VK_CHECK(vkCreateFramebuffer(context.device, &info, nullptr, &framebuffer));
+  framebuffer = Framebuffer({}, context);
+  VK_CHECK(vkCreateFramebuffer(context.device, &info, nullptr, &framebuffer.framebuffer));
   createBuffer(readback, context, VkDeviceSize(w) * h * sizeof(uint32_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                MemoryKind::HostVisible);
   width = w;
@@ -261,8 +246,8 @@ VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, uint32_t
     throw ArgumentError("unknown interpolation mode " + std::to_string(interpolation));
   if (projection != PROJECTION_PERSPECTIVE && projection != PROJECTION_ORTHOGRAPHIC)
     throw ArgumentError("unknown projection " + std::to_string(projection));
-  VkPipeline& pipeline = pipelines[projection][interpolation][cullBack];
-  if (pipeline) return pipeline;
+  GraphicsPipeline& pipeline = pipelines[projection][interpolation][cullBack];
+  if (pipeline.pipeline) return pipeline.pipeline;
   GraphicsPipelineInfo info;
   info.vertexSpirv = spirv_graphics_baseline_vert;
   info.fragmentSpirv = spirv_graphics_baseline_frag;
@@ -270,7 +255,7 @@ VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, uint32_t
   // Only where it differs from the default: perspective pipelines keep their cache entries.
   if (projection != PROJECTION_PERSPECTIVE) info.specs.push_back({SPEC_PROJECTION, projection});
   info.layout = layout.layout;
-  info.renderPass = renderPass;
+  info.renderPass = renderPass.pass;
   info.cullMode = cullBack ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
   // Our front faces are counter-clockwise seen from outside, which stays counter-clockwise on
   // the y-down screen (edges.h setupEdges); Vulkan's framebuffer is y-down too.
@@ -278,7 +263,7 @@ VkPipeline GraphicsRenderer::State::pipelineFor(uint32_t interpolation, uint32_t
   info.depthCompare = DEPTH_COMPARE;
   pipeline = createGraphicsPipeline(context, info);
   savePipelineCache(context);
-  return pipeline;
+  return pipeline.pipeline;
 }
 
 void GraphicsRenderer::State::recordFrame(VkCommandBuffer cmd, const FrameData& f) {
@@ -286,8 +271,8 @@ void GraphicsRenderer::State::recordFrame(VkCommandBuffer cmd, const FrameData& 
   clears[0].color = backgroundClear(f);
   clears[1].depthStencil = {DEPTH_CLEAR, 0};
   VkRenderPassBeginInfo begin = { VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO };
-  begin.renderPass = renderPass;
-  begin.framebuffer = framebuffer;
+  begin.renderPass = renderPass.pass;
+  begin.framebuffer = framebuffer.framebuffer;
   begin.renderArea = {{0, 0}, {width, height}};
   begin.clearValueCount = 2;
   begin.pClearValues = clears;

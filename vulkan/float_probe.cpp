@@ -103,18 +103,13 @@ FloatReport compareFloatProbe(const std::vector<FloatProbeInput>& inputs, const 
 
 namespace {
 
-// What the probe run holds, released on every path.
+// What the probe run holds, each freeing itself on every path (the arena before the pipeline
+// before the buffers: the reverse of their order here).
 struct ProbeRun {
   const VulkanContext& context;
   Buffer inputs, results;
   ComputePipeline pipeline;
   DescriptorArena arena;
-  ~ProbeRun() {
-    destroyDescriptorArena(arena, context);
-    destroyComputePipeline(pipeline, context);
-    destroyBuffer(results, context);
-    destroyBuffer(inputs, context);
-  }
 };
 
 }  // namespace

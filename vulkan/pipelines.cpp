@@ -83,7 +83,7 @@ VkDescriptorSetLayout createSetLayout(const VulkanContext& context, std::span<co
 ComputePipeline createComputePipeline(const VulkanContext& context, const uint32_t* spirv, size_t spirvBytes,
                                       std::span<const Binding> bindings, uint32_t pushConstantBytes,
                                       std::span<const SpecConstant> specs) {
-  ComputePipeline result;
+  ComputePipeline result({}, context);  // what is made is freed if a later step throws
   VkShaderModule module = VK_NULL_HANDLE;
   try {
     result.setLayout = createSetLayout(context, bindings, VK_SHADER_STAGE_COMPUTE_BIT);
@@ -92,7 +92,6 @@ ComputePipeline createComputePipeline(const VulkanContext& context, const uint32
     result.pipeline = createPipeline(context, module, result.layout, specs);
   } catch (...) {
     if (module) vkDestroyShaderModule(context.device, module, nullptr);
-    destroyComputePipeline(result, context);
     throw;
   }
   // The pipeline keeps its own compiled copy; the module is only needed to create it.
@@ -100,7 +99,7 @@ ComputePipeline createComputePipeline(const VulkanContext& context, const uint32
   return result;
 }
 
-void destroyComputePipeline(ComputePipeline& pipeline, const VulkanContext& context) {
+void destroyComputePipeline(ComputePipelineHandles& pipeline, const VulkanContext& context) {
   if (pipeline.pipeline) vkDestroyPipeline(context.device, pipeline.pipeline, nullptr);
   if (pipeline.layout) vkDestroyPipelineLayout(context.device, pipeline.layout, nullptr);
   if (pipeline.setLayout) vkDestroyDescriptorSetLayout(context.device, pipeline.setLayout, nullptr);
@@ -118,11 +117,11 @@ void createDescriptorArena(DescriptorArena& result, const VulkanContext& context
   info.maxSets = maxSets;
   info.poolSizeCount = static_cast<uint32_t>(std::size(sizes));
   info.pPoolSizes = sizes;
-  result = {};
+  result = DescriptorArena({}, context);
   VK_CHECK(vkCreateDescriptorPool(context.device, &info, nullptr, &result.pool));
 }
 
-void destroyDescriptorArena(DescriptorArena& arena, const VulkanContext& context) {
+void destroyDescriptorArena(DescriptorArenaHandles& arena, const VulkanContext& context) {
   if (arena.pool) vkDestroyDescriptorPool(context.device, arena.pool, nullptr);
   arena = {};
 }

@@ -8,6 +8,7 @@
 
 #include "shaders/shared.h"
 #include "vulkan/context.h"
+#include "vulkan/owned.h"
 #include "vulkan/resources.h"
 
 #include <span>
@@ -61,11 +62,18 @@ class Specialization {
 // A shader module from SPIR-V (a glslang --vn array). The caller destroys it.
 VkShaderModule createShaderModule(const VulkanContext& context, std::span<const uint32_t> spirv);
 
-struct ComputePipeline {
+struct ComputePipelineHandles {
   VkPipeline pipeline = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
 };
+
+// Safe on empty handles.
+void destroyComputePipeline(ComputePipelineHandles& pipeline, const VulkanContext& context);
+
+// A compute pipeline and its layouts, freed when it goes (owned.h). Code that only records with
+// one takes its handles (ComputePipelineHandles), which copy.
+using ComputePipeline = Owned<ComputePipelineHandles, destroyComputePipeline>;
 
 // `spirv` is the glslang --vn array and `spirvBytes` its sizeof. The shader's entry point is
 // "main"; push constants (if pushConstantBytes > 0) start at offset 0.
@@ -73,22 +81,20 @@ ComputePipeline createComputePipeline(const VulkanContext& context, const uint32
                                       std::span<const Binding> bindings, uint32_t pushConstantBytes,
                                       std::span<const SpecConstant> specs);
 
-// Safe on a default or already destroyed pipeline.
-void destroyComputePipeline(ComputePipeline& pipeline, const VulkanContext& context);
-
 // The layout of a single descriptor set holding `bindings`, visible to `stages`.
 VkDescriptorSetLayout createSetLayout(const VulkanContext& context, std::span<const Binding> bindings,
                                       VkShaderStageFlags stages);
 
-// A descriptor pool for a renderer's few sets; the sets are freed with the arena.
-struct DescriptorArena {
+struct DescriptorArenaHandles {
   VkDescriptorPool pool = VK_NULL_HANDLE;
 };
+void destroyDescriptorArena(DescriptorArenaHandles& arena, const VulkanContext& context);
+// A descriptor pool for a renderer's few sets, freed (its sets with it) when it goes.
+using DescriptorArena = Owned<DescriptorArenaHandles, destroyDescriptorArena>;
 
 // Room for `maxSets` sets with up to `maxBuffersPerSet` storage, uniform and texel buffers each.
 void createDescriptorArena(DescriptorArena& result, const VulkanContext& context, uint32_t maxSets,
                            uint32_t maxBuffersPerSet = 16);
-void destroyDescriptorArena(DescriptorArena& arena, const VulkanContext& context);
 
 // One buffer descriptor to write; range VK_WHOLE_SIZE means from offset to the buffer's end. A
 // uniform texel buffer descriptor is written from `view` instead (texelDescriptor below).

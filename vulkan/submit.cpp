@@ -84,7 +84,7 @@ void transferToComputeBarrier(VkCommandBuffer cmd) {
 
 void createTimestampPool(TimestampPool& result, const VulkanContext& context, uint32_t count) {
   assert(count > 0);
-  result = {};
+  result = TimestampPool({}, context);
   if (!context.timestamps) return;
   VkQueryPoolCreateInfo info = { VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO };
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -95,7 +95,7 @@ void createTimestampPool(TimestampPool& result, const VulkanContext& context, ui
   result.validMask = context.timestampValidBits >= 64 ? ~0ull : (1ull << context.timestampValidBits) - 1;
 }
 
-void destroyTimestampPool(TimestampPool& pool, const VulkanContext& context) {
+void destroyTimestampPool(TimestampPoolHandles& pool, const VulkanContext& context) {
   if (pool.pool) vkDestroyQueryPool(context.device, pool.pool, nullptr);
   pool = {};
 }

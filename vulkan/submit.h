@@ -8,6 +8,7 @@
 #pragma once
 
 #include "vulkan/context.h"
+#include "vulkan/owned.h"
 
 #include <chrono>
 #include <vector>
@@ -38,15 +39,17 @@ void computeBarrier(VkCommandBuffer cmd);
 void transferToComputeBarrier(VkCommandBuffer cmd);
 
 // Timestamps written by the GPU between passes. All calls are no-ops when !context.timestamps.
-struct TimestampPool {
+struct TimestampPoolHandles {
   VkQueryPool pool = VK_NULL_HANDLE;
   uint32_t count = 0;
   double periodNs = 0;          // nanoseconds per tick (limits.timestampPeriod)
   uint64_t validMask = 0;       // timestamps wrap modulo 2^timestampValidBits
 };
+void destroyTimestampPool(TimestampPoolHandles& pool, const VulkanContext& context);
+// The query pool, freed when it goes (owned.h).
+using TimestampPool = Owned<TimestampPoolHandles, destroyTimestampPool>;
 
 void createTimestampPool(TimestampPool& result, const VulkanContext& context, uint32_t count);
-void destroyTimestampPool(TimestampPool& pool, const VulkanContext& context);
 
 // Record once per submission, before the first writeTimestamp: a query must be reset before reuse.
 void resetTimestamps(VkCommandBuffer cmd, const TimestampPool& pool);
