@@ -35,7 +35,6 @@ std::string meshNotices(const SceneData& data) {
   return line;
 }
 
-// RendererStats::notice for a scene just built and framed.
 // What messages call the scene: its model file, its scene file, or "the scene".
 std::string sceneName(const SceneSpec& spec) {
   return spec.modelAlone && !spec.objects.empty() ? spec.objects[0].file
@@ -43,6 +42,7 @@ std::string sceneName(const SceneSpec& spec) {
                                                   : spec.path;
 }
 
+// RendererStats::notice for a scene just built and framed.
 std::string noticeFor(const SceneSpec& spec, const SceneData& data, const CameraSpec& camera) {
   const std::string meshes = meshNotices(data);
   if (!camera.fit || !seenOnlyFromBehind(data, camera.position)) return meshes;
@@ -56,9 +56,7 @@ std::string noticeFor(const SceneSpec& spec, const SceneData& data, const Camera
 // the other convention does), that the image is empty and why.
 std::string frameNotice(const std::string& built, const SceneSpec& spec, const SceneData& data, const View& view) {
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::dvec3 p((corner & 1) ? data.boundsMax.x : data.boundsMin.x, (corner & 2) ? data.boundsMax.y : data.boundsMin.y,
-                       (corner & 4) ? data.boundsMax.z : data.boundsMin.z);
-    if (glm::dot(p - view.eye, view.forward) > view.nearPlane) return built;
+    if (glm::dot(boxCorner(data.boundsMin, data.boundsMax, corner) - view.eye, view.forward) > view.nearPlane) return built;
   }
   return sceneName(spec) + ": the camera looks away from every object (all of them lie behind it), so the image " +
          "is empty; a camera pose given in the other convention (\"opengl\" looks down the pose's -z, \"opencv\" " +

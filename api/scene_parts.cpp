@@ -133,8 +133,8 @@ SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights) {
     const std::string at = "lights[" + std::to_string(i) + "]";
     requireFinite(lights[i].intensity, at + ".intensity");
     finite3(lights[i].color, at + ".color");
-    finite3(lights[i].directional ? lights[i].direction : lights[i].position,
-            at + (lights[i].directional ? ".direction" : ".position"));
+    if (lights[i].directional) finite3(lights[i].direction, at + ".direction");
+    else if (!lights[i].atCamera) finite3(lights[i].position, at + ".position");  // at the camera: not used
   }
   SceneSpec changed = scene;
   changed.lights = scenejson::lightSpecs(lights, Where("lights", scene.path));

@@ -228,9 +228,9 @@ std::array<glm::dvec3, 2> worldBox(const SceneData& data, const std::optional<gl
   if (!pose || *pose == glm::dmat3(1.0)) return {origin + low, origin + high};
   std::array<glm::dvec3, 2> box = {glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::dvec3 p(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y, corner & 4 ? high.z : low.z);
-    box[0] = glm::min(box[0], origin + *pose * p);
-    box[1] = glm::max(box[1], origin + *pose * p);
+    const glm::dvec3 p = origin + *pose * boxCorner(low, high, corner);
+    box[0] = glm::min(box[0], p);
+    box[1] = glm::max(box[1], p);
   }
   return box;
 }
@@ -325,10 +325,7 @@ bool lightingIsViewIndependent(const FrameInputs& in) {
 
 uint32_t boxClip(const SceneData& data, const View& view) {
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::dvec3 p((corner & 1) ? data.boundsMax.x : data.boundsMin.x,
-                       (corner & 2) ? data.boundsMax.y : data.boundsMin.y,
-                       (corner & 4) ? data.boundsMax.z : data.boundsMin.z);
-    if (nearOrOutsideClipVolume(view, p)) return gpu::CLIP_ALL;
+    if (nearOrOutsideClipVolume(view, boxCorner(data.boundsMin, data.boundsMax, corner))) return gpu::CLIP_ALL;
   }
   return gpu::CLIP_NONE;
 }

@@ -110,6 +110,11 @@ bool lightingIsViewIndependent(const FrameInputs& in);
 // The frame for `view`: camera basis, image size, and offsets from the eye computed in double.
 FrameInputs makeFrame(const SceneData& data, const View& view);
 
+// Corner `corner` (0..7: bit 0 picks x, bit 1 y, bit 2 z from `high` over `low`) of a box.
+inline glm::dvec3 boxCorner(const glm::dvec3& low, const glm::dvec3& high, int corner) {
+  return {corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y, corner & 4 ? high.z : low.z};
+}
+
 // FrameInputs::clip of a frame of `data` seen in `view`: CLIP_NONE when no corner of the scene's
 // box is behind the near plane or past the guard band, or within a margin of them; else CLIP_ALL.
 uint32_t boxClip(const SceneData& data, const View& view);

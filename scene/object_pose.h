@@ -20,10 +20,15 @@ glm::dvec3 matrixColumn(const Matrix4& m, int c);
 // last row other than 0 0 0 1.
 void checkAffine(const Matrix4& m, const std::string& what);
 
+// Why `pose` cannot place an object, without the "pose: " a message leads with; "" when it can.
+// Not an affine map (non-finite, last row not 0 0 0 1), a linear part with an entry beyond
+// MAX_COORDINATE or not invertible or whose inverse has one, a translation beyond the coordinates
+// a scene may use.
+std::string poseProblem(const Matrix4& pose);
+
 // `object` placed by `pose`: its origin the pose's translation, its linear part the pose's upper
-// 3x3 block (Object::poseLinear), its own scale and rotation none. ArgumentError naming "pose"
-// for a matrix that is not an affine map (non-finite, last row not 0 0 0 1, linear part not
-// invertible) or a translation beyond the coordinates a scene may use; `object` unchanged then.
+// 3x3 block (Object::poseLinear), its own scale and rotation none. ArgumentError "pose: <the
+// problem>" for a pose poseProblem refuses; `object` unchanged then.
 void placeObject(Object& object, const Matrix4& pose);
 
 // The pose `object` was placed by, as a row-major 4x4 matrix (its poseLinear and translate).

@@ -24,7 +24,7 @@ const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples", "te
 
 // Samples per pixel: a square of 1 to 4 on a side.
 int samplesPerPixel(int samples, const Where& at) {
-  inRange(samples, 1, 16, at);
+  integerInRange(samples, 1, 16, at);
   const int side = int(std::lround(std::sqrt(double(samples))));
   if (side * side != samples) at.fail("must be 1, 4, 9 or 16 (a regular grid of samples per pixel), got " + std::to_string(samples));
   return samples;

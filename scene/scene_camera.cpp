@@ -82,8 +82,8 @@ void imageSize(const CameraValues& c, CameraSpec& spec, const Where& at) {
   for (auto [given, key] : {std::pair{c.resolution.has_value(), "resolution"}, {c.aspect.has_value(), "aspect"}}) {
     if (given) at.at(key).fail("cannot be given together with 'width' and 'height'");
   }
-  spec.width = inRange(*c.width, 1, MAX_IMAGE_SIDE, at.at("width"));
-  spec.height = inRange(*c.height, 1, MAX_IMAGE_SIDE, at.at("height"));
+  spec.width = integerInRange(*c.width, 1, MAX_IMAGE_SIDE, at.at("width"));
+  spec.height = integerInRange(*c.height, 1, MAX_IMAGE_SIDE, at.at("height"));
   spec.aspect = double(spec.width) / spec.height;
 }
 

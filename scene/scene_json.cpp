@@ -167,9 +167,7 @@ void Where::fail(const std::string& what) const {
 
 void Node::fail(const std::string& what) const { where().fail(what); }
 
-void Node::failAt(std::string_view key, const std::string& what) const {
-  Node(*value_, childPath(path_, key), *file_).fail(what);
-}
+void Node::failAt(std::string_view key, const std::string& what) const { where().at(key).fail(what); }
 
 std::optional<Node> Node::find(std::string_view key) const {
   auto it = value_->find(std::string(key));
@@ -241,7 +239,7 @@ double inOpenRange(double value, double min, double max, const Where& at) {
   return value;
 }
 
-int inRange(int value, int min, int max, const Where& at) {
+int integerInRange(int value, int min, int max, const Where& at) {
   if (value < min || value > max) {
     at.fail("must be between " + std::to_string(min) + " and " + std::to_string(max) + ", got " +
             std::to_string(value));

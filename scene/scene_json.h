@@ -87,7 +87,7 @@ double atLeast(double value, double min, const Where& at);                  // >
 double positive(double value, const Where& at);                             // > 0
 double inRange(double value, double min, double max, const Where& at);      // min <= x <= max
 double inOpenRange(double value, double min, double max, const Where& at);  // min < x < max
-int inRange(int value, int min, int max, const Where& at);
+int integerInRange(int value, int min, int max, const Where& at);
 float toFloat(double value, const Where& at);
 // Each of v's three elements checked by `check` at at[i].
 using ValueCheck = double (*)(double, const Where&);

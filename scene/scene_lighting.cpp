@@ -54,9 +54,14 @@ LightSpec lightSpec(const Light& light, const Where& at) {
   return spec;
 }
 
+// At most MAX_LIGHTS, checked before any light is read.
+void checkLightCount(size_t count, const Where& at) {
+  if (count > MAX_LIGHTS)
+    at.fail("a scene has at most " + std::to_string(MAX_LIGHTS) + " lights, this one " + std::to_string(count));
+}
+
 std::vector<LightSpec> lightSpecs(const std::vector<Light>& lights, const Where& at) {
-  if (lights.size() > MAX_LIGHTS)
-    at.fail("a scene has at most " + std::to_string(MAX_LIGHTS) + " lights, this one " + std::to_string(lights.size()));
+  checkLightCount(lights.size(), at);
   std::vector<LightSpec> specs;
   for (size_t i = 0; i < lights.size(); ++i) specs.push_back(lightSpec(lights[i], at.element(i)));
   return specs;
@@ -64,8 +69,7 @@ std::vector<LightSpec> lightSpecs(const std::vector<Light>& lights, const Where&
 
 std::vector<LightSpec> readLights(const Node& node) {
   requireArray(node);
-  if (node.json().size() > MAX_LIGHTS)
-    node.fail("a scene has at most " + std::to_string(MAX_LIGHTS) + " lights, this one " + std::to_string(node.json().size()));
+  checkLightCount(node.json().size(), node.where());
   std::vector<LightSpec> lights;
   for (size_t i = 0; i < node.json().size(); ++i) lights.push_back(lightSpec(lightValues(node.element(i)), node.element(i).where()));
   return lights;

@@ -175,12 +175,8 @@ void readPose(const Node& node, Object& object) {
     if (row.json().size() != 4) row.fail("must be 4 numbers, got " + std::to_string(row.json().size()));
     for (size_t c = 0; c < 4; ++c) m[4 * r + c] = number(row.element(c));
   }
-  try {
-    placeObject(object, m);
-  } catch (const ArgumentError& error) {
-    const std::string why = error.what();
-    pose->fail(why.rfind("pose: ", 0) == 0 ? why.substr(6) : why);
-  }
+  if (const std::string problem = poseProblem(m); !problem.empty()) pose->fail(problem);
+  placeObject(object, m);
 }
 
 void readTransform(const Node& node, Object& object) {

@@ -23,6 +23,9 @@ FOLDERS = {
     "tools": "phongvk_tools", "cli": "phongvk", "python": "_phongvk", "bench": "phongvk_bench",
 }
 OPEN = {"phongvk", "shaders"}
+# Folders that build on include/phongvk alone, whatever they link: of the project's libraries they
+# may include only the tools.
+PUBLIC_ONLY = {"cli", "python"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([A-Za-z0-9_]+)/[^"]+"', re.M)
 LINK = re.compile(r"target_link_libraries\(\s*(\S+)\s+([^)]*)\)", re.S)
 
@@ -43,7 +46,7 @@ def links(root):
                 elif word == "PRIVATE":
                     public = False
                 else:
-                    found.setdefault(target, []).append((word.replace("phongvk::phongvk", "phongvk_api"), public))
+                    found.setdefault(target, []).append((word, public))
     return found
 
 
@@ -61,12 +64,12 @@ def reachable(target, graph):
 
 def violations(root):
     graph = links(root)
-    # The shared library carries the API's links; cli and python reach include/phongvk only.
     problems = []
     for folder, target in FOLDERS.items():
-        allowed = {folder} | OPEN | {f for f, t in FOLDERS.items() if t in reachable(target, graph)}
-        if folder in ("cli", "python"):
-            allowed = {folder} | OPEN | {f for f, t in FOLDERS.items() if t in reachable(target, graph) and f == "tools"}
+        reach = {f for f, t in FOLDERS.items() if t in reachable(target, graph)}
+        if folder in PUBLIC_ONLY:
+            reach &= {"tools"}
+        allowed = {folder} | OPEN | reach
         directory = os.path.join(root, folder)
         for name in sorted(os.listdir(directory)) if os.path.isdir(directory) else []:
             if not name.endswith((".h", ".cpp")):

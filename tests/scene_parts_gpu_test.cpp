@@ -298,6 +298,7 @@ TEST(SceneHandles, LightsAddedByHandleAreChangedAndRemovedByIt) {
   EXPECT_EQ(Renderer(Backend::Cpu).render(scene).rgb, Renderer(Backend::Gpu).render(written).rgb);
   scene.setLights({Light{}});
   EXPECT_THROW(scene.light(blue), RangeError);  // setLights retires every handle
+  EXPECT_NO_THROW(scene.setLights({{.position = {NAN, 0, 0}, .atCamera = true}}));  // at the camera: position unused
 }
 
 TEST(SceneHandles, VertexColoursFromArraysMultiplyTheMaterial) {

@@ -212,9 +212,9 @@ class _Live:
     """The live-view behaviour, mixed into a subclass of each value class."""
 
     def __init__(self, value, read, write):
-        type(self).__bases__[1].__init__(self)
+        self._BASE.__init__(self)
         for name in self._FIELDS:
-            type(self).__bases__[1].__dict__[name].__set__(self, getattr(value, name))
+            self._BASE.__dict__[name].__set__(self, getattr(value, name))
         object.__setattr__(self, "_read", read)
         object.__setattr__(self, "_write", write)
 
@@ -225,15 +225,16 @@ class _Live:
 
     def __setattr__(self, name, value):
         if name not in self._FIELDS:
-            raise AttributeError("%s has no attribute %r" % (type(self).__bases__[1].__name__, name))
+            raise AttributeError("%s has no attribute %r" % (self._BASE.__name__, name))
         current = self._read()
         setattr(current, name, value)
         self._write(current)
-        type(self).__bases__[1].__dict__[name].__set__(self, value)
+        self._BASE.__dict__[name].__set__(self, value)
 
 
 def _live_class(base, fields):
-    return type(base.__name__, (_Live, base), {"_FIELDS": fields, "__doc__": base.__doc__, "__module__": __name__})
+    return type(base.__name__, (_Live, base),
+                {"_BASE": base, "_FIELDS": fields, "__doc__": base.__doc__, "__module__": __name__})
 
 
 _LiveCamera = _live_class(Camera, ("position", "look_at", "up", "fov", "width", "height", "near", "far", "intrinsics",
