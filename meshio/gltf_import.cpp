@@ -398,6 +398,39 @@ void checkAsset(const tinygltf::Model& model, const std::string& path, const std
   }
 }
 
+// Where a GLB's BIN chunk would end, past the file's own length: tinygltf checks the chunk's length
+// against the file without the chunk's 8-byte header, so a chunk that claims up to 8 bytes more
+// than the file holds would be copied out of bounds. Nothing when the file has no BIN chunk, or
+// tinygltf's own checks refuse it first (too short, a JSON chunk past the end).
+std::optional<uint64_t> binChunkOverrun(const std::vector<unsigned char>& bytes) {
+  if (bytes.size() < 20) return std::nullopt;
+  uint32_t length, jsonLength;
+  std::memcpy(&length, bytes.data() + 8, 4);
+  std::memcpy(&jsonLength, bytes.data() + 12, 4);
+  const uint64_t binAt = 20ull + jsonLength;
+  if (length > bytes.size() || binAt + 8 > length) return std::nullopt;
+  uint32_t binLength;
+  std::memcpy(&binLength, bytes.data() + binAt, 4);
+  const uint64_t end = binAt + 8 + binLength;
+  return end > length ? std::optional<uint64_t>(end) : std::nullopt;
+}
+
+// A GLB read once, refused where binChunkOverrun finds its BIN chunk past its end, then parsed as
+// tinygltf's LoadBinaryFromFile parses it.
+bool loadGlb(tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& error, std::string& warning,
+             const std::string& path, const std::string& where) {
+  std::vector<unsigned char> bytes;
+  if (!readRegularFile(&bytes, &error, path, nullptr)) return false;
+  if (const std::optional<uint64_t> end = binChunkOverrun(bytes)) {
+    uint32_t length;
+    std::memcpy(&length, bytes.data() + 8, 4);
+    fail(where, path, "not a valid GLB file: its BIN chunk would end at byte " + std::to_string(*end) +
+                          ", past the file's length of " + std::to_string(length) + " bytes");
+  }
+  return loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), unsigned(bytes.size()),
+                                     tinygltf::GetBaseDir(path));
+}
+
 }  // namespace
 
 Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std::string& where) {
@@ -406,7 +439,7 @@ Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std
   loader.SetFsCallbacks({fileExists, tinygltf::ExpandFilePath, readRegularFile, tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string error, warning;
-  const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
+  const bool loaded = binary ? loadGlb(loader, model, error, warning, path, where)
                              : loader.LoadASCIIFromFile(&model, &error, &warning, path);
   if (!loaded) fail(where, path, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " + error.substr(0, error.find('\n')));
   checkAsset(model, path, where);

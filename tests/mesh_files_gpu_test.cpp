@@ -333,6 +333,7 @@ TEST(MeshFiles, BadFilesNameTheSceneTheJsonPathAndTheFile) {
       {"floatlength.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                           "property float z\nelement face 1\nproperty list float int vertex_indices\nend_header\n"},
       {"broken.glb", "glTF\x02\x00\x00\x00garbage"},
+      {"empty.glb", ""},
       {"broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": [{\"attributes\": {}}]}]}"},
   };
   for (const auto& [name, content] : cases) {
@@ -355,6 +356,19 @@ TEST(MeshFiles, BadFilesNameTheSceneTheJsonPathAndTheFile) {
     "buffers": [{"byteLength": 36, "uri": "fifo.bin"}]})");
   const std::string fifo = thrownMessage<SceneError>([&] { loaded(dir + "/fifo.gltf"); });
   EXPECT_NE(fifo.find("not a valid glTF file"), std::string::npos) << fifo;
+  // A GLB whose BIN chunk claims 8 bytes more than the file holds (tinygltf's own check misses the
+  // chunk's header and would copy past the end): refused, naming where the chunk would end.
+  const auto word = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const std::string json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 16}]})";
+  const std::string padded = json + std::string((4 - json.size() % 4) % 4, ' ');
+  const uint32_t length = uint32_t(20 + padded.size() + 8 + 8);
+  writeFile(dir + "/overrun.glb", "glTF" + word(2) + word(length) + word(uint32_t(padded.size())) + "JSON" + padded +
+                                      word(16) + std::string("BIN\0", 4) + std::string(8, '\x7f'));
+  const std::string overrun = thrownMessage<SceneError>([&] { loaded(dir + "/overrun.glb"); });
+  EXPECT_NE(overrun.find("its BIN chunk would end at byte " + std::to_string(length + 8) + ", past the file's length of " +
+                         std::to_string(length) + " bytes"),
+            std::string::npos)
+      << overrun;
   std::filesystem::create_directory(dir + "/folder.ply");
   const CommandResult cli = runCli("render '" + dir + "/folder.ply' -o '" + dir + "/out.png'");
   EXPECT_EQ(cli.exitCode, 2) << cli.output;
