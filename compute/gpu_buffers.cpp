@@ -7,8 +7,6 @@
 #include "vulkan/vk_check.h"
 
 #include <algorithm>
-#include <cstddef>
-#include <cstring>
 #include <stdexcept>
 
 namespace phongvk {
@@ -70,24 +68,6 @@ void createTexelPool(TexelBuffer& pool, const VulkanContext& context, const Scen
   }
 }
 
-template <typename T>
-bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-// Uploads `next` into `buffer` unless it equals what was sent last time; true if it changed.
-template <typename T>
-bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::vector<T>& next, std::vector<T>& last,
-                     const char* what) {
-  if (sameBytes(next, last)) return false;
-  if (next.size() != last.size() && !last.empty()) {
-    throw ArgumentError(std::string("a frame may not change the number of ") + what);
-  }
-  if (!next.empty()) uploadToBuffer(context, buffer, next.data(), next.size() * sizeof(T));
-  last = next;
-  return true;
-}
-
 }  // namespace
 
 void GpuRenderer::checkSceneFits(const SceneData& data) const { checkSceneFitsDevice(context_, data); }
@@ -110,14 +90,11 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   createTexelBuffer(scene_.objects, context_, data.objects, MemoryKind::HostVisible, texelViews(context_));
   createTexelBuffer(scene_.materials, context_, data.materials, MemoryKind::HostVisible, texelViews(context_));
   createTexelBuffer(scene_.lights, context_, data.lights, MemoryKind::HostVisible, texelViews(context_));
-  lastObjects_ = data.objects;
-  lastMaterials_ = data.materials;
-  lastLights_ = data.lights;
+  changes_.restart(data);
   // Written by the shade pass as storage buffers, read by the others as texels.
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
   createTexelBuffer(scene_.shadedPositions, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.shadedColors, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
-  textured_ = !data.uvs.empty();
   createTexelBuffer(scene_.uvs, context_, data.uvs, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelPool(scene_.texelPool, context_, data);
@@ -139,13 +116,13 @@ void GpuRenderer::ensureImageBuffers(uint32_t width, uint32_t height) {
   // With the colours in the key slots the host reads and resets the keys in place (Shared memory).
   createBuffer(image_.keys, context_, pixels * sizeof(uint64_t),
                STORAGE | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-               colorsInKeys_ ? MemoryKind::Shared : MemoryKind::DeviceLocal);
+               choices_.colorsInKeys ? MemoryKind::Shared : MemoryKind::DeviceLocal);
   createBuffer(image_.bins, context_, sizeof(BinList) + 3 * bins * sizeof(uint32_t),
                STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
   keysDirty_ = true;  // the first frame clears the new keys
   width_ = width;
   height_ = height;
-  ensureColorBuffer(!colorsInKeys_);  // updates the descriptors
+  ensureColorBuffer(!choices_.colorsInKeys);  // updates the descriptors
 }
 
 // The colour buffer: the whole image when resolve writes colours there (ColorOutput::ColorBuffer,
@@ -222,57 +199,20 @@ void GpuRenderer::updateDescriptors() {
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
 }
 
-namespace {
-
-// Whether an object's place for lighting changed (a posed object moved): what ObjectData holds
-// from lightOffset on (offset, flags, pose). Its viewOffset follows the camera, and the positions
-// alone.
-bool lightingPlacesChanged(const std::vector<ObjectData>& now, const std::vector<ObjectData>& last) {
-  if (now.size() != last.size()) return true;
-  constexpr size_t FROM = offsetof(ObjectData, lightOffset);
-  for (size_t i = 0; i < now.size(); ++i) {
-    if (std::memcmp(reinterpret_cast<const char*>(&now[i]) + FROM, reinterpret_cast<const char*>(&last[i]) + FROM,
-                    sizeof(ObjectData) - FROM) != 0)
-      return true;
-  }
-  return false;
-}
-
-}  // namespace
-
-// Sends only what changed since the last frame: the scene's frame as makeFrame built it, the
-// objects, materials and lights where they differ, and the pass control (writeControl). Vertex
-// colours are recomputed only when their inputs changed: materials, lights, ambient, the shading
-// mode or specular model, a posed object's place, or the eye when some material is specular.
+// Sends the frame, and the objects, materials and lights where they changed (FrameChanges), with
+// the pass control saying what the shade pass redoes (writeControl).
 void GpuRenderer::uploadFrame(const FrameInputs& in) {
-  const bool materialsChanged = uploadIfChanged(context_, scene_.materials.buffer, in.materials, lastMaterials_, "materials");
-  const bool lightsChanged = uploadIfChanged(context_, scene_.lights.buffer, in.lights, lastLights_, "lights");
-  const bool objectsMoved = lightingPlacesChanged(in.objects, lastObjects_);
-  const bool objectsChanged = uploadIfChanged(context_, scene_.objects.buffer, in.objects, lastObjects_, "objects");
-  const FrameData& f = in.frame;
-  // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
-  const bool positionsStale = !framesSent_ || objectsChanged || f.right != frame_.right || f.up != frame_.up ||
-                              f.forward != frame_.forward || f.focalX != frame_.focalX ||
-                              f.focalY != frame_.focalY;
-  const bool eyeMoved = !framesSent_ || f.eye != frame_.eye;
-  const bool ambientChanged = !framesSent_ || f.ambient != frame_.ambient;
-  // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.
-  const bool modelChanged = !framesSent_ || f.shading != frame_.shading || f.specular != frame_.specular;
-  const bool colorsStale = !framesSent_ || materialsChanged || lightsChanged || ambientChanged || modelChanged || objectsMoved ||
-                           (eyeMoved && !lightingIsViewIndependent(in));
-  frame_ = f;
+  const ShadeWork work = changes_.send(context_, {scene_.objects.buffer, scene_.materials.buffer, scene_.lights.buffer}, in);
+  frame_ = in.frame;
   uploadToBuffer(context_, perFrame_.frame, &frame_, sizeof(FrameData));
-  frameColorsInKeys_ = colorsInKeys_ && !withKeys_;
-  control_.shadeColors = colorsStale ? 1u : 0u;
-  control_.shadePositions = positionsStale ? 1u : 0u;
+  frameColorsInKeys_ = choices_.colorsInKeys && !withKeys_;
+  control_.shadeColors = work.colors ? 1u : 0u;
+  control_.shadePositions = work.positions ? 1u : 0u;
   writeControl();
-  ++framesSent_;
-  framesShaded_ += colorsStale;
-  framesTransformed_ += positionsStale;
 }
 
 // The pass control for the frame being rendered, from the renderer's buffers, image and workgroup
-// cap (which prepareRetry grows) and the shade flags uploadFrame or prepareRetry set; uploaded.
+// cap (which the retries grow) and the shade flags uploadFrame or prepareRetry set; uploaded.
 void GpuRenderer::writeControl() {
   control_.vertexCount = vertexCount_;
   control_.triangleCount = triangleCount_;
@@ -280,7 +220,7 @@ void GpuRenderer::writeControl() {
   control_.largeSetupCapacity = largeSetupCapacity_;
   control_.binsX = binsAcross(width_);
   control_.binCount = binsAcross(width_) * binsAcross(height_);
-  control_.groupCap = groupCap_;
+  control_.groupCap = retry_.groupCap();
   control_.loopProbe = LOOP_PROBE_ITERATIONS;
   uploadToBuffer(context_, perFrame_.control, &control_, sizeof(PassControl));
 }

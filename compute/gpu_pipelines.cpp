@@ -1,5 +1,5 @@
-// gpu_pipelines.cpp — which passes a frame runs and with which specialization constants, compiled
-// once each, in parallel, and kept in the renderer's pipeline set (GpuPipelineSet).
+// gpu_pipelines.cpp — the passes a frame runs (passes.h), compiled once each, in parallel, and kept
+// in the renderer's pipeline set (GpuPipelineSet).
 #include "compute/gpu_renderer.h"
 
 #include "shaders/bin_large.spv.h"
@@ -86,7 +86,7 @@ struct ShaderCode {
   {{SHADER(name), SHADER(name##_exact)}, {SHADER(name##_k32), SHADER(name##_k32_exact)}, \
    {SHADER(name##_k32s), SHADER(name##_k32s_exact)}}
 
-// Per pass (GpuRenderer::Pass order), for the 64-bit key path, the 32-bit one, and the 32-bit one
+// Per pass (passes.h Pass order), for the 64-bit key path, the 32-bit one, and the 32-bit one
 // reading its arrays from storage buffers (VulkanContext::storageArrays): the build with the
 // device's own division and sqrt, and the `_exact` build that corrects them (shaders/exact_float.h),
 // for devices whose own are off.
@@ -98,16 +98,6 @@ constexpr ShaderCode SHADERS[][3][2] = {
 
 #undef BUILDS
 #undef SHADER
-
-// The specialization constants shading with these materials and lights asks for (shared.h SPEC_*).
-std::vector<SpecConstant> shadeSpecs(const std::vector<MaterialData>& materials, size_t lightCount) {
-  bool specular = false, constantAttenuation = true;
-  for (const MaterialData& m : materials) {
-    specular = specular || m.ks != 0.0f;
-    constantAttenuation = constantAttenuation && m.attenuation.y == 0.0f && m.attenuation.z == 0.0f;
-  }
-  return {{SPEC_LIGHT_COUNT, uint32_t(lightCount)}, {SPEC_SPECULAR, specular}, {SPEC_CONSTANT_ATTENUATION, constantAttenuation}};
-}
 
 // A set serves renderers of one build (exact or not) in practice; the key says which all the same.
 std::vector<uint32_t> pipelineKey(uint32_t pass, bool exact, const std::vector<SpecConstant>& specs) {
@@ -155,64 +145,10 @@ const ComputePipeline& GpuRenderer::pipeline(const PipelineRequest& request) con
   return pipelines_->byKey_.at(pipelineKey(request.shader(), exactFloats_, request.specs));
 }
 
-// Every pass's pipeline for frames with these materials and lights and the frame's interpolation,
-// shading and specular model, and the resolve passes for the bins' lists taken in chunks once a
-// frame needed it (listChunk_). Frames
-// with keys (for diffs) compile their own resolve pipelines when first asked for: resolve keeps
-// the final keys and writes the colour buffer (RESOLVE_OUTPUT_KEEP_KEYS) after the background
-// pass. Without keys the colours go to the key slots, where the host reads them (colorsInKeys_) or
-// the pack pass packs them into the colour buffer.
-std::vector<GpuRenderer::PipelineRequest> GpuRenderer::requestsFor(const std::vector<MaterialData>& materials,
-                                                                   size_t lightCount, const FrameData& frame,
-                                                                   bool withKeys) const {
-  const uint32_t output = withKeys ? RESOLVE_OUTPUT_KEEP_KEYS : RESOLVE_OUTPUT_KEY_SLOTS;
-  const uint32_t interpolation = frame.interpolation;
-  std::vector<PipelineRequest> requests = {
-      {SHADE, shadeSpecs(materials, lightCount)},
-      {RASTER, {}},
-      {CLIP, {{SPEC_BIN_PASS, binPass_}, {SPEC_CLIP_POLYGONS, frameClip_}}},
-      {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_OUTPUT, output}}},
-      {RESOLVE_LARGE,
-       {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_TILES, resolveTiles_}, {SPEC_RESOLVE_OUTPUT, output}}},
-  };
-  // Only where they differ from the defaults: a Gouraud frame of whole lists keeps the pipelines
-  // (and pipeline cache entries) it always had. requests[p] is pass p's request up to RESOLVE_LARGE.
-  // Frames lit per pixel and scenes with textures colour every pixel in resolve_lit.
-  const bool perPixel = frame.shading != SHADING_GOURAUD || textured_;
-  if (listChunk_ != 0u || perPixel) requests[RESOLVE_LARGE].code = RESOLVE_LARGE_KEYS;
-  if (listChunk_ != 0u) {
-    for (Pass pass : {RESOLVE_SMALL, RESOLVE_LARGE}) requests[pass].specs.push_back({SPEC_LIST_CHUNK, listChunk_});
-  }
-  if (perPixel) requests[RESOLVE_SMALL].code = RESOLVE_LIT;
-  if (frame.shading != SHADING_GOURAUD) {  // lit per pixel: resolve_lit as the second resolve, with the lights
-    const std::vector<SpecConstant> lighting = shadeSpecs(materials, lightCount);
-    requests[RESOLVE_SMALL].specs.insert(requests[RESOLVE_SMALL].specs.end(), lighting.begin(), lighting.end());
-    for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_SHADING, frame.shading});
-  }
-  if (textured_) requests[RESOLVE_SMALL].specs.push_back({SPEC_TEXTURED, 1u});
-  if (frame.specular == SPECULAR_BLINN) {
-    for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_BLINN, 1u});
-  }
-  if (context_.info.keys32) {  // the triangle and clip passes twice: depth words, then ids (raster_loops.glsl)
-    requests.push_back({RASTER_IDS, {{SPEC_KEY_PASS, KEY_PASS_IDS}}, RASTER});
-    requests.push_back({CLIP_IDS, requests[CLIP].specs, CLIP});
-    requests.back().specs.push_back({SPEC_KEY_PASS, KEY_PASS_IDS});
-    for (Pass pass : {RASTER, CLIP}) requests[pass].specs.push_back({SPEC_KEY_PASS, KEY_PASS_DEPTH});
-  }
-  if (binPass_) requests.push_back({BIN_LARGE, {}});
-  if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background
-  if (packsColors(withKeys)) requests.push_back({PACK, {}});
-  if (frame.projection != PROJECTION_PERSPECTIVE) {  // as the others, only where not the default
-    for (PipelineRequest& r : requests) r.specs.push_back({SPEC_PROJECTION, frame.projection});
-  }
-  return requests;
-}
-
-bool GpuRenderer::packsColors(bool withKeys) const { return !withKeys && !colorsInKeys_; }
-
 void GpuRenderer::selectPipelines(const FrameInputs& in) {
-  frameClip_ = std::max(clipFloor_, in.clip);
-  const std::vector<PipelineRequest> requests = requestsFor(in.materials, in.lights.size(), in.frame, withKeys_);
+  choices_.clip = std::max(retry_.clipFloor(), in.clip);
+  choices_.listChunk = retry_.listChunk();
+  const std::vector<PipelineRequest> requests = passRequests(choices_, in.materials, in.lights.size(), in.frame, withKeys_);
   compilePipelines(requests);
   for (const PipelineRequest& r : requests) current_[r.pass] = pipeline(r);
 }

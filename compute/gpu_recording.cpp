@@ -61,17 +61,17 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   };
   raster(RASTER, CLIP);
   if (context_.info.keys32) raster(RASTER_IDS, CLIP_IDS);
-  if (binPass_) {
+  if (choices_.binPass) {
     bind(BIN_LARGE);
     vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, binGroupsX));
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 2);
   recordResolveLargeRound(cmd);
-  if (listChunk_ == 0u) recordResolveTail(cmd);  // else after the rounds (renderAttempt)
+  if (choices_.listChunk == 0u) recordResolveTail(cmd);  // else after the rounds (renderAttempt)
 }
 
-// Resolve over the touched bins (indirect): the large triangles, all of them or (listChunk_) the
+// Resolve over the touched bins (indirect): the large triangles, all of them or (choices_.listChunk) the
 // next chunk of each bin's list.
 void GpuRenderer::recordResolveLargeRound(VkCommandBuffer cmd) {
   bindPass(cmd, RESOLVE_LARGE);
@@ -86,7 +86,7 @@ void GpuRenderer::recordResolveTail(VkCommandBuffer cmd) {
   bindPass(cmd, RESOLVE_SMALL);
   vkCmdDispatchIndirect(cmd, image_.bins.buffer, offsetof(BinList, groupsX));
   computeBarrier(cmd);
-  if (packsColors(withKeys_)) {  // the colours from the key slots into the colour buffer
+  if (packsColors(choices_, withKeys_)) {  // the colours from the key slots into the colour buffer
     bindPass(cmd, PACK);
     vkCmdDispatch(cmd, std::min(groupCount(colorWords(frame_.width, frame_.height), PACK_GROUP_SIZE), control_.groupCap),
                   1, 1);

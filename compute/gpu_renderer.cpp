@@ -31,19 +31,20 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
     : context_(context),
       options_(options),
       exactFloats_(options.exactFloats ? *options.exactFloats : probeFloatOps(context).useExact()),
+      retry_(groupCapFor(context), options.firstGroupCap, options.firstListChunk),
       pipelines_(options.pipelines ? options.pipelines : std::make_shared<GpuPipelineSet>(context)),
       bindings_(sharedBindings(context)) {
-  startRetries();
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool cpuLayout = options.layout == WorkLayout::Cpu || (options.layout == WorkLayout::Auto && cpu);
-  resolveTiles_ = cpuLayout ? 1u : 8u;
-  binPass_ = !cpuLayout || context_.info.keys32;  // the 32-bit key path's clip pass never links (raster_loops.glsl)
+  choices_.resolveTiles = cpuLayout ? 1u : 8u;
+  choices_.binPass = !cpuLayout || context_.info.keys32;  // the 32-bit key path's clip pass never links (raster_loops.glsl)
+  choices_.keys32 = context_.info.keys32;
   if (options.output == ColorOutput::InKeySlots && !hasSharedMemory(context_)) {
     throw ArgumentError("colours in the key slots need memory that is device local and host cached");
   }
-  colorsInKeys_ = options.output == ColorOutput::InKeySlots ||
-                  (options.output == ColorOutput::Auto && hasSharedMemory(context_));
-  frameClip_ = options.clip;
+  choices_.colorsInKeys = options.output == ColorOutput::InKeySlots ||
+                          (options.output == ColorOutput::Auto && hasSharedMemory(context_));
+  choices_.clip = options.clip;
   try {
     checkSceneFits(data);
     compileSceneModes(data);
@@ -67,27 +68,21 @@ void GpuRenderer::compileSceneModes(const SceneData& data) {
   modes.shading = data.shading;
   modes.specular = data.specular;
   modes.projection = data.projection;
-  const std::vector<PipelineRequest> requests = requestsFor(data.materials, data.lights.size(), modes, false);
+  choices_.textured = !data.uvs.empty();
+  const std::vector<PipelineRequest> requests = passRequests(choices_, data.materials, data.lights.size(), modes, false);
   compilePipelines(requests);
   current_[RASTER] = pipeline(requests[RASTER]);
-}
-
-// The workgroup cap and list chunks a first frame starts from (prepareRetry grows them).
-void GpuRenderer::startRetries() {
-  groupCap_ = options_.firstGroupCap != 0 ? std::min(options_.firstGroupCap, MAX_DISPATCH_GROUPS) : groupCapFor(context_);
-  listChunk_ = options_.firstListChunk;
 }
 
 void GpuRenderer::replaceScene(const SceneData& data, uint32_t clip) {
   checkSceneFits(data);  // before anything is released
   scene_ = {};  // the old meshes go before the new ones are allocated
-  frameClip_ = std::max(clipFloor_, clip);
+  choices_.clip = std::max(retry_.clipFloor(), clip);
+  retry_.restart();
   compileSceneModes(data);
   uploadScene(data);
-  startRetries();
   if (width_ != 0) createLargeBuffersFor(VkDeviceSize(width_) * height_);  // sized for this scene's triangles
   keysDirty_ = true;
-  framesSent_ = 0;  // the next frame sends and shades everything
   updateDescriptors();
 }
 
@@ -122,7 +117,7 @@ RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image sto
 }
 
 // Renders the uploaded frame once; false when it must be rendered again (prepareRetry has grown
-// what it lacked). With the bins' lists taken in chunks (listChunk_), the first submission ends
+// what it lacked). With the bins' lists taken in chunks (RetryPolicy::listChunk), the first submission ends
 // after resolve_large's first round; the rounds it asks for (STATUS_MORE_ROUNDS) are submitted one
 // by one, then the rest of the frame.
 bool GpuRenderer::renderAttempt() {
@@ -134,7 +129,7 @@ bool GpuRenderer::renderAttempt() {
   // its colours, unless the host resets those as it reads them (readImage; the pack pass does not).
   keysDirty_ = true;
   submitAndWait(context_, cmd);
-  if (listChunk_ != 0u) {
+  if (choices_.listChunk != 0u) {
     while (status->flags == STATUS_MORE_ROUNDS) submitResolveRound(&GpuRenderer::recordResolveLargeRound);
     if (status->flags == 0u) submitResolveRound(&GpuRenderer::recordResolveTail);
   }
@@ -144,7 +139,7 @@ bool GpuRenderer::renderAttempt() {
   return false;
 }
 
-// One more submission of the frame's resolve (listChunk_): the status cleared, then what `record`
+// One more submission of the frame's resolve (lists in chunks): the status cleared, then what `record`
 // records, after a barrier on everything submitted before it.
 void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer)) {
   *static_cast<FrameStatus*>(perFrame_.status.mapped) = {};
@@ -154,31 +149,17 @@ void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer
   submitAndWait(context_, cmd);
 }
 
-// Makes room for what the last attempt lacked (STATUS_* flags): the clipper (kept for
-// the renderer's later frames), or twice the large triangles' lists,
-// or 16 times the workgroups per pass, or, with the most workgroups, the bins' lists taken in
-// chunks of LIST_CHUNK_FIRST entries and then a quarter as many each time (gpu_layout.h). The
-// attempt's keys and colours are thrown away, and the next one transforms and relights the
-// vertices (a cut-short shade pass may have left some out). The new sizes are kept for later frames.
+// Makes room for what the last attempt lacked (STATUS_* flags), as the retry policy says
+// (retry_policy.h); render selects the pipelines for a new clipper or list chunks. The attempt's
+// keys and colours are thrown away, and the next one transforms and relights the vertices (a
+// cut-short shade pass may have left some out).
 void GpuRenderer::prepareRetry(uint32_t statusFlags) {
-  if (statusFlags & STATUS_NEEDS_CLIPPING) {
-    clipFloor_ = CLIP_ALL;  // render selects the clip pass with the clipper
-  } else if (statusFlags & STATUS_LARGE_OVERFLOW) {
+  if (retry_.next(statusFlags, context_.info.name) == RetryPolicy::Step::GrowLists) {
     createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
                        uint32_t(std::min<uint64_t>(2ull * largeSetupCapacity_, UINT32_MAX)));
     updateDescriptors();
-  } else if (groupCap_ < MAX_DISPATCH_GROUPS) {
-    groupCap_ = std::min(groupCap_ * 16u, MAX_DISPATCH_GROUPS);
-  } else if (listChunk_ == 0u || listChunk_ > LIST_CHUNK_MIN) {
-    listChunk_ = listChunk_ == 0u ? LIST_CHUNK_FIRST : listChunk_ / 4u;  // render selects its pipelines
-  } else {
-    throw DeviceError("scene too large for " + context_.info.name +
-                             ": a pass needs more loop iterations per invocation than the device allows, even with " +
-                             std::to_string(groupCap_) + " workgroups and the large triangles' lists taken " +
-                             std::to_string(listChunk_) + " entries at a time");
   }
   keysDirty_ = true;
-  ++framesRepeated_;
   control_.shadeColors = 1u;
   control_.shadePositions = 1u;
   writeControl();

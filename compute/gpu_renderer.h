@@ -3,6 +3,9 @@
 // only the camera-dependent data (FrameInputs).
 #pragma once
 
+#include "compute/frame_changes.h"
+#include "compute/passes.h"
+#include "compute/retry_policy.h"
 #include "phongvk/image.h"
 #include "prepare/scene_data.h"
 #include "shaders/gpu_layout.h"
@@ -111,13 +114,13 @@ class GpuRenderer {
   void replaceScene(const SceneData& data, uint32_t clip = gpu::CLIP_NONE);  // clip: as the options'
 
   // Frames rendered again so far (render), for tests and the benchmark.
-  uint64_t framesRepeated() const { return framesRepeated_; }
+  uint64_t framesRepeated() const { return retry_.framesRepeated(); }
   // 0, or how many entries of each bin's large-triangle list resolve takes per round since a frame
   // had lists too long for the device's loop budget (gpu_layout.h LIST_CHUNK_FIRST).
-  uint32_t listChunk() const { return listChunk_; }
+  uint32_t listChunk() const { return retry_.listChunk(); }
   // CLIP_ALL once a frame met a triangle to clip in a clip pass built without the clipper: later
   // frames keep the clipper.
-  uint32_t clipFloor() const { return clipFloor_; }
+  uint32_t clipFloor() const { return retry_.clipFloor(); }
   // Time spent compiling its pipeline set's pipelines so far, construction included (a shared set:
   // by every renderer that compiled into it).
   double compileMs() const { return pipelines_->compileMs(); }
@@ -125,31 +128,15 @@ class GpuRenderer {
   const PassTimes& lastPassTimes() const { return times_; }
 
   // Frames so far whose per-vertex lighting was recomputed (the others only transformed).
-  uint64_t framesShaded() const { return framesShaded_; }
+  uint64_t framesShaded() const { return changes_.framesShaded(); }
 
   // Frames so far whose vertex positions were transformed (the others kept the previous frame's:
   // same view and objects).
-  uint64_t framesTransformed() const { return framesTransformed_; }
+  uint64_t framesTransformed() const { return changes_.framesTransformed(); }
 
  private:
-  // The passes a frame records, then shader builds that stand in for one: RESOLVE_LIT runs
-  // RESOLVE_SMALL in frames lit per pixel (flat and Phong shading), RESOLVE_LARGE_KEYS runs
-  // RESOLVE_LARGE where it keeps only keys (those frames, and lists taken in rounds).
-  // On the 32-bit key path RASTER_IDS and CLIP_IDS run the triangle and clip shaders again, for the
-  // keys' low words (raster_loops.glsl KEY_PASS).
-  enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, RESOLVE_LIT, RESOLVE_LARGE_KEYS,
-              RASTER_IDS, CLIP_IDS, PASS_COUNT };
   // Before shade, after shade, after the triangle + clip passes, after resolve: PassTimes.
   static constexpr uint32_t TIMESTAMP_SLOTS = 4;
-
-  // A pass, the shader build that runs it (the pass's own, or a variant: RESOLVE_LIT,
-  // RESOLVE_LARGE_KEYS) and the specialization constants it is compiled with.
-  struct PipelineRequest {
-    Pass pass;
-    std::vector<SpecConstant> specs;
-    Pass code = PASS_COUNT;  // PASS_COUNT: the pass's own shader
-    Pass shader() const { return code == PASS_COUNT ? pass : code; }
-  };
 
   // The frame loop (gpu_renderer.cpp).
   void release();  // destroys whatever exists; safe to call twice
@@ -158,11 +145,7 @@ class GpuRenderer {
   void prepareRetry(uint32_t statusFlags);
   void readTimes();
 
-  // Pipelines (gpu_pipelines.cpp).
-  std::vector<PipelineRequest> requestsFor(const std::vector<gpu::MaterialData>& materials, size_t lightCount,
-                                          const gpu::FrameData& frame, bool withKeys) const;
-  // Whether the pack pass moves the frame's colours from the key slots into the colour buffer.
-  bool packsColors(bool withKeys) const;
+  // Pipelines (gpu_pipelines.cpp), for the passes passRequests names (passes.h).
   void compilePipelines(const std::vector<PipelineRequest>& requests);
   const ComputePipeline& pipeline(const PipelineRequest& request) const;
   void selectPipelines(const FrameInputs& in);
@@ -191,15 +174,13 @@ class GpuRenderer {
   const VulkanContext& context_;
   GpuRendererOptions options_;  // as made: replaceScene starts from them again
   bool exactFloats_ = false;    // the passes' _exact builds
-  uint32_t resolveTiles_ = 1;  // SPEC_RESOLVE_TILES
-  bool binPass_ = false;       // SPEC_BIN_PASS: WorkLayout::Gpu runs the bin pass
-  uint32_t clipFloor_ = gpu::CLIP_NONE;  // raised when a frame met a triangle to clip unforeseen (kept after)
-  uint32_t frameClip_ = gpu::CLIP_NONE;  // SPEC_CLIP_POLYGONS: this frame's (the larger of clipFloor_ and FrameInputs::clip)
-  bool colorsInKeys_ = false;  // ColorOutput::InKeySlots
+  // The passes' shape: the work layout, key path and colour output chosen for the device, the
+  // scene's textures, and this frame's clipper (the larger of the retries' floor and
+  // FrameInputs::clip) and list chunks (the retries').
+  PassChoices choices_;
+  RetryPolicy retry_;          // the workgroup cap, list chunks and clipper that repeated frames grew
+  FrameChanges changes_;       // what the device holds from earlier frames
   bool keysDirty_ = false;     // the key slots may hold colours or keys no one reset: clear them first
-  uint32_t groupCap_ = 0;      // most workgroups per pass (gpu_layout.h CPU_DISPATCH_GROUPS, MAX_DISPATCH_GROUPS)
-  uint32_t listChunk_ = 0;     // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many entries a round
-  uint64_t framesRepeated_ = 0;
   std::shared_ptr<GpuPipelineSet> pipelines_;  // compiled ones, kept across renderers (GpuRendererOptions)
   ComputePipelineHandles current_[PASS_COUNT];  // this frame's (owned by pipelines_)
   std::vector<Binding> bindings_;  // the shared set as this context's shaders declare it (sharedBindings)
@@ -231,7 +212,6 @@ class GpuRenderer {
   FrameBuffers perFrame_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
-  bool textured_ = false;  // the scene samples textures: resolve_lit colours every pixel
   uint32_t largeCapacity_ = 0;
   uint32_t largeSetupCapacity_ = 0;
   uint32_t width_ = 0;
@@ -243,14 +223,6 @@ class GpuRenderer {
   gpu::PassControl control_{};
   bool withKeys_ = false;
   bool frameColorsInKeys_ = false;
-
-  // What the device holds from earlier frames, so a frame sends only what changed.
-  std::vector<gpu::ObjectData> lastObjects_;
-  std::vector<gpu::MaterialData> lastMaterials_;
-  std::vector<gpu::LightData> lastLights_;
-  uint64_t framesSent_ = 0;
-  uint64_t framesShaded_ = 0;
-  uint64_t framesTransformed_ = 0;
 };
 
 }  // namespace phongvk

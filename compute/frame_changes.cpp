@@ -1,0 +1,80 @@
+// frame_changes.cpp — a frame's uploads of only what changed (frame_changes.h).
+#include "compute/frame_changes.h"
+
+#include "phongvk/errors.h"
+
+#include <cstddef>
+#include <cstring>
+#include <string>
+
+namespace phongvk {
+
+using namespace gpu;
+
+namespace {
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+// Uploads `next` into `buffer` unless it equals what was sent last time; true if it changed.
+template <typename T>
+bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::vector<T>& next, std::vector<T>& last,
+                     const char* what) {
+  if (sameBytes(next, last)) return false;
+  if (next.size() != last.size() && !last.empty()) {
+    throw ArgumentError(std::string("a frame may not change the number of ") + what);
+  }
+  if (!next.empty()) uploadToBuffer(context, buffer, next.data(), next.size() * sizeof(T));
+  last = next;
+  return true;
+}
+
+// Whether an object's place for lighting changed (a posed object moved): what ObjectData holds
+// from lightOffset on (offset, flags, pose). Its viewOffset follows the camera, and the positions
+// alone.
+bool lightingPlacesChanged(const std::vector<ObjectData>& now, const std::vector<ObjectData>& last) {
+  if (now.size() != last.size()) return true;
+  constexpr size_t FROM = offsetof(ObjectData, lightOffset);
+  for (size_t i = 0; i < now.size(); ++i) {
+    if (std::memcmp(reinterpret_cast<const char*>(&now[i]) + FROM, reinterpret_cast<const char*>(&last[i]) + FROM,
+                    sizeof(ObjectData) - FROM) != 0)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void FrameChanges::restart(const SceneData& data) {
+  objects_ = data.objects;
+  materials_ = data.materials;
+  lights_ = data.lights;
+  sent_ = false;
+}
+
+ShadeWork FrameChanges::send(const VulkanContext& context, const FrameArrays& arrays, const FrameInputs& in) {
+  const bool materialsChanged = uploadIfChanged(context, arrays.materials, in.materials, materials_, "materials");
+  const bool lightsChanged = uploadIfChanged(context, arrays.lights, in.lights, lights_, "lights");
+  const bool objectsMoved = lightingPlacesChanged(in.objects, objects_);
+  const bool objectsChanged = uploadIfChanged(context, arrays.objects, in.objects, objects_, "objects");
+  const FrameData& f = in.frame;
+  const bool first = !sent_;
+  // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
+  const bool positionsStale = first || objectsChanged || f.right != frame_.right || f.up != frame_.up ||
+                              f.forward != frame_.forward || f.focalX != frame_.focalX || f.focalY != frame_.focalY;
+  const bool eyeMoved = first || f.eye != frame_.eye;
+  const bool ambientChanged = first || f.ambient != frame_.ambient;
+  // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.
+  const bool modelChanged = first || f.shading != frame_.shading || f.specular != frame_.specular;
+  const bool colorsStale = first || materialsChanged || lightsChanged || ambientChanged || modelChanged || objectsMoved ||
+                           (eyeMoved && !lightingIsViewIndependent(in));
+  frame_ = f;
+  sent_ = true;
+  framesShaded_ += colorsStale;
+  framesTransformed_ += positionsStale;
+  return {colorsStale, positionsStale};
+}
+
+}  // namespace phongvk
