@@ -22,8 +22,6 @@ void checkTextureSize(int64_t width, int64_t height, const std::string& what) {
               "a smaller texture fits");
 }
 
-uint64_t memoryLimitBytes(const std::string& gib, const std::string& what) { return parseMemoryLimit(gib, what); }
-
 uint64_t memoryLimit() { return sceneMemoryLimit(); }
 
 }  // namespace phongvk

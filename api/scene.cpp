@@ -387,18 +387,6 @@ Scene firstFrame(std::shared_ptr<const SceneSequence> sequence) {
 
 }  // namespace
 
-ModelUp parseModelUp(const std::string& name) {
-  if (name == "y") return ModelUp::Y;
-  if (name == "z") return ModelUp::Z;
-  throw ArgumentError("up: expected 'y' or 'z', got '" + name + "'");
-}
-
-bool parseOrthographic(const std::string& projection) {
-  if (projection == "perspective") return false;
-  if (projection == "orthographic") return true;
-  throw ArgumentError("projection: expected 'perspective' or 'orthographic', got '" + projection + "'");
-}
-
 Scene loadScene(const std::string& path, const LoadOptions& options) {
   ModelView view;
   if (options.up != ModelUp::Usual) view.up = options.up == ModelUp::Y ? UpAxis::Y : UpAxis::Z;

@@ -1,5 +1,7 @@
 #include "cli/cli_support.h"
 
+#include "tools/option_text.h"
+
 #include <cstdio>
 
 namespace phongvk::cli {

@@ -1,6 +1,7 @@
 // phongvk — headless Phong/Gouraud renderer. main parses arguments and calls cli/commands.h.
 #include "cli/commands.h"
 #include "phongvk/phongvk.h"
+#include "tools/option_text.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,6 +1,8 @@
 // bind_scene.cpp — phongvk.Scene, load_scene and scene_from_dict for Python (see bindings.h).
 #include "bindings.h"
 
+#include "tools/option_text.h"
+
 namespace phongvk::python {
 
 void bindScene(py::module_& m) {

@@ -1,6 +1,8 @@
 // materials.cpp — materials, textures, render settings and placing meshes (see bindings.h).
 #include "bindings.h"
 
+#include "tools/option_text.h"
+
 namespace phongvk::python {
 
 void setFields(py::object& value, const py::dict& fields, const std::string& what) {

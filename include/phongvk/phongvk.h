@@ -181,15 +181,6 @@ class PHONGVK_API Scene {
   friend struct SceneAccess;  // the library's own way in (api/scene_access.h)
 };
 
-// "y" or "z", as the CLI's --up and Python's up= take it; ArgumentError "up: expected 'y' or 'z',
-// got '...'" for anything else.
-PHONGVK_API ModelUp parseModelUp(const std::string& name);
-
-// "perspective" or "orthographic", as the CLI's --projection and Python's projection= take it:
-// whether it is orthographic (LoadOptions::orthographic); ArgumentError "projection: expected
-// 'perspective' or 'orthographic', got '...'" for anything else.
-PHONGVK_API bool parseOrthographic(const std::string& projection);
-
 struct LoadOptions {
   ModelUp up = ModelUp::Usual;  // only for a model file alone: a scene file names each object's "up"
   // Only for a model file alone: true, a fitted orthographic camera (its view spanning the model
@@ -359,8 +350,8 @@ PHONGVK_API DiffResult diff(const Scene& scene, const RendererOptions& gpuOption
 // which keeps what it uploads as for any frame.
 PHONGVK_API DiffResult diff(const Scene& scene, Renderer& renderer);
 
-// The memory a scene may take, estimated before anything is built (about 112 bytes a triangle and
-// 32 a pixel sample) and checked again on every frame; a scene beyond it fails with SceneError
+// The memory a scene may take, estimated before anything is built (docs/DESIGN.md "Memory") and
+// checked again on every frame; a scene beyond it fails with SceneError
 // naming the objects that take most. Default: the machine's physical memory, or the environment's
 // PHONGVK_MAX_MEMORY_GB (a SceneError when it is not a number of GiB). 0 restores the default.
 PHONGVK_API void setMemoryLimit(uint64_t bytes);
@@ -368,10 +359,6 @@ PHONGVK_API void setMemoryLimit(uint64_t bytes);
 // machine's physical memory. Throws SceneError for a PHONGVK_MAX_MEMORY_GB that is not a number of
 // GiB.
 PHONGVK_API uint64_t memoryLimit();
-// A limit in GiB as text ("4", "0.5"), as PHONGVK_MAX_MEMORY_GB and --max-memory-gb take it, in
-// bytes (a value past 64 bits is no limit). Throws SceneError "<what> is '<text>': expected a number
-// of GiB, at least 0.001 ..." for anything else (empty, not a number, NaN, too small).
-PHONGVK_API uint64_t memoryLimitBytes(const std::string& gib, const std::string& what);
 // Throws SceneError when `scene`, as it stands (its size and samples, its meshes estimated before
 // they are built), needs more than the memory limit: the check every renderer makes before it
 // builds, for a caller that wants it before rendering anything (every frame of a sequence first).
