@@ -133,8 +133,8 @@ SceneSpec withLights(const SceneSpec& scene, const std::vector<Light>& lights) {
     const std::string at = "lights[" + std::to_string(i) + "]";
     requireFinite(lights[i].intensity, at + ".intensity");
     finite3(lights[i].color, at + ".color");
-    if (lights[i].directional) finite3(lights[i].direction, at + ".direction");
-    else if (!lights[i].atCamera) finite3(lights[i].position, at + ".position");  // at the camera: not used
+    if (lights[i].directional || lights[i].spot) finite3(lights[i].direction, at + ".direction");
+    if (!lights[i].directional && !lights[i].atCamera) finite3(lights[i].position, at + ".position");  // at the camera: not used
   }
   SceneSpec changed = scene;
   changed.lights = scenejson::lightSpecs(lights, Where("lights", scene.path));
@@ -145,7 +145,8 @@ std::vector<Light> lightsOf(const SceneSpec& scene) {
   std::vector<Light> lights;
   for (const LightSpec& l : scene.lights) {
     lights.push_back({{l.position.x, l.position.y, l.position.z}, l.intensity, {l.color.x, l.color.y, l.color.z},
-                      l.atCamera, l.directional, {l.direction.x, l.direction.y, l.direction.z}});
+                      l.atCamera, l.directional, {l.direction.x, l.direction.y, l.direction.z}, l.spot, l.innerCone,
+                      l.outerCone});
   }
   return lights;
 }

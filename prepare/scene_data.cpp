@@ -262,6 +262,22 @@ uint64_t textureBytes(const SceneData& data) {
          data.textures.size() * sizeof(gpu::TextureData);
 }
 
+namespace {
+
+// A spot light's axis and cone constants (phong.h spotCone), computed in double and rounded once,
+// as glTF defines them: scale = 1 / max(cos inner - cos outer, 0.001), offset = -cos outer * scale.
+void setSpotCone(gpu::LightData& g, const LightSpec& l) {
+  const double cosInner = std::cos(glm::radians(l.innerCone));
+  const double cosOuter = std::cos(glm::radians(l.outerCone));
+  const double scale = 1.0 / std::max(cosInner - cosOuter, 0.001);
+  g.spot = 1.0f;
+  g.spotAxis = glm::vec3(glm::normalize(l.direction));
+  g.spotScale = float(scale);
+  g.spotOffset = float(-cosOuter * scale);
+}
+
+}  // namespace
+
 void refreshShading(SceneData& data, const SceneSpec& scene) {
   data.materials.clear();
   for (const MaterialSpec& m : scene.materials) data.materials.push_back(toGpu(m, data.textureIndex));
@@ -273,6 +289,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
     // for both renderers.
     g.position = l.directional ? glm::vec3(-glm::normalize(l.direction)) : glm::vec3(l.position - data.lightingOrigin);
     g.directional = l.directional ? 1.0f : 0.0f;
+    if (l.spot) setSpotCone(g, l);
     g.intensity = l.intensity;
     g.color = l.color;
     data.lights.push_back(g);

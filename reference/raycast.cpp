@@ -52,6 +52,14 @@ double nearerHit(const glm::dvec3& eye, const glm::dvec3& d, const glm::dvec3& c
   return std::min(t0, t1);
 }
 
+// A spot light's cone at the unit direction l toward it, in closed form (docs/DESIGN.md "Lights").
+double spotCone(const LightSpec& light, const glm::dvec3& l) {
+  const double cosInner = std::cos(glm::radians(light.innerCone)), cosOuter = std::cos(glm::radians(light.outerCone));
+  const double cd = -glm::dot(glm::normalize(light.direction), l);
+  const double t = std::clamp((cd - cosOuter) / std::max(cosInner - cosOuter, 0.001), 0.0, 1.0);
+  return t * t;
+}
+
 // docs/DESIGN.md "Phong": ka C A + sum_i S I_i (C o L_i) (kd max(N.l, 0) + ks max(r.V, 0)^n), the
 // specular term only where N.l > 0, a light exactly at P adding nothing.
 // V is the unit vector toward the viewer.
@@ -66,7 +74,8 @@ glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& V, 
     const glm::dvec3 l = toLight / d;
     const double NdotL = glm::dot(N, l);
     if (NdotL <= 0) continue;
-    const double S = light.directional ? 1 : 1 / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
+    double S = light.directional ? 1 : 1 / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
+    if (light.spot) S *= spotCone(light, l);
     const glm::dvec3 r = 2 * NdotL * N - l;
     const double rV = std::max(glm::dot(r, V), 0.0);
     const double specular = m.n == 0 ? 1 : std::pow(rV, double(m.n));

@@ -51,6 +51,12 @@ struct LightSpec {
   // `direction` (non-zero, any length) and reaches every point alike, without fall-off.
   bool directional = false;
   glm::dvec3 direction = {0, 0, -1};
+  // "position" and "direction": a spot light at `position` pointing along `direction`, full within
+  // `innerCone` of its axis and dark beyond `outerCone` (half-angles in degrees, 0 <= inner <
+  // outer <= 90; glTF KHR_lights_punctual's defaults and fall-off).
+  bool spot = false;
+  double innerCone = 0;
+  double outerCone = 45;
 };
 
 struct CameraSpec {

@@ -7,7 +7,7 @@
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kLightKeys = {"position", "direction", "intensity", "color"};
+const Keys kLightKeys = {"position", "direction", "intensity", "color", "inner_cone", "outer_cone"};
 const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color", "texture"};
 
 // The file's light as a value, its keys and types checked (the values are lightSpec's).
@@ -20,31 +20,61 @@ Light lightValues(const Node& node) {
     return Vec3{v.x, v.y, v.z};
   };
   const std::optional<Node> direction = node.find("direction");
+  const std::optional<Node> position = node.find("position");
   if (direction) {
-    if (node.find("position")) node.failAt("direction", "a light has a position or a direction, not both");
-    light.directional = true;
+    light.spot = position.has_value();  // a position and a direction: a spot light
+    light.directional = !light.spot;
     light.direction = array(*direction);
+  }
+  for (auto [key, field] : {std::pair{"inner_cone", &light.innerCone}, {"outer_cone", &light.outerCone}}) {
+    if (auto cone = node.find(key)) {
+      if (!light.spot) cone->fail("only a spot light (a \"position\" and a \"direction\") has a cone");
+      *field = number(*cone);
+    }
   }
   if (auto intensity = node.find("intensity")) light.intensity = number(*intensity);
   if (auto lightColor = node.find("color")) light.color = array(*lightColor);
-  if (direction) return light;
-  const Node position = node.require("position");
-  if (position.json().is_string()) {
-    if (string(position) != "camera") position.fail("must be a point or \"camera\", got '" + string(position) + "'");
+  if (light.directional) return light;
+  if (!position) node.require("position");  // fails: a light needs one
+  if (position->json().is_string()) {
+    if (string(*position) != "camera") position->fail("must be a point or \"camera\", got '" + string(*position) + "'");
+    if (light.spot) position->fail("a spot light stands at a point, not at the camera");
     light.atCamera = true;
   } else {
-    light.position = array(position);
+    light.position = array(*position);
   }
   return light;
+}
+
+// A spot light's cones: 0 <= inner < outer <= 90 degrees (glTF's rule, in degrees).
+void checkCones(const Light& light, const Where& at) {
+  const auto finite = [&](double value, const char* key) {
+    if (!std::isfinite(value)) at.at(key).fail("must be a number of degrees, got " + formatNumber(value));
+  };
+  finite(light.innerCone, "inner_cone");
+  finite(light.outerCone, "outer_cone");
+  if (light.outerCone <= 0 || light.outerCone > 90)
+    at.at("outer_cone").fail("must be more than 0 and at most 90 degrees, got " + formatNumber(light.outerCone));
+  if (light.innerCone < 0 || light.innerCone >= light.outerCone)
+    at.at("inner_cone").fail("must be at least 0 and less than outer_cone (" + formatNumber(light.outerCone) +
+                             " degrees), got " + formatNumber(light.innerCone));
 }
 
 }  // namespace
 
 LightSpec lightSpec(const Light& light, const Where& at) {
   LightSpec spec;
-  if (light.directional) {
-    spec.directional = true;
+  if (light.directional && light.spot) at.fail("a light is directional or a spot light, not both");
+  if (light.spot && light.atCamera) at.at("position").fail("a spot light stands at a point, not at the camera");
+  if (light.directional || light.spot) {
+    spec.directional = light.directional;
+    spec.spot = light.spot;
     spec.direction = usableDirection(toVec(light.direction), at.at("direction"));
+  }
+  if (light.spot) {
+    checkCones(light, at);
+    spec.innerCone = light.innerCone;
+    spec.outerCone = light.outerCone;
   }
   spec.intensity = nonNegativeFloat(light.intensity, at.at("intensity"));
   spec.color = color(toVec(light.color), at.at("color"));

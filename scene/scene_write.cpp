@@ -55,10 +55,11 @@ Json cameraJson(const CameraSpec& c) {
 
 Json lightJson(const LightSpec& light) {
   Json json = Json::object();
-  if (light.directional) {
-    json["direction"] = vec3Json(light.direction);
-  } else {
-    json["position"] = light.atCamera ? Json("camera") : vec3Json(light.position);
+  if (light.directional || light.spot) json["direction"] = vec3Json(light.direction);
+  if (!light.directional) json["position"] = light.atCamera ? Json("camera") : vec3Json(light.position);
+  if (light.spot) {
+    json["inner_cone"] = light.innerCone;
+    json["outer_cone"] = light.outerCone;
   }
   json["intensity"] = double(light.intensity);
   json["color"] = vec3Json(light.color);

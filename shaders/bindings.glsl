@@ -159,9 +159,11 @@ MaterialData materialData(uint i) {
 }
 
 LightData lightData(uint i) {
-  vec4 a = floats(TEXEL(lightTexels, 2u * i));
-  vec4 b = floats(TEXEL(lightTexels, 2u * i + 1u));
-  return LightData(a.xyz, a.w, b.xyz, b.w);
+  vec4 a = floats(TEXEL(lightTexels, 4u * i));
+  vec4 b = floats(TEXEL(lightTexels, 4u * i + 1u));
+  vec4 c = floats(TEXEL(lightTexels, 4u * i + 2u));
+  vec4 d = floats(TEXEL(lightTexels, 4u * i + 3u));
+  return LightData(a.xyz, a.w, b.xyz, b.w, c.xyz, c.w, d.x, d.y, d.z, d.w);
 }
 
 VertexUv vertexUv(uint i) {

@@ -96,10 +96,22 @@ FN float specularBase(vec3 N, vec3 l, vec3 V, float NdotL, bool blinn) {
   return rV;
 }
 
+// A spot light's cone at the unit direction l from P toward the light (glTF KHR_lights_punctual's
+// fall-off): t = clamp(cd * scale + offset, 0, 1), cd the cosine between the spot's axis and the
+// way from the light to P, and the factor t^2: 1 inside the inner cone, 0 outside the outer one.
+// scale and offset are the light's, rounded once from double on the host.
+FN float spotCone(LightData light, vec3 l) {
+  PRECISE float cd = -dot3(light.spotAxis, l);
+  PRECISE float t = min(max(cd * light.spotScale + light.spotOffset, 0.0f), 1.0f);
+  PRECISE float cone = t * t;
+  return cone;
+}
+
 // One light's diffuse + specular contribution at P (all positions relative to the lighting origin):
 // S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0; with
 // `blinn`, max(N.h, 0)^n instead of max(r.V, 0)^n (specularBase). A directional light has the
-// same l at every P (its unit direction) and no fall-off: S = 1.
+// same l at every P (its unit direction) and no fall-off: S = 1. A spot light's S is a point light's
+// times its cone (spotCone); outside the outer cone it adds nothing.
 // `specular` and `constantAttenuation` let a shader specialized to the scene skip work whose
 // result is known: with ks = 0 the specular term adds exactly +0, and with b = c = 0 the
 // attenuation 1 / (a + b d + c d^2) is exactly 1 / a. Either way the result is bit-identical to
@@ -113,10 +125,13 @@ FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, 
   PRECISE vec3 l = directional ? light.position : divide(toLight, d);
   PRECISE float NdotL = dot3(N, l);
   if (NdotL <= 0.0f) return vec3(0.0f);
+  PRECISE float cone = light.spot != 0.0f ? spotCone(light, l) : 1.0f;
+  if (cone == 0.0f) return vec3(0.0f);
   PRECISE float S = held(directional ? 1.0f
                          : constantAttenuation
                              ? divide(1.0f, m.attenuation.x)
                              : divide(1.0f, m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));
+  if (light.spot != 0.0f) S = held(S * cone);
   PRECISE float shade = held(m.kd * NdotL);
   if (specular) {
     PRECISE float rV = max(specularBase(N, l, V, NdotL, blinn), 0.0f);

@@ -203,11 +203,17 @@ PHONGVK_CONST uint TEXTURE_FILTER_BILINEAR = 1;
 PHONGVK_CONST uint TEXTURE_MAX_SIDE = 16384;
 
 struct LightData {
-  vec3 position;     // a point light: world coordinates relative to the lighting origin;
+  vec3 position;     // a point or spot light: world coordinates relative to the lighting origin;
                      // a directional light: the unit direction toward it
   float intensity;
   vec3 color;
-  float directional;  // 1: a directional light (no position, no fall-off), 0: a point light
+  float directional;  // 1: a directional light (no position, no fall-off), 0: a point or spot light
+  vec3 spotAxis;      // a spot light: the unit direction it points (from the light), else 0
+  float spotScale;    // a spot light: 1 / max(cos inner - cos outer, 0.001), else 0 (phong.h spotCone)
+  float spotOffset;   // a spot light: -cos outer * spotScale
+  float spot;         // 1: a spot light, 0: another
+  float reserved0;
+  float reserved1;
 };
 
 // One frame as the scene and its camera define it: built once per frame by makeFrame
@@ -243,7 +249,8 @@ static_assert(sizeof(ObjectData) == 16 * OBJECT_TEXELS && offsetof(ObjectData, l
 static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && offsetof(MaterialData, ks) == 32);
 static_assert(offsetof(MaterialData, texture) == 40);
 static_assert(sizeof(VertexUv) == 16 && sizeof(TextureData) == 16);
-static_assert(sizeof(LightData) == 32 && offsetof(LightData, color) == 16);
+static_assert(sizeof(LightData) == 64 && offsetof(LightData, color) == 16 && offsetof(LightData, spotAxis) == 32 &&
+              offsetof(LightData, spotOffset) == 48);
 static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focalX) == 60);
 static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearPlane) == 76);
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace phongvk::gpu {
 namespace {
 
@@ -68,6 +70,43 @@ TEST(Phong, DirectionalLightHasOneDirectionAndNoFallOff) {
   }
   sun.position = vec3(0.0f, 0.6f, -0.8f);  // from below: nothing
   expectColor(phongLight(P, N, toEye(P, EYE), m, sun), vec3(0.0f));
+}
+
+// A spot light at (0, 0, 2) pointing straight down, full within 20 degrees, dark beyond 40: its
+// constants as the host computes them (prepare/scene_data.cpp), glTF's fall-off.
+LightData spotDown() {
+  LightData l = light(vec3(0, 0, 2), 1.0f, vec3(1.0f));
+  const double cosInner = std::cos(20 * M_PI / 180), cosOuter = std::cos(40 * M_PI / 180);
+  const double scale = 1 / (cosInner - cosOuter);
+  l.spot = 1.0f;
+  l.spotAxis = vec3(0, 0, -1);
+  l.spotScale = float(scale);
+  l.spotOffset = float(-cosOuter * scale);
+  return l;
+}
+
+TEST(Phong, SpotLightIsAPointLightWithinItsInnerCone) {
+  const MaterialData m = material();
+  const vec3 V = toEye(P, EYE);
+  const vec3 point = phongLight(P, N, V, m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f)));
+  EXPECT_EQ(phongLight(P, N, V, m, spotDown()), point);  // on the axis: the cone is exactly 1
+  // 15 degrees off the axis, still inside the inner cone.
+  const vec3 at(float(2 * std::tan(15 * M_PI / 180)), 0.0f, 0.0f);
+  EXPECT_EQ(phongLight(at, N, toEye(at, at + EYE), m, spotDown()),
+            phongLight(at, N, toEye(at, at + EYE), m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f))));
+}
+
+TEST(Phong, SpotLightFallsOffBetweenItsConesAndIsDarkBeyond) {
+  const MaterialData m = material();
+  // 30 degrees off the axis: t = (cos 30 - cos 40) / (cos 20 - cos 40) = 0.575768, cone t^2 = 0.331509.
+  const vec3 at(float(2 * std::tan(30 * M_PI / 180)), 0.0f, 0.0f);
+  const vec3 V = toEye(at, at + EYE);
+  const vec3 point = phongLight(at, N, V, m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f)));
+  expectColor(phongLight(at, N, V, m, spotDown()), point * 0.331509f);
+  // 45 degrees off the axis: nothing, though the point light there lights it.
+  const vec3 beyond(2.0f, 0.0f, 0.0f);
+  EXPECT_GT(phongLight(beyond, N, toEye(beyond, beyond + EYE), m, light(vec3(0, 0, 2), 1.0f, vec3(1.0f))).x, 0.0f);
+  expectColor(phongLight(beyond, N, toEye(beyond, beyond + EYE), m, spotDown()), vec3(0.0f));
 }
 
 TEST(Phong, AttenuationOnlyQuadratic) {

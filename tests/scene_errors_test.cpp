@@ -97,6 +97,32 @@ TEST(SceneErrors, UnknownKeyAtTopLevel) {
             "materials, objects, render, animate)");
 }
 
+TEST(SceneErrors, SpotLightCones) {
+  const auto spot = [](ordered_json light) {
+    return errorFor([&](ordered_json& s) { s["lights"] = ordered_json::array({light}); });
+  };
+  const ordered_json at = {{"position", {0, 0, 3}}, {"direction", {0, 0, -1}}};
+  auto with = [&](const char* key, double value) {
+    ordered_json light = at;
+    light[key] = value;
+    return light;
+  };
+  EXPECT_EQ(spot(with("outer_cone", 95)), "a.json: lights[0].outer_cone: must be more than 0 and at most 90 degrees, got 95");
+  EXPECT_EQ(spot(with("outer_cone", 0)), "a.json: lights[0].outer_cone: must be more than 0 and at most 90 degrees, got 0");
+  EXPECT_EQ(spot(with("inner_cone", 45)),
+            "a.json: lights[0].inner_cone: must be at least 0 and less than outer_cone (45 degrees), got 45");
+  EXPECT_EQ(spot(with("inner_cone", -1)),
+            "a.json: lights[0].inner_cone: must be at least 0 and less than outer_cone (45 degrees), got -1");
+  EXPECT_EQ(spot({{"position", {0, 0, 3}}, {"outer_cone", 30}}),
+            "a.json: lights[0].outer_cone: only a spot light (a \"position\" and a \"direction\") has a cone");
+  EXPECT_EQ(spot({{"direction", {0, 0, -1}}, {"inner_cone", 10}}),
+            "a.json: lights[0].inner_cone: only a spot light (a \"position\" and a \"direction\") has a cone");
+  EXPECT_EQ(spot({{"position", "camera"}, {"direction", {0, 0, -1}}}),
+            "a.json: lights[0].position: a spot light stands at a point, not at the camera");
+  EXPECT_EQ(spot({{"position", {0, 0, 3}}, {"direction", {0, 0, 0}}}),
+            "a.json: lights[0].direction: must have a non-zero finite length, got length 0");
+}
+
 TEST(SceneErrors, UnknownKeyNested) {
   EXPECT_EQ(errorFor([](ordered_json& s) { s["camera"]["zoom"] = 2; }),
             "a.json: camera.zoom: unknown key (allowed: position, direction, look_at, up, fov, "
@@ -107,7 +133,8 @@ TEST(SceneErrors, UnknownKeyNested) {
   EXPECT_EQ(errorFor([](ordered_json& s) {
               s["lights"] = {{{"position", {0, 0, 0}}, {"power", 1}}};
             }),
-            "a.json: lights[0].power: unknown key (allowed: position, direction, intensity, color)");
+            "a.json: lights[0].power: unknown key (allowed: position, direction, intensity, color, inner_cone, "
+            "outer_cone)");
   EXPECT_EQ(objectError(R"({"shape": "sphere", "radiu": 1})"),
             "a.json: objects[0].radiu: unknown key (allowed: shape, material, subdivide, closed, "
             "scale, rotate, object_id, center, radius, segments)");

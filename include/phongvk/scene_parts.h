@@ -79,7 +79,9 @@ PHONGVK_API Camera cameraFromIntrinsics(double fx, double fy, double cx, double 
 
 // A light (docs/DESIGN.md "Lights"): a point light at `position`, or one that moves with the camera
 // (atCamera), or a directional light (directional: its light travels along `direction` and reaches
-// every point alike, without fall-off, as the sun's).
+// every point alike, without fall-off, as the sun's), or a spot light (spot: at `position`, pointing
+// along `direction`, full within `innerCone` degrees of its axis, dark beyond `outerCone`, with
+// glTF's smooth fall-off between them).
 struct Light {
   Vec3 position = {0, 0, 0};
   double intensity = 1;
@@ -87,6 +89,9 @@ struct Light {
   bool atCamera = false;
   bool directional = false;
   Vec3 direction = {0, 0, -1};
+  bool spot = false;
+  double innerCone = 0;   // degrees from the axis, 0 <= innerCone < outerCone
+  double outerCone = 45;  // degrees from the axis, at most 90
   bool operator==(const Light&) const = default;
 };
 

@@ -51,7 +51,11 @@ class Light:
     intensity: float
     color: Vec3
     at_camera: bool
+    spot: Optional[Vec3]
+    inner_cone: float
+    outer_cone: float
     def __init__(self, *, position: Sequence[float] = ..., direction: Optional[Sequence[float]] = None,
+                 spot: Optional[Sequence[float]] = None, inner_cone: float = ..., outer_cone: float = ...,
                  intensity: float = ..., color: Sequence[float] = ..., at_camera: bool = ...) -> None: ...
 
 class Texture:

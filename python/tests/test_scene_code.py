@@ -297,12 +297,36 @@ def test_a_directional_light_renders_as_the_same_light_written():
                                    "lights": [{"direction": [-1, 1, -2], "intensity": 0.8, "color": [1, 0.9, 0.7]}],
                                    "objects": [{"shape": "sphere", "center": [3000, 0, 0], "radius": 0.6}]})
     assert np.abs(both(far).astype(int) - image.astype(int)).max() <= 1
-    with pytest.raises(phongvk.SceneError, match=r"lights\[0\].direction: a light has a position or a direction, not both"):
-        phongvk.scene_from_dict({"camera": {"position": [3, 0, 0], "look_at": [0, 0, 0]}, "objects": [{"shape": "cube"}],
-                                 "lights": [{"position": [0, 0, 3], "direction": [0, 0, -1]}]})
     with pytest.raises(phongvk.SceneError, match=r"lights\[0\].direction: must have a non-zero finite length"):
         built.lights = [phongvk.Light(direction=(0, 0, 0))]
 
+
+def test_a_spot_light_renders_as_the_same_light_written_and_lights_only_its_cone():
+    def scene(lights):
+        return phongvk.scene_from_dict({
+            "camera": {"position": [0, -4, 4], "look_at": [0, 0, 0], "width": 96, "height": 64},
+            "render": {"shading": "phong"}, "lights": lights,
+            "objects": [{"shape": "cube", "center": [0, 0, -0.05], "size": 4, "scale": [1, 1, 0.025]}]})
+    spot = {"position": [0, 0, 2], "direction": [0, 0, -1], "inner_cone": 10, "outer_cone": 20}
+    written, built, dark = scene([spot]), scene([]), both(scene([]))
+    built.lights = [phongvk.Light(position=(0, 0, 2), spot=(0, 0, -1), inner_cone=10, outer_cone=20)]
+    image = both(built)
+    assert np.array_equal(image, both(written))
+    assert built.to_dict()["lights"] == [{"direction": [0.0, 0.0, -1.0], "position": [0.0, 0.0, 2.0],
+                                          "intensity": 1.0, "color": [1.0, 1.0, 1.0], "inner_cone": 10.0,
+                                          "outer_cone": 20.0}]
+    lit = np.any(image != dark, axis=2)
+    # The lit disc's radius on the floor (at 2 m below the light) is 2 tan 20 = 0.73 m of the 4 m floor.
+    assert 0 < lit.sum() < 0.25 * lit.size
+    light = built.lights[0]
+    assert light.spot == (0.0, 0.0, -1.0) and light.direction is None and "spot=(0.0, 0.0, -1.0)" in repr(light)
+    light.outer_cone = 40  # a live view: the wider cone lights more of the floor
+    assert np.any(both(built) != dark, axis=2).sum() > lit.sum()
+    with pytest.raises(phongvk.ArgumentError, match="direction= .* or spot= .*, not both"):
+        phongvk.Light(direction=(0, 0, -1), spot=(0, 0, -1))
+    with pytest.raises(phongvk.SceneError, match=r"lights\[0\].outer_cone: must be more than 0 and at most 90"):
+        light.outer_cone = 100
+    assert built.lights[0].outer_cone == 40
 
 # ---- materials and render settings as values ----
 
