@@ -144,6 +144,7 @@ RendererStats Renderer::Impl::stats() const {
   s.framesShaded = framesShaded();
   s.framesRepeated = framesRepeated();
   s.triangles = data_ ? data_->triangles.size() : 0;
+  s.lights = data_ ? data_->lights.size() : 0;
   s.buildMs = buildMs_;
   s.textureBytes = data_ ? textureBytes(*data_) : 0;
   s.firstFrameMs = firstFrameMs_;

@@ -391,6 +391,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   ModelView view;
   if (options.up != ModelUp::Usual) view.up = options.up == ModelUp::Y ? UpAxis::Y : UpAxis::Z;
   view.orthographic = options.orthographic;
+  view.fileLights = options.fileLights;
   return firstFrame(std::make_shared<const SceneSequence>(SceneSequence::load(path, view)));
 }
 

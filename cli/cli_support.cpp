@@ -68,7 +68,8 @@ LoadOptions loadOptions(const ViewOptions& options) {
   // The memory limit holds from the first file read: a scene's textures are decoded as it loads.
   if (!options.maxMemoryGb.empty()) setMemoryLimit(memoryLimitBytes(options.maxMemoryGb, "--max-memory-gb"));
   return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up),
-          options.projection.empty() ? std::nullopt : std::optional<bool>(parseOrthographic(options.projection))};
+          options.projection.empty() ? std::nullopt : std::optional<bool>(parseOrthographic(options.projection)),
+          !options.noFileLights};
 }
 
 Scene loadEveryFrameValidated(const ViewOptions& options) {

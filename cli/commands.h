@@ -31,6 +31,7 @@ struct ViewOptions {
   int samples = 0;
   std::string up;       // --up y|z: a model file alone stood up along this axis ("": its format's usual one)
   std::string projection;  // --projection perspective|orthographic: a model file alone's fitted camera ("": perspective)
+  bool noFileLights = false;  // --no-file-lights: a glTF file alone lit from the camera, not by its own lights
 };
 
 // --up and --projection as the library takes them.

@@ -85,7 +85,7 @@ int runRender(const RenderOptions& options) {
     std::fprintf(out, "rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms%s"
                 " -> %s\n",
                 options.scene.c_str(), image.width, image.height, scene.objectCount(), stats.triangles,
-                scene.lightCount(), describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,
+                stats.lights, describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,
                 startupText(stats, renderer.backend()).c_str(), options.output.c_str());
     if (!stats.notice.empty()) std::fprintf(stderr, "phongvk: notice: %s\n", stats.notice.c_str());
     return int(EXIT_OK);

@@ -17,6 +17,20 @@ namespace phongvk {
 // offsets and squared distances the renderers take in 32-bit float cannot overflow.
 inline constexpr double MAX_COORDINATE = 1e15;
 
+// A light a mesh file places (glTF KHR_lights_punctual), in the file's coordinates as its positions
+// are, with the file's own units (docs/DESIGN.md "Lights from files" converts them).
+struct MeshLight {
+  enum class Kind { Point, Spot, Directional };
+  Kind kind = Kind::Point;
+  glm::dvec3 position = {0, 0, 0};     // point and spot
+  glm::dvec3 direction = {0, 0, -1};   // spot: the way it points; directional: the way its light travels
+  glm::dvec3 color = {1, 1, 1};
+  double intensity = 1;                // candela (point, spot) or lux (directional)
+  double range = 0;                    // metres; 0: none
+  double innerCone = 0, outerCone = 45;  // spot: half-angles, degrees
+  std::string name;                    // "KHR_lights_punctual.lights[i]", for messages
+};
+
 // Positions are local to the object's origin (so far-away objects keep float precision);
 // triangles wind counter-clockwise seen from outside (outward normal = cross(b - a, c - a)).
 struct Mesh {
@@ -33,6 +47,8 @@ struct Mesh {
   std::vector<std::shared_ptr<const TextureImage>> textures;
   // What the file holds that is not rendered, for the user (RendererStats::notice); empty if nothing.
   std::string notice;
+  // The lights the file places; taken out by whoever builds the object (scene/object_mesh.h).
+  std::vector<MeshLight> lights;
 };
 
 }  // namespace phongvk

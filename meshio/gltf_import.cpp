@@ -6,6 +6,7 @@
 #include "base/number_text.h"
 #include "base/regular_file.h"
 #include "image/texture_decode.h"
+#include "meshio/gltf_lights.h"
 #include "meshio/mesh_import.h"
 #include "phongvk/errors.h"
 
@@ -189,6 +190,7 @@ class Reader {
     visited_[size_t(index)] = true;
     const tinygltf::Node& n = model_.nodes[size_t(index)];
     const glm::dmat4 transform = parent * nodeMatrix(n, name, path_, where_);
+    if (std::optional<MeshLight> light = gltfNodeLight(model_, n, name, transform, path_, where_)) lights_.push_back(*light);
     if (n.mesh >= 0) {
       if (size_t(n.mesh) >= model_.meshes.size()) fail(where_, path_, "node " + std::to_string(index) + " names a mesh that does not exist");
       for (const tinygltf::Primitive& p : model_.meshes[size_t(n.mesh)].primitives) primitive(p, transform);
@@ -197,6 +199,7 @@ class Reader {
   }
 
   std::vector<MeshPart>& parts() { return parts_; }
+  std::vector<MeshLight>& lights() { return lights_; }
 
  private:
   std::vector<uint32_t> indices(const tinygltf::Primitive& p, size_t vertices) const {
@@ -377,6 +380,7 @@ class Reader {
   const std::string& path_;
   const std::string& where_;
   std::vector<MeshPart> parts_;
+  std::vector<MeshLight> lights_;  // in the order the node tree reaches them
   std::vector<bool> visited_;  // nodes reached so far
   std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by texture index, once decoded
   std::map<int, std::shared_ptr<const TextureImage>> images_;    // by image index, once decoded
@@ -450,6 +454,7 @@ Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std
   for (int n : model.scenes[size_t(sceneIndex)].nodes) reader.node(n, glm::dmat4(1.0), 0);
   Mesh mesh = joinParts(reader.parts(), true, where + ": " + path);
   mesh.notice = reader.notice();
+  mesh.lights = std::move(reader.lights());
   return mesh;
 }
 

@@ -15,7 +15,8 @@ namespace phongvk {
 // place (the first scene where none is the default), with their node transforms (matrix or
 // translation, rotation, scale). Normals where every primitive has them; otherwise flat, as the
 // specification asks. COLOR_0 as 8 bits a channel; with `baseColors`, each primitive's base
-// colour factor multiplies it (or is its colour). Throws SceneError "<where>: <path>: <why>".
+// colour factor multiplies it (or is its colour). The lights its nodes place (KHR_lights_punctual,
+// gltf_lights.h) in Mesh::lights. Throws SceneError "<where>: <path>: <why>".
 Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std::string& where);
 
 // The triangles importGltf will build from `path`, counted from the JSON alone (gltf_estimate.cpp):

@@ -120,6 +120,7 @@ void appendObject(SceneData& data, const ObjectMesh& built, uint32_t objectIndex
   }
   data.objectOrigins.push_back(built.origin);
   data.objectBoxes.push_back(box);
+  for (const MeshLight& light : built.lights) data.fileLights.push_back({objectIndex, light});
   gpu::ObjectData o{};
   o.flags = built.closed ? gpu::OBJECT_CULL_BACK : 0u;  // the material: refreshShading
   data.objects.push_back(o);
@@ -146,6 +147,16 @@ glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
   glm::dvec3 sum(0.0);
   for (const glm::dvec3& o : origins) sum += o;
   return origins.empty() ? sum : sum / double(origins.size());
+}
+
+// The scene's lights and those its model files place: at most MAX_LIGHTS.
+void checkFileLightCount(const SceneData& data, const SceneSpec& scene) {
+  if (data.fileLights.empty() || scene.lights.size() + data.fileLights.size() <= MAX_LIGHTS) return;
+  const Object& first = scene.objects[data.fileLights.front().object];
+  throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + first.jsonPath + ".file: " + first.file + ": the scene's " +
+                   std::to_string(scene.lights.size()) + " lights and the " + std::to_string(data.fileLights.size()) +
+                   " its model files place are more than the " + std::to_string(MAX_LIGHTS) +
+                   " a scene may have (\"file_lights\": false leaves a file's out)");
 }
 
 // A share of the scene (SceneSpec::sharePart): the triangles of the part-th of shareParts near-equal
@@ -188,6 +199,7 @@ SceneData buildSceneData(const SceneSpec& scene) {
   for (const Object& object : scene.objects) {
     if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, texture);
   }
+  checkFileLightCount(data, scene);
   keepShare(data, scene);
   placeObjects(data, scene);
   refreshShading(data, scene);
@@ -276,6 +288,20 @@ void setSpotCone(gpu::LightData& g, const LightSpec& l) {
   g.spotOffset = float(-cosOuter * scale);
 }
 
+// The light as the renderers read it. A directional light's l, the unit vector toward it,
+// normalised in double: the same floats for both renderers.
+gpu::LightData gpuLight(const LightSpec& l, const glm::dvec3& lightingOrigin) {
+  gpu::LightData g{};
+  g.position = l.directional ? glm::vec3(-glm::normalize(l.direction)) : glm::vec3(l.position - lightingOrigin);
+  g.directional = l.directional ? 1.0f : 0.0f;
+  if (l.spot) setSpotCone(g, l);
+  g.falloff = l.inverseSquare ? 1.0f : 0.0f;
+  g.range = float(l.range);
+  g.intensity = l.intensity;
+  g.color = l.color;
+  return g;
+}
+
 }  // namespace
 
 void refreshShading(SceneData& data, const SceneSpec& scene) {
@@ -283,16 +309,14 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
   for (const MaterialSpec& m : scene.materials) data.materials.push_back(toGpu(m, data.textureIndex));
   if (data.materials.empty()) data.materials.push_back(toGpu(MaterialSpec{}, data.textureIndex));
   data.lights.clear();
-  for (const LightSpec& l : scene.lights) {
-    gpu::LightData g{};
-    // A directional light's l, the unit vector toward it, normalised in double: the same floats
-    // for both renderers.
-    g.position = l.directional ? glm::vec3(-glm::normalize(l.direction)) : glm::vec3(l.position - data.lightingOrigin);
-    g.directional = l.directional ? 1.0f : 0.0f;
-    if (l.spot) setSpotCone(g, l);
-    g.intensity = l.intensity;
-    g.color = l.color;
-    data.lights.push_back(g);
+  // A model alone is lit from the camera unless its file places lights of its own.
+  if (!(scene.modelAlone && !data.fileLights.empty())) {
+    for (const LightSpec& l : scene.lights) data.lights.push_back(gpuLight(l, data.lightingOrigin));
+  }
+  for (const ObjectLight& f : data.fileLights) {
+    const Object& object = scene.objects[f.object];
+    const std::optional<glm::dmat3> pose = object.poseLinear;
+    data.lights.push_back(gpuLight(fileLightSpec(f.light, data.objectOrigins[f.object], pose), data.lightingOrigin));
   }
   for (size_t i = 0; i < data.objects.size() && i < scene.objects.size(); ++i) {
     data.objects[i].material = static_cast<uint32_t>(scene.objects[i].material);
@@ -312,7 +336,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
 namespace {
 
 bool sameObjectGeometry(const Object& a, const Object& b) {
-  return a.shape == b.shape && a.center == b.center && a.radius == b.radius && a.size == b.size &&
+  return a.shape == b.shape && a.fileLights == b.fileLights && a.center == b.center && a.radius == b.radius && a.size == b.size &&
          a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
          a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
          a.scale == b.scale && a.rotation == b.rotation && a.up == b.up && a.baseColors == b.baseColors &&

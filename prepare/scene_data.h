@@ -2,6 +2,7 @@
 // layouts), and the per-frame data derived from a camera view.
 #pragma once
 
+#include "prepare/file_lights.h"
 #include "scene/camera.h"
 #include "scene/object_mesh.h"
 #include "scene/scene.h"
@@ -31,6 +32,9 @@ struct SceneData {
   std::vector<gpu::ObjectData> objects;     // material, flags, lightOffset; viewOffset per frame
   std::vector<gpu::MaterialData> materials;
   std::vector<gpu::LightData> lights;       // positions relative to lightingOrigin
+  // The lights the objects' model files place (after the scene's own in `lights`): in their
+  // object's frame, placed where it stands by refreshShading.
+  std::vector<ObjectLight> fileLights;
   // Textures (docs/DESIGN.md "Textures"): for a scene with any, each vertex's texture coordinate and
   // texture, and every texture once: its texels (RGBA8) held where they were decoded, not copied,
   // TextureData::offset counting the texels of the textures before it; empty otherwise.

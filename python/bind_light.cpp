@@ -3,15 +3,28 @@
 
 namespace phongvk::python {
 
+namespace {
+
+bool falloffIsInverseSquare(const std::string& falloff) {
+  if (falloff != "material" && falloff != "inverse_square")
+    throw ArgumentError("falloff: expected 'material' or 'inverse_square', got '" + falloff + "'");
+  return falloff == "inverse_square";
+}
+
+}  // namespace
+
 void bindLight(py::module_& m) {
   py::class_<Light>(m, "Light", R"(A light: a point light at position (or at_camera=True: at the eye,
 wherever the camera is), or a directional light (direction=(x, y, z): its light travels that way
 and reaches every point alike, without fall-off, as the sun's), or a spot light at position
 (spot=(x, y, z): the way it points; full within inner_cone degrees of that axis, dark beyond
-outer_cone, glTF's smooth fall-off between); intensity, color. Assigned to Scene.lights, checked
+outer_cone, glTF's smooth fall-off between); intensity, color; falloff="inverse_square" (with an
+optional range) for a point or spot light that falls off as 1/d^2 rather than as each material's
+attenuation says. Assigned to Scene.lights, checked
 like a scene file's "lights".)")
       .def(py::init([](Vec3 position, std::optional<Vec3> direction, std::optional<Vec3> spot, double innerCone,
-                       double outerCone, double intensity, Vec3 color, bool atCamera) {
+                       double outerCone, const std::string& falloff, double range, double intensity, Vec3 color,
+                       bool atCamera) {
              if (direction && spot) throw ArgumentError("Light: direction= (a directional light) or spot= (a spot light), not both");
              Light light{position, intensity, color, atCamera};
              light.directional = direction.has_value();
@@ -19,10 +32,13 @@ like a scene file's "lights".)")
              if (direction || spot) light.direction = direction ? *direction : *spot;
              light.innerCone = innerCone;
              light.outerCone = outerCone;
+             light.inverseSquare = falloffIsInverseSquare(falloff);
+             light.range = range;
              return light;
            }),
            py::kw_only(), py::arg("position") = Vec3{0, 0, 0}, py::arg("direction") = py::none(),
            py::arg("spot") = py::none(), py::arg("inner_cone") = 0.0, py::arg("outer_cone") = 45.0,
+           py::arg("falloff") = "material", py::arg("range") = 0.0,
            py::arg("intensity") = 1.0, py::arg("color") = Vec3{1, 1, 1}, py::arg("at_camera") = false)
       .def_readwrite("position", &Light::position)
       .def_property(
@@ -44,6 +60,11 @@ like a scene file's "lights".)")
           "The direction a spot light points, or None for another light.")
       .def_readwrite("inner_cone", &Light::innerCone, "A spot light's full-intensity half-angle, degrees.")
       .def_readwrite("outer_cone", &Light::outerCone, "A spot light's half-angle beyond which it is dark, degrees.")
+      .def_property(
+          "falloff", [](const Light& l) { return l.inverseSquare ? "inverse_square" : "material"; },
+          [](Light& l, const std::string& falloff) { l.inverseSquare = falloffIsInverseSquare(falloff); },
+          "\"material\" (each material's attenuation) or \"inverse_square\" (1/d^2, glTF's).")
+      .def_readwrite("range", &Light::range, "With the inverse square: where it is windowed to 0, metres (0: none).")
       .def_readwrite("intensity", &Light::intensity)
       .def_readwrite("color", &Light::color)
       .def_readwrite("at_camera", &Light::atCamera)

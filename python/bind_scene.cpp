@@ -160,11 +160,12 @@ phongvk.scene_from_dict(scene.to_dict()) renders the same bytes.)")
 
   m.def(
       "load_scene",
-      [](const FsPath& path, std::optional<std::string> up, std::optional<std::string> projection) {
+      [](const FsPath& path, std::optional<std::string> up, std::optional<std::string> projection, bool fileLights) {
         return loadScene(path.text, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual,
-                                           projection ? std::optional<bool>(parseOrthographic(*projection)) : std::nullopt});
+                                                projection ? std::optional<bool>(parseOrthographic(*projection)) : std::nullopt,
+                                                fileLights});
       },
-      py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = py::none(),
+      py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = py::none(), py::arg("file_lights") = true,
       R"(Reads and validates a scene file (the CLI's schema), or a model file (.obj .ply .stl .gltf
 .glb) as a scene of its own: the model in full view, lit from the camera. Raises SceneError naming
 the file and the JSON path.
@@ -173,7 +174,9 @@ up: None, "y" or "z": the up axis of a model file loaded alone, for one whose ex
     other convention (None: its format's usual one, y for glTF and OBJ, z for PLY and STL).
 projection: None, "perspective" or "orthographic": the fitted camera of a model file loaded alone
     (None: perspective); a scene file's camera says its own, and either given with one is an
-    error.)");
+    error.
+file_lights: False lights a glTF model file loaded alone from the camera, leaving out the lights it
+    places (KHR_lights_punctual); a scene file says it per object ("file_lights").)");
   m.def("scene_from_dict", &sceneFromDict, py::arg("d"), py::arg("base_dir") = py::none(),
         R"(A scene from a dict with the scene file's schema, validated the same way.
 

@@ -70,6 +70,7 @@ py::dict statsDict(const RendererStats& s) {
   d["frames_shaded"] = s.framesShaded;
   d["frames_repeated"] = s.framesRepeated;
   d["triangles"] = s.triangles;
+  d["lights"] = s.lights;
   d["build_ms"] = s.buildMs;
   d["texture_bytes"] = s.textureBytes;
   d["device_bytes"] = s.deviceBytes;

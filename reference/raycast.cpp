@@ -75,6 +75,10 @@ glm::dvec3 phong(const glm::dvec3& P, const glm::dvec3& N, const glm::dvec3& V, 
     const double NdotL = glm::dot(N, l);
     if (NdotL <= 0) continue;
     double S = light.directional ? 1 : 1 / (m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d);
+    if (light.inverseSquare) {
+      const double window = light.range > 0 ? std::clamp(1 - std::pow(d / light.range, 4), 0.0, 1.0) : 1.0;
+      S = window * window / (d * d);
+    }
     if (light.spot) S *= spotCone(light, l);
     const glm::dvec3 r = 2 * NdotL * N - l;
     const double rV = std::max(glm::dot(r, V), 0.0);

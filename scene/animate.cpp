@@ -181,6 +181,10 @@ SceneSequence SceneSequence::load(const std::string& path, const ModelView& mode
     throw ArgumentError(path + ": an up axis applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "
                         "in a scene file each mesh object has its own \"up\"");
   }
+  if (!modelView.fileLights) {
+    throw ArgumentError(path + ": leaving out a file's lights applies to a model file rendered alone (.gltf .glb); "
+                        "in a scene file each mesh object says \"file_lights\"");
+  }
   if (modelView.orthographic.has_value()) {
     throw ArgumentError(path + ": a projection applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "
                         "a scene file's camera has its own \"projection\"");

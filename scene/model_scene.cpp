@@ -25,16 +25,18 @@ scenejson::Json modelScene(const std::string& path, const ModelView& view) {
   } else {
     camera["fov"] = 40;
   }
+  scenejson::Json object = {
+      {"shape", "mesh"},
+      {"file", file},
+      {"up", view.up ? (*view.up == UpAxis::Y ? "y" : "z") : usuallyYUp(format) ? "y" : "z"},
+      {"material", {{"attenuation", {noFallOff.x, noFallOff.y, noFallOff.z}}}}};
+  if (!view.fileLights) object["file_lights"] = false;
   return scenejson::Json{
       {"camera", camera},
       {"background", {0.12, 0.12, 0.14}},
       {"ambient", {1, 1, 1}},
       {"lights", {{{"position", "camera"}}}},
-      {"objects",
-       {{{"shape", "mesh"},
-         {"file", file},
-         {"up", view.up ? (*view.up == UpAxis::Y ? "y" : "z") : usuallyYUp(format) ? "y" : "z"},
-         {"material", {{"attenuation", {noFallOff.x, noFallOff.y, noFallOff.z}}}}}}},
+      {"objects", {object}},
   };
 }
 

@@ -18,11 +18,13 @@ bool isModelFile(const std::string& path);
 struct ModelView {
   std::optional<UpAxis> up;
   std::optional<bool> orthographic;  // given: whether the fitted camera is orthographic (else perspective)
+  bool fileLights = true;            // false: a glTF file's own lights left out
 };
 
 // The scene for a model alone: the mesh (standing up along view.up; back faces drawn), a camera
 // fitted from the front, left and above (960x720, 40° field of view, or orthographic), one white
-// light at the camera without fall-off, a dark grey background. A glTF model keeps its base
+// light at the camera without fall-off (in place of which a glTF file's own lights light it, where
+// it places some: prepare/scene_data.h), a dark grey background. A glTF model keeps its base
 // colours. Throws SceneError for a file that is not a mesh.
 scenejson::Json modelScene(const std::string& path, const ModelView& view = {});
 

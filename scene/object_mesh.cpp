@@ -3,6 +3,7 @@
 // compute theirs.
 #include "scene/object_mesh.h"
 
+#include "base/number_text.h"
 #include "geometry/hull.h"
 #include "geometry/primitives.h"
 #include "geometry/subdivide.h"
@@ -120,16 +121,35 @@ glm::dvec3 centroid(const std::vector<glm::dvec3>& points) {
   return points.empty() ? sum : sum / double(points.size());
 }
 
-// A mesh file, with the object's transform (before subdivision: computed normals follow the
-// transformed surface).
-Mesh importFile(const Object& object) {
-  const std::string where = object.jsonPath + ".file";
-  const MeshFormat format = meshFormat(object.file, where);
-  return finishLoadedMesh(importMeshFile(object.file, format, object.baseColors, where), objectTransform(object),
-                          where + ": " + object.file);
+// The file's lights turned by the object's transform as its vertices are: positions and directions
+// by its matrix (a direction made unit again); range and intensity as the file says (glTF: node
+// transforms do not change them).
+std::vector<MeshLight> turnedLights(std::vector<MeshLight> lights, const LinearTransform& t, const std::string& where) {
+  for (MeshLight& light : lights) {
+    light.position = t.matrix * light.position;
+    light.direction = glm::normalize(t.matrix * light.direction);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(std::abs(light.position[axis]) <= MAX_COORDINATE))
+        throw SceneError(where + ": " + light.name + " after the object's scale and rotation is at " +
+                         formatNumber(light.position[axis]) + ", beyond the " + formatNumber(MAX_COORDINATE) +
+                         " m a scene may use");
+    }
+  }
+  return lights;
 }
 
-SurfaceMesh makeShape(const Object& object, glm::dvec3& origin) {
+// A mesh file, with the object's transform (before subdivision: computed normals follow the
+// transformed surface), and the lights it places unless the object leaves them out.
+Mesh importFile(const Object& object, std::vector<MeshLight>& lights) {
+  const std::string where = object.jsonPath + ".file";
+  const MeshFormat format = meshFormat(object.file, where);
+  Mesh loaded = importMeshFile(object.file, format, object.baseColors, where);
+  if (object.fileLights) lights = turnedLights(std::move(loaded.lights), objectTransform(object), where + ": " + object.file);
+  loaded.lights.clear();
+  return finishLoadedMesh(std::move(loaded), objectTransform(object), where + ": " + object.file);
+}
+
+SurfaceMesh makeShape(const Object& object, glm::dvec3& origin, std::vector<MeshLight>& lights) {
   origin = object.center;
   switch (object.shape) {
     case Shape::Cube: return makeCube(object.size);
@@ -146,7 +166,7 @@ SurfaceMesh makeShape(const Object& object, glm::dvec3& origin) {
       if (object.arrays) {
         m.mesh = *object.arrays;
       } else {
-        m.mesh = importFile(object);
+        m.mesh = importFile(object, lights);
       }
       m.surfaces.assign(m.mesh.positions.size(), 0);
       return m;
@@ -161,7 +181,7 @@ ObjectMesh buildObjectMesh(const Object& object) {
   checkParameters(object);
   checkSize(object, baseTriangles(object));
   ObjectMesh result;
-  SurfaceMesh shape = makeShape(object, result.origin);
+  SurfaceMesh shape = makeShape(object, result.origin, result.lights);
   checkSize(object, shape.mesh.triangles.size());
   subdivide(shape, object.subdivide);
   result.mesh = std::move(shape.mesh);

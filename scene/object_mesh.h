@@ -16,6 +16,9 @@ struct ObjectMesh {
   Mesh mesh;
   glm::dvec3 origin = {0, 0, 0};     // world position of the local frame's origin
   bool closed = true;                // back faces may be culled
+  // The lights its mesh file places (glTF KHR_lights_punctual) unless the object says
+  // "file_lights": false: turned by the object's transform, about its origin as the mesh is.
+  std::vector<MeshLight> lights;
 };
 
 // R·S·U: U turns a Y-up file upright (y -> z, z -> -y), S scales per axis (a negative factor

@@ -57,6 +57,10 @@ struct LightSpec {
   bool spot = false;
   double innerCone = 0;
   double outerCone = 45;
+  // "falloff": "inverse_square": a point or spot light falls off as 1/d^2 (windowed to 0 at
+  // `range` metres when range > 0, glTF's window) instead of as the material's attenuation says.
+  bool inverseSquare = false;
+  double range = 0;
 };
 
 struct CameraSpec {
@@ -131,6 +135,7 @@ struct Object {
   uint64_t fileTriangles = 0;        // mesh: what the file will build, estimated then (memory_estimate.h)
   std::shared_ptr<const Mesh> arrays;  // mesh: given as arrays (mesh_arrays.h) instead of a file
   bool baseColors = false;           // mesh: a glTF file's base colours apply (it names no material)
+  bool fileLights = true;            // mesh: a glTF file's own lights (KHR_lights_punctual) light the scene
   glm::dvec3 translate = {0, 0, 0};  // mesh: the origin of its local frame
   // The local frame's linear map (object_mesh.h objectTransform): `up` first (meshes), then `scale` per axis
   // (non-zero; negative mirrors), then `rotation`.

@@ -7,7 +7,7 @@
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kLightKeys = {"position", "direction", "intensity", "color", "inner_cone", "outer_cone"};
+const Keys kLightKeys = {"position", "direction", "intensity", "color", "inner_cone", "outer_cone", "falloff", "range"};
 const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color", "texture"};
 
 // The file's light as a value, its keys and types checked (the values are lightSpec's).
@@ -34,6 +34,13 @@ Light lightValues(const Node& node) {
   }
   if (auto intensity = node.find("intensity")) light.intensity = number(*intensity);
   if (auto lightColor = node.find("color")) light.color = array(*lightColor);
+  if (auto falloff = node.find("falloff")) {
+    const std::string name = string(*falloff);
+    if (name != "material" && name != "inverse_square")
+      falloff->fail("expected \"material\" or \"inverse_square\", got '" + name + "'");
+    light.inverseSquare = name == "inverse_square";
+  }
+  if (auto range = node.find("range")) light.range = number(*range);
   if (light.directional) return light;
   if (!position) node.require("position");  // fails: a light needs one
   if (position->json().is_string()) {
@@ -60,6 +67,16 @@ void checkCones(const Light& light, const Where& at) {
                              " degrees), got " + formatNumber(light.innerCone));
 }
 
+// The inverse square is a point or spot light's; a range needs it: more than 0, at most 1e15 m.
+void checkFalloff(const Light& light, const Where& at) {
+  if (light.inverseSquare && light.directional)
+    at.at("falloff").fail("a directional light reaches every point alike: it has no fall-off");
+  if (light.range == 0) return;
+  if (!light.inverseSquare) at.at("range").fail("needs \"falloff\": \"inverse_square\" (the range windows that fall-off)");
+  if (!(light.range >= 1e-6 && light.range <= MAX_COORDINATE))
+    at.at("range").fail("must be 1e-06 to 1e+15 metres, or 0 for none, got " + formatNumber(light.range));
+}
+
 }  // namespace
 
 LightSpec lightSpec(const Light& light, const Where& at) {
@@ -76,6 +93,9 @@ LightSpec lightSpec(const Light& light, const Where& at) {
     spec.innerCone = light.innerCone;
     spec.outerCone = light.outerCone;
   }
+  checkFalloff(light, at);
+  spec.inverseSquare = light.inverseSquare;
+  spec.range = light.range;
   spec.intensity = nonNegativeFloat(light.intensity, at.at("intensity"));
   spec.color = color(toVec(light.color), at.at("color"));
   if (light.directional) return spec;

@@ -28,7 +28,7 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
-    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "textures", "texture_ids", "translate", "up", "pose"}},
+    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "textures", "texture_ids", "translate", "up", "pose", "file_lights"}},
 };
 
 
@@ -88,9 +88,11 @@ void readMeshSource(const Node& node, const std::string& baseDir, Object& object
       if (node.find(key)) node.failAt(key, "needs 'vertices' (a mesh given inline)");
     }
     resolveMeshFile(node.require("file"), baseDir, object);
+    if (auto lights = node.find("file_lights")) object.fileLights = boolean(*lights);
     return;
   }
   if (file) file->fail("cannot be given with 'vertices': a mesh is a file or arrays");
+  if (node.find("file_lights")) node.failAt("file_lights", "needs 'file' (the lights of a mesh file)");
   object.arrays = readMeshArrays(node, baseDir);
 }
 

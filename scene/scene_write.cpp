@@ -61,6 +61,8 @@ Json lightJson(const LightSpec& light) {
     json["inner_cone"] = light.innerCone;
     json["outer_cone"] = light.outerCone;
   }
+  if (light.inverseSquare) json["falloff"] = "inverse_square";
+  if (light.range != 0) json["range"] = light.range;
   json["intensity"] = double(light.intensity);
   json["color"] = vec3Json(light.color);
   return json;
@@ -155,6 +157,7 @@ void writeGeometry(const Object& object, Json& json) {
     writeArrays(*object.arrays, json);
   } else {
     json["file"] = std::filesystem::absolute(object.file).lexically_normal().string();
+    if (!object.fileLights) json["file_lights"] = false;
   }
   json["translate"] = vec3Json(object.translate);
   json["up"] = object.up == UpAxis::Y ? "y" : "z";

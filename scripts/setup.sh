@@ -50,6 +50,7 @@ test_packages=(
   libopenmpi-dev openmpi-bin  # phongvk render --mpi (built where found) and CTest's mpi_render
   slurm-wlm munge  # scripts/slurm/ and CTest's slurm_array (tests/slurm_test.sh starts a one-node cluster)
   clang libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's sanitizer runtimes
+  gltfpack  # meshoptimizer's glTF packer: real GLB files with KHR_lights_punctual lights (python/tests/test_file_lights.py)
   chromium-common  # SwiftShader (/usr/lib/chromium/libvk_swiftshader.so): a second Vulkan, without 64-bit integers (CTest's swiftshader label)
 )
 if [ "$with_tests" -eq 1 ]; then

@@ -107,11 +107,27 @@ FN float spotCone(LightData light, vec3 l) {
   return cone;
 }
 
+// The inverse-square fall-off of a light at distance d > 0 (glTF KHR_lights_punctual's): 1 / d^2,
+// with a range r > 0 times the window clamp(1 - (d/r)^4, 0, 1)^2. d^2 is held at least 1e-30, a
+// normal float, so that a device that flushes subnormals computes the same.
+FN float inverseSquare(LightData light, float d) {
+  PRECISE float S = divide(1.0f, max(d * d, 1e-30f));
+  if (light.range > 0.0f) {
+    PRECISE float q = divide(d, light.range);
+    PRECISE float q2 = q * q;
+    PRECISE float w = min(max(1.0f - q2 * q2, 0.0f), 1.0f);
+    PRECISE float windowed = S * (w * w);
+    S = windowed;
+  }
+  return S;
+}
+
 // One light's diffuse + specular contribution at P (all positions relative to the lighting origin):
 // S * I * (C o L) * (kd * max(N.l, 0) + ks * max(r.V, 0)^n), specular only where N.l > 0; with
 // `blinn`, max(N.h, 0)^n instead of max(r.V, 0)^n (specularBase). A directional light has the
 // same l at every P (its unit direction) and no fall-off: S = 1. A spot light's S is a point light's
-// times its cone (spotCone); outside the outer cone it adds nothing.
+// times its cone (spotCone); outside the outer cone it adds nothing. A light with `falloff` falls
+// off with the inverse square of d (inverseSquare) instead of the material's attenuation.
 // `specular` and `constantAttenuation` let a shader specialized to the scene skip work whose
 // result is known: with ks = 0 the specular term adds exactly +0, and with b = c = 0 the
 // attenuation 1 / (a + b d + c d^2) is exactly 1 / a. Either way the result is bit-identical to
@@ -128,6 +144,7 @@ FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, 
   PRECISE float cone = light.spot != 0.0f ? spotCone(light, l) : 1.0f;
   if (cone == 0.0f) return vec3(0.0f);
   PRECISE float S = held(directional ? 1.0f
+                         : light.falloff != 0.0f ? inverseSquare(light, d)
                          : constantAttenuation
                              ? divide(1.0f, m.attenuation.x)
                              : divide(1.0f, m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));

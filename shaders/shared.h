@@ -212,8 +212,8 @@ struct LightData {
   float spotScale;    // a spot light: 1 / max(cos inner - cos outer, 0.001), else 0 (phong.h spotCone)
   float spotOffset;   // a spot light: -cos outer * spotScale
   float spot;         // 1: a spot light, 0: another
-  float reserved0;
-  float reserved1;
+  float falloff;      // a point or spot light: 0, the material's attenuation; 1, the inverse square (phong.h)
+  float range;        // with the inverse square: where glTF's window reaches 0, metres; 0: none
 };
 
 // One frame as the scene and its camera define it: built once per frame by makeFrame

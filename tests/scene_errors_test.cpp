@@ -123,6 +123,23 @@ TEST(SceneErrors, SpotLightCones) {
             "a.json: lights[0].direction: must have a non-zero finite length, got length 0");
 }
 
+TEST(SceneErrors, LightFalloff) {
+  const auto light = [](ordered_json l) {
+    return errorFor([&](ordered_json& s) { s["lights"] = ordered_json::array({l}); });
+  };
+  EXPECT_EQ(light({{"position", {0, 0, 3}}, {"falloff", "linear"}}),
+            "a.json: lights[0].falloff: expected \"material\" or \"inverse_square\", got 'linear'");
+  EXPECT_EQ(light({{"direction", {0, 0, -1}}, {"falloff", "inverse_square"}}),
+            "a.json: lights[0].falloff: a directional light reaches every point alike: it has no fall-off");
+  EXPECT_EQ(light({{"position", {0, 0, 3}}, {"range", 5}}),
+            "a.json: lights[0].range: needs \"falloff\": \"inverse_square\" (the range windows that fall-off)");
+  EXPECT_EQ(light({{"position", {0, 0, 3}}, {"falloff", "inverse_square"}, {"range", -1}}),
+            "a.json: lights[0].range: must be 1e-06 to 1e+15 metres, or 0 for none, got -1");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "faces": [[0, 1, 2]],
+                           "file_lights": false})"),
+            "a.json: objects[0].file_lights: needs 'file' (the lights of a mesh file)");
+}
+
 TEST(SceneErrors, UnknownKeyNested) {
   EXPECT_EQ(errorFor([](ordered_json& s) { s["camera"]["zoom"] = 2; }),
             "a.json: camera.zoom: unknown key (allowed: position, direction, look_at, up, fov, "
@@ -134,7 +151,7 @@ TEST(SceneErrors, UnknownKeyNested) {
               s["lights"] = {{{"position", {0, 0, 0}}, {"power", 1}}};
             }),
             "a.json: lights[0].power: unknown key (allowed: position, direction, intensity, color, inner_cone, "
-            "outer_cone)");
+            "outer_cone, falloff, range)");
   EXPECT_EQ(objectError(R"({"shape": "sphere", "radiu": 1})"),
             "a.json: objects[0].radiu: unknown key (allowed: shape, material, subdivide, closed, "
             "scale, rotate, object_id, center, radius, segments)");

@@ -187,10 +187,15 @@ struct LoadOptions {
   // with a margin); false, the perspective one (as when not given). A scene file's camera says its
   // own "projection", and either given with one is an error.
   std::optional<bool> orthographic;
+  // Only for a model file alone: false leaves out the lights a glTF file places
+  // (KHR_lights_punctual), lighting it from the camera as other files are. A scene file says it
+  // per object ("file_lights"), and false given with one is an error.
+  bool fileLights = true;
 };
 
 // Reads and validates a scene file, or a model file (.obj .ply .stl .gltf .glb) as a scene of its
-// own: the model in full view, lit from the camera. Throws SceneError naming the file and the JSON
+// own: the model in full view, lit from the camera (or by its own lights, a glTF file that places
+// some). Throws SceneError naming the file and the JSON
 // path (and for a mesh the inner file and line), ArgumentError for an up axis or a projection
 // given with a scene file. A file with an "animate" block gives its frame 0.
 PHONGVK_API Scene loadScene(const std::string& path, const LoadOptions& options = {});
@@ -237,6 +242,7 @@ struct RendererStats {
   uint64_t framesShaded = 0;     // frames whose per-vertex lighting was computed (gpu; others reuse it)
   uint64_t framesRepeated = 0;   // frames rendered again with larger lists or more workgroups (gpu)
   size_t triangles = 0;          // of the last scene rendered
+  size_t lights = 0;             // that lit it: its own and those its model files place
   double buildMs = 0;            // time spent building meshes, in all (uploads not included)
   uint64_t textureBytes = 0;     // the last scene's textures: texels, coordinates, table (docs/DESIGN.md "Textures")
   uint64_t deviceBytes = 0;      // device memory the renderer's buffers hold now (Vulkan backends; 0 for the reference)

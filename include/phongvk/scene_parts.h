@@ -92,6 +92,10 @@ struct Light {
   bool spot = false;
   double innerCone = 0;   // degrees from the axis, 0 <= innerCone < outerCone
   double outerCone = 45;  // degrees from the axis, at most 90
+  // A point or spot light that falls off as 1/d^2 (glTF's, windowed to 0 at `range` metres when
+  // range > 0) instead of as each material's attenuation says.
+  bool inverseSquare = false;
+  double range = 0;
   bool operator==(const Light&) const = default;
 };
 
