@@ -146,7 +146,7 @@ std::vector<Light> lightsOf(const SceneSpec& scene) {
   for (const LightSpec& l : scene.lights) {
     lights.push_back({{l.position.x, l.position.y, l.position.z}, l.intensity, {l.color.x, l.color.y, l.color.z},
                       l.atCamera, l.directional, {l.direction.x, l.direction.y, l.direction.z}, l.spot, l.innerCone,
-                      l.outerCone, l.inverseSquare, l.range});
+                      l.outerCone, l.inverseSquare, l.range, l.shadows});
   }
   return lights;
 }

@@ -51,6 +51,7 @@ void FrameChanges::restart(const SceneData& data) {
   objects_ = data.objects;
   materials_ = data.materials;
   lights_ = data.lights;
+  shadowVersion_ = data.shadowVersion;
   sent_ = false;
 }
 
@@ -59,6 +60,13 @@ ShadeWork FrameChanges::send(const VulkanContext& context, const FrameArrays& ar
   const bool lightsChanged = uploadIfChanged(context, arrays.lights, in.lights, lights_, "lights");
   const bool objectsMoved = lightingPlacesChanged(in.objects, objects_);
   const bool objectsChanged = uploadIfChanged(context, arrays.objects, in.objects, objects_, "objects");
+  const bool shadowsMoved = in.shadows && in.shadowVersion != shadowVersion_;
+  if (shadowsMoved) {
+    uploadToBuffer(context, arrays.bvhNodes, in.shadows->nodes.data(), in.shadows->nodes.size() * sizeof(BvhNode));
+    uploadToBuffer(context, arrays.shadowTriangles, in.shadows->triangles.data(),
+                   in.shadows->triangles.size() * sizeof(ShadowTriangle));
+    shadowVersion_ = in.shadowVersion;
+  }
   const FrameData& f = in.frame;
   const bool first = !sent_;
   // Positions follow the camera basis, the focal length and the objects' offsets (toHomogeneous).
@@ -68,7 +76,7 @@ ShadeWork FrameChanges::send(const VulkanContext& context, const FrameArrays& ar
   const bool ambientChanged = first || f.ambient != frame_.ambient;
   // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.
   const bool modelChanged = first || f.shading != frame_.shading || f.specular != frame_.specular;
-  const bool colorsStale = first || materialsChanged || lightsChanged || ambientChanged || modelChanged || objectsMoved ||
+  const bool colorsStale = first || materialsChanged || lightsChanged || ambientChanged || modelChanged || objectsMoved || shadowsMoved ||
                            (eyeMoved && !lightingIsViewIndependent(in));
   frame_ = f;
   sent_ = true;

@@ -16,6 +16,8 @@ struct FrameArrays {
   Buffer& objects;
   Buffer& materials;
   Buffer& lights;
+  Buffer& bvhNodes;         // the shadow rays' tree, built again where an object moved
+  Buffer& shadowTriangles;
 };
 
 // What the shade pass recomputes this frame (PassControl shadeColors, shadePositions).
@@ -32,7 +34,8 @@ class FrameChanges {
   // Uploads the frame's objects, materials and lights where they differ from the last frame's
   // and says what the shade pass must redo. Vertex colours are recomputed only when their inputs
   // changed: materials, lights, ambient, the shading mode or specular model, a posed object's
-  // place, or the eye when some material is specular; positions when the camera's basis, focal
+  // place, or the eye when some material is specular, or the shadow rays' tree (sent again when
+  // it was built again: FrameInputs::shadowVersion); positions when the camera's basis, focal
   // length or an object's offsets changed. Throws ArgumentError when a count changes.
   ShadeWork send(const VulkanContext& context, const FrameArrays& arrays, const FrameInputs& in);
 
@@ -45,6 +48,7 @@ class FrameChanges {
   std::vector<gpu::MaterialData> materials_;
   std::vector<gpu::LightData> lights_;
   gpu::FrameData frame_{};
+  uint64_t shadowVersion_ = 0;
   bool sent_ = false;  // frame_ holds a frame sent since the scene's upload
   uint64_t framesShaded_ = 0;
   uint64_t framesTransformed_ = 0;

@@ -51,6 +51,10 @@ void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");
   checkFits(context, sizeof(IdList) + data.triangles.size() * sizeof(uint32_t), "the clip list");
   texels(data.uvs.size() * sizeof(VertexUv), "the texture coordinates");
+  if (data.shadows) {
+    texels(data.shadows->nodes.size() * sizeof(BvhNode), "the shadow rays' tree");
+    texels(data.shadows->triangles.size() * sizeof(ShadowTriangle), "the shadow rays' triangles");
+  }
   texels(data.texelCount * sizeof(uint32_t) + TEXEL_BYTES - 1, "the textures' texels");
 }
 
@@ -96,6 +100,10 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   createTexelBuffer(scene_.shadedPositions, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.shadedColors, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.uvs, context_, data.uvs, MemoryKind::DeviceLocal, texelViews(context_));
+  const ShadowGeometry none;
+  const ShadowGeometry& shadows = data.shadows ? *data.shadows : none;
+  createTexelBuffer(scene_.bvhNodes, context_, shadows.nodes, MemoryKind::DeviceLocal, texelViews(context_));
+  createTexelBuffer(scene_.shadowTriangles, context_, shadows.triangles, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelPool(scene_.texelPool, context_, data);
   const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
@@ -194,6 +202,8 @@ void GpuRenderer::updateDescriptors() {
       texelDescriptor(bindings_[BINDING_UVS], scene_.uvs),
       texelDescriptor(bindings_[BINDING_TEXTURES], scene_.textures),
       texelDescriptor(bindings_[BINDING_TEXEL_POOL], scene_.texelPool),
+      texelDescriptor(bindings_[BINDING_BVH_NODES], scene_.bvhNodes),
+      texelDescriptor(bindings_[BINDING_SHADOW_TRIANGLES], scene_.shadowTriangles),
   };
   static_assert(std::size(descriptors) == std::size(SHARED_BINDINGS), "every binding of the table is written");
   set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
@@ -202,7 +212,10 @@ void GpuRenderer::updateDescriptors() {
 // Sends the frame, and the objects, materials and lights where they changed (FrameChanges), with
 // the pass control saying what the shade pass redoes (writeControl).
 void GpuRenderer::uploadFrame(const FrameInputs& in) {
-  const ShadeWork work = changes_.send(context_, {scene_.objects.buffer, scene_.materials.buffer, scene_.lights.buffer}, in);
+  const ShadeWork work = changes_.send(context_,
+                                      {scene_.objects.buffer, scene_.materials.buffer, scene_.lights.buffer,
+                                       scene_.bvhNodes.buffer, scene_.shadowTriangles.buffer},
+                                      in);
   frame_ = in.frame;
   uploadToBuffer(context_, perFrame_.frame, &frame_, sizeof(FrameData));
   frameColorsInKeys_ = choices_.colorsInKeys && !withKeys_;

@@ -69,6 +69,7 @@ void GpuRenderer::compileSceneModes(const SceneData& data) {
   modes.specular = data.specular;
   modes.projection = data.projection;
   choices_.textured = !data.uvs.empty();
+  choices_.shadows = data.shadowed;
   const std::vector<PipelineRequest> requests = passRequests(choices_, data.materials, data.lights.size(), modes, false);
   compilePipelines(requests);
   current_[RASTER] = pipeline(requests[RASTER]);
@@ -154,7 +155,7 @@ void GpuRenderer::submitResolveRound(void (GpuRenderer::*record)(VkCommandBuffer
 // keys and colours are thrown away, and the next one transforms and relights the vertices (a
 // cut-short shade pass may have left some out).
 void GpuRenderer::prepareRetry(uint32_t statusFlags) {
-  if (retry_.next(statusFlags, context_.info.name) == RetryPolicy::Step::GrowLists) {
+  if (retry_.next(statusFlags, context_.info.name, choices_.shadows) == RetryPolicy::Step::GrowLists) {
     createLargeBuffers(uint32_t(std::min<uint64_t>(2ull * largeCapacity_, UINT32_MAX - 1)),
                        uint32_t(std::min<uint64_t>(2ull * largeSetupCapacity_, UINT32_MAX)));
     updateDescriptors();

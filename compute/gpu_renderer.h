@@ -196,6 +196,7 @@ class GpuRenderer {
     TexelBuffer shadedPositions, shadedColors;  // written by the shade pass, read as texels
     Buffer clipList;
     TexelBuffer uvs, textures, texelPool;  // the textures' (a texel each where the scene has none)
+    TexelBuffer bvhNodes, shadowTriangles;  // the shadow rays' tree (a texel each where no light casts shadows)
   };
   // The image's: sized to the image (ensureImageBuffers) and, for the large-triangle lists, to
   // the scene's triangles as well (createLargeBuffersFor).

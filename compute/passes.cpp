@@ -46,6 +46,10 @@ std::vector<PipelineRequest> passRequests(const PassChoices& choices, const std:
     for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_SHADING, frame.shading});
   }
   if (choices.textured) requests[RESOLVE_SMALL].specs.push_back({SPEC_TEXTURED, 1u});
+  if (choices.shadows) {  // only where a light casts them: every other scene keeps its pipelines
+    requests[SHADE].specs.push_back({SPEC_SHADOWS, 1u});
+    if (perPixel) requests[RESOLVE_SMALL].specs.push_back({SPEC_SHADOWS, 1u});
+  }
   if (frame.specular == SPECULAR_BLINN) {
     for (Pass pass : {SHADE, RESOLVE_SMALL}) requests[pass].specs.push_back({SPEC_BLINN, 1u});
   }

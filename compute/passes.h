@@ -38,6 +38,7 @@ struct PassChoices {
   bool keys32 = false;               // the 32-bit key path: the triangle and clip passes twice
   bool colorsInKeys = false;         // the host reads the colours from the key slots (no pack pass)
   bool textured = false;             // the scene samples textures: resolve_lit colours every pixel
+  bool shadows = false;              // SPEC_SHADOWS: some light casts shadows (shade and resolve_lit trace rays)
   uint32_t clip = gpu::CLIP_NONE;    // SPEC_CLIP_POLYGONS
   uint32_t listChunk = 0;            // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many a round
 };

@@ -24,7 +24,7 @@ void RetryPolicy::restart() {
 // The clipper first (a triangle to clip met unforeseen), then room for the large triangles, then
 // workgroups up to the most a pass launches, then the lists in ever smaller chunks: each is kept
 // for the renderer's later frames.
-RetryPolicy::Step RetryPolicy::next(uint32_t statusFlags, const std::string& device) {
+RetryPolicy::Step RetryPolicy::next(uint32_t statusFlags, const std::string& device, bool shadows) {
   Step step;
   if (statusFlags & STATUS_NEEDS_CLIPPING) {
     clipFloor_ = CLIP_ALL;
@@ -41,7 +41,8 @@ RetryPolicy::Step RetryPolicy::next(uint32_t statusFlags, const std::string& dev
     throw DeviceError("scene too large for " + device +
                       ": a pass needs more loop iterations per invocation than the device allows, even with " +
                       std::to_string(groupCap_) + " workgroups and the large triangles' lists taken " +
-                      std::to_string(listChunk_) + " entries at a time");
+                      std::to_string(listChunk_) + " entries at a time" +
+                      (shadows ? "; the shadowed lights' rays are part of that work (fewer shadowed lights fit)" : ""));
   }
   ++framesRepeated_;
   return step;

@@ -24,8 +24,9 @@ class RetryPolicy {
     MoreGroups,  // 16 times the workgroups per pass (groupCap)
     ChunkLists,  // the bins' lists taken LIST_CHUNK_FIRST entries a round, then a quarter as many each time
   };
-  // Counts the repeated frame. Throws DeviceError naming `device` when nothing can grow further.
-  Step next(uint32_t statusFlags, const std::string& device);
+  // Counts the repeated frame. Throws DeviceError naming `device` when nothing can grow further,
+  // and with `shadows` (a light casts shadows) that their rays are part of the work.
+  Step next(uint32_t statusFlags, const std::string& device, bool shadows = false);
 
   uint32_t groupCap() const { return groupCap_; }
   uint32_t listChunk() const { return listChunk_; }

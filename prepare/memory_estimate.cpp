@@ -2,6 +2,7 @@
 #include "prepare/memory_estimate.h"
 
 #include "base/memory_text.h"
+#include "prepare/scene_data.h"
 #include "scene/object_mesh.h"
 
 #include <algorithm>
@@ -17,6 +18,14 @@ uint64_t estimatedTriangles(const Object& object) {
   return base;
 }
 
+namespace {
+
+uint64_t bytesPerTriangle(const SceneSpec& scene) {
+  return BYTES_PER_TRIANGLE + (hasShadowedLights(scene) ? SHADOW_BYTES_PER_TRIANGLE : 0);
+}
+
+}  // namespace
+
 void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
   std::vector<std::pair<uint64_t, size_t>> objects;  // (triangles, index)
   uint64_t triangles = 0;
@@ -24,7 +33,7 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
     objects.push_back({estimatedTriangles(scene.objects[i]), i});
     triangles += objects.back().first;
   }
-  const uint64_t bytes = triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL;
+  const uint64_t bytes = triangles * bytesPerTriangle(scene) + pixels * BYTES_PER_PIXEL;
   if (bytes <= sceneMemoryLimit()) return;
   std::sort(objects.begin(), objects.end(), [](const auto& a, const auto& b) {
     return a.first != b.first ? a.first > b.first : a.second < b.second;  // the largest, in file order
@@ -39,7 +48,7 @@ void checkSceneMemory(const SceneSpec& scene, uint64_t pixels) {
 
 void checkBuiltSceneMemory(const SceneSpec& scene, uint64_t triangles, uint64_t pixels, uint64_t textureBytes) {
   const std::string textures = textureBytes == 0 ? "" : ", " + std::to_string(textureBytes) + " bytes of textures";
-  checkMemory(scene.path, "the scene", triangles * BYTES_PER_TRIANGLE + pixels * BYTES_PER_PIXEL + 2 * textureBytes,
+  checkMemory(scene.path, "the scene", triangles * bytesPerTriangle(scene) + pixels * BYTES_PER_PIXEL + 2 * textureBytes,
               std::to_string(triangles) + " triangles as built, " + std::to_string(pixels) + " pixels" + textures,
               "a smaller image, fewer samples or simpler meshes fit");
 }

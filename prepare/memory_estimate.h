@@ -15,6 +15,10 @@ namespace phongvk {
 // lavapipe, where the device's buffers are host memory too (an icosphere at subdivide 9, 5.2M
 // triangles: 555 MB; with the reference, 63 B); rounded up.
 inline constexpr uint64_t BYTES_PER_TRIANGLE = 112;
+// Per triangle more with a light that casts shadows, counted from the arrays: the caster list (20 B),
+// the tree's triangles on the host and the device (64 B each), its nodes (about 2 x 32 B per 4
+// triangles, twice) and the build's sort items (16 B).
+inline constexpr uint64_t SHADOW_BYTES_PER_TRIANGLE = 196;
 // Per pixel: the image, the visibility keys and the GPU's colour and key buffers.
 inline constexpr uint64_t BYTES_PER_PIXEL = 32;
 

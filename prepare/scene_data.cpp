@@ -2,9 +2,13 @@
 
 #include "base/huge_pages.h"
 #include "base/number_text.h"
+#include "prepare/shadow_bvh.h"
+#include "shaders/phong.h"
 #include "scene/object_mesh.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -149,6 +153,47 @@ glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
   return origins.empty() ? sum : sum / double(origins.size());
 }
 
+// The triangles that cast shadows (SceneData::shadowCasters), before a share keeps its own.
+void keepShadowCasters(SceneData& data, const SceneSpec& scene) {
+  data.shadowed = true;
+  for (size_t i = 0; i < data.triangles.size(); ++i) {
+    if (!scene.objects[data.triangles[i].w].castShadows) continue;
+    data.shadowCasters.push_back(data.triangles[i]);
+    data.shadowCasterIds.push_back(uint32_t(i));
+  }
+}
+
+// Whether an object's place for lighting differs between `a` and `b`: what ObjectData holds from
+// lightOffset on (offset, flags, pose).
+bool samePlaces(const std::vector<gpu::ObjectData>& a, const std::vector<gpu::ObjectData>& b) {
+  if (a.size() != b.size()) return false;
+  constexpr size_t FROM = offsetof(gpu::ObjectData, lightOffset);
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (std::memcmp(reinterpret_cast<const char*>(&a[i]) + FROM, reinterpret_cast<const char*>(&b[i]) + FROM,
+                    sizeof(gpu::ObjectData) - FROM) != 0)
+      return false;
+  }
+  return true;
+}
+
+// The shadow rays' tree for the objects where they now stand, unless it was built for these places.
+// Each caster's vertices as the shade pass lights them: posed, in the lighting frame.
+void placeShadowCasters(SceneData& data) {
+  if (!data.shadowed || (data.shadows && samePlaces(data.shadowPlacement, data.objects))) return;
+  std::vector<gpu::ShadowTriangle> triangles(data.shadowCasters.size());
+  const auto lit = [&](uint32_t index) {
+    const gpu::ObjectData& object = data.objects[data.vertices[index].object];
+    return gpu::lightingPosition(gpu::posedVertex(data.vertices[index], object).position, object.lightOffset);
+  };
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const glm::uvec4& t = data.shadowCasters[i];
+    triangles[i] = {lit(t.x), data.shadowCasterIds[i], lit(t.y), t.x, lit(t.z), t.y, t.z, 0, 0, 0};
+  }
+  data.shadows = std::make_shared<const gpu::ShadowGeometry>(buildShadowBvh(std::move(triangles)));
+  data.shadowPlacement = data.objects;
+  ++data.shadowVersion;
+}
+
 // The scene's lights and those its model files place: at most MAX_LIGHTS.
 void checkFileLightCount(const SceneData& data, const SceneSpec& scene) {
   if (data.fileLights.empty() || scene.lights.size() + data.fileLights.size() <= MAX_LIGHTS) return;
@@ -200,6 +245,7 @@ SceneData buildSceneData(const SceneSpec& scene) {
     if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, texture);
   }
   checkFileLightCount(data, scene);
+  if (hasShadowedLights(scene)) keepShadowCasters(data, scene);
   keepShare(data, scene);
   placeObjects(data, scene);
   refreshShading(data, scene);
@@ -267,6 +313,11 @@ void placeObjects(SceneData& data, const SceneSpec& scene) {
   for (size_t i = 0; i < data.objects.size(); ++i) {
     data.objects[i].lightOffset = glm::vec3(data.objectOrigins[i] - data.lightingOrigin);
   }
+  placeShadowCasters(data);
+}
+
+bool hasShadowedLights(const SceneSpec& scene) {
+  return std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightSpec& l) { return l.shadows; });
 }
 
 uint64_t textureBytes(const SceneData& data) {
@@ -282,7 +333,7 @@ void setSpotCone(gpu::LightData& g, const LightSpec& l) {
   const double cosInner = std::cos(glm::radians(l.innerCone));
   const double cosOuter = std::cos(glm::radians(l.outerCone));
   const double scale = 1.0 / std::max(cosInner - cosOuter, 0.001);
-  g.spot = 1.0f;
+  g.flags |= gpu::LIGHT_SPOT;
   g.spotAxis = glm::vec3(glm::normalize(l.direction));
   g.spotScale = float(scale);
   g.spotOffset = float(-cosOuter * scale);
@@ -296,6 +347,7 @@ gpu::LightData gpuLight(const LightSpec& l, const glm::dvec3& lightingOrigin) {
   g.directional = l.directional ? 1.0f : 0.0f;
   if (l.spot) setSpotCone(g, l);
   g.falloff = l.inverseSquare ? 1.0f : 0.0f;
+  if (l.shadows) g.flags |= gpu::LIGHT_SHADOWS;
   g.range = float(l.range);
   g.intensity = l.intensity;
   g.color = l.color;
@@ -336,7 +388,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
 namespace {
 
 bool sameObjectGeometry(const Object& a, const Object& b) {
-  return a.shape == b.shape && a.fileLights == b.fileLights && a.center == b.center && a.radius == b.radius && a.size == b.size &&
+  return a.shape == b.shape && a.fileLights == b.fileLights && a.castShadows == b.castShadows && a.center == b.center && a.radius == b.radius && a.size == b.size &&
          a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
          a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
          a.scale == b.scale && a.rotation == b.rotation && a.up == b.up && a.baseColors == b.baseColors &&
@@ -353,7 +405,7 @@ bool sameTextures(const SceneSpec& a, const SceneSpec& b) {
 }  // namespace
 
 bool sameGeometry(const SceneSpec& a, const SceneSpec& b) {
-  return sameTextures(a, b) && a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
+  return sameTextures(a, b) && hasShadowedLights(a) == hasShadowedLights(b) && a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
 }
 
 bool lightingIsViewIndependent(const FrameInputs& in) {
@@ -400,6 +452,8 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   in.lights = data.lights;
   in.materials = data.materials;
   in.clip = boxClip(data, view);
+  in.shadows = data.shadows;
+  in.shadowVersion = data.shadowVersion;
   return in;
 }
 

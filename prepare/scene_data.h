@@ -7,6 +7,7 @@
 #include "scene/object_mesh.h"
 #include "scene/scene.h"
 #include "shaders/gpu_layout.h"
+#include "shaders/shadow_rays.h"
 #include "shaders/shared.h"
 
 #include <glm/glm.hpp>
@@ -35,6 +36,16 @@ struct SceneData {
   // The lights the objects' model files place (after the scene's own in `lights`): in their
   // object's frame, placed where it stands by refreshShading.
   std::vector<ObjectLight> fileLights;
+  // With a light that casts shadows (docs/DESIGN.md "Shadows"): the triangles of the objects that
+  // cast them (w: the object, as in `triangles`; all of the scene's, with a share of it), and the
+  // tree the shadow rays walk, built for the objects' places as they were (shadowPlacement) and
+  // built again when they move (placeObjects), each build a new shadowVersion.
+  bool shadowed = false;  // some light casts shadows: the tree is built
+  std::vector<glm::uvec4> shadowCasters;
+  std::vector<uint32_t> shadowCasterIds;  // each caster's index in the whole scene's triangles
+  std::shared_ptr<const gpu::ShadowGeometry> shadows;
+  std::vector<gpu::ObjectData> shadowPlacement;
+  uint64_t shadowVersion = 0;
   // Textures (docs/DESIGN.md "Textures"): for a scene with any, each vertex's texture coordinate and
   // texture, and every texture once: its texels (RGBA8) held where they were decoded, not copied,
   // TextureData::offset counting the texels of the textures before it; empty otherwise.
@@ -71,6 +82,9 @@ struct FrameInputs {
   // no triangle can cross the near plane or the guard band (the box holds every vertex, the clip
   // volume is convex).
   uint32_t clip = gpu::CLIP_ALL;
+  // The shadow rays' tree (SceneData::shadows) and its build; none without shadowed lights.
+  std::shared_ptr<const gpu::ShadowGeometry> shadows;
+  uint64_t shadowVersion = 0;
 };
 
 // One object's mesh (object_mesh.h buildObjectMesh), its SceneError led by the scene's file; a
@@ -101,7 +115,12 @@ bool sameGeometry(const SceneSpec& a, const SceneSpec& b);
 // lighting origin with each object's offset from it. buildSceneData calls it, and a renderer again
 // for a frame of the same geometry (sameGeometry), so a moved object renders the bytes of one
 // built where it now stands. Call refreshShading after it (the lights follow the lighting origin).
+// With shadowed lights it builds the shadow rays' tree again where an object's place for lighting
+// changed (SceneData::shadows).
 void placeObjects(SceneData& data, const SceneSpec& scene);
+
+// Whether some light of the scene casts shadows (LightSpec::shadows).
+bool hasShadowedLights(const SceneSpec& scene);
 
 // Replaces what a frame of a sequence may change without touching geometry: materials, lights,
 // ambient, background and the render options. The scene must have the same objects as `data`'s.

@@ -20,11 +20,12 @@ and reaches every point alike, without fall-off, as the sun's), or a spot light 
 (spot=(x, y, z): the way it points; full within inner_cone degrees of that axis, dark beyond
 outer_cone, glTF's smooth fall-off between); intensity, color; falloff="inverse_square" (with an
 optional range) for a point or spot light that falls off as 1/d^2 rather than as each material's
-attenuation says. Assigned to Scene.lights, checked
+attenuation says; shadows=True for a light that objects shadow (exact rays, the same on every
+device). Assigned to Scene.lights, checked
 like a scene file's "lights".)")
       .def(py::init([](Vec3 position, std::optional<Vec3> direction, std::optional<Vec3> spot, double innerCone,
                        double outerCone, const std::string& falloff, double range, double intensity, Vec3 color,
-                       bool atCamera) {
+                       bool atCamera, bool shadows) {
              if (direction && spot) throw ArgumentError("Light: direction= (a directional light) or spot= (a spot light), not both");
              Light light{position, intensity, color, atCamera};
              light.directional = direction.has_value();
@@ -34,12 +35,14 @@ like a scene file's "lights".)")
              light.outerCone = outerCone;
              light.inverseSquare = falloffIsInverseSquare(falloff);
              light.range = range;
+             light.shadows = shadows;
              return light;
            }),
            py::kw_only(), py::arg("position") = Vec3{0, 0, 0}, py::arg("direction") = py::none(),
            py::arg("spot") = py::none(), py::arg("inner_cone") = 0.0, py::arg("outer_cone") = 45.0,
            py::arg("falloff") = "material", py::arg("range") = 0.0,
-           py::arg("intensity") = 1.0, py::arg("color") = Vec3{1, 1, 1}, py::arg("at_camera") = false)
+           py::arg("intensity") = 1.0, py::arg("color") = Vec3{1, 1, 1}, py::arg("at_camera") = false,
+           py::arg("shadows") = false)
       .def_readwrite("position", &Light::position)
       .def_property(
           "direction",
@@ -65,6 +68,8 @@ like a scene file's "lights".)")
           [](Light& l, const std::string& falloff) { l.inverseSquare = falloffIsInverseSquare(falloff); },
           "\"material\" (each material's attenuation) or \"inverse_square\" (1/d^2, glTF's).")
       .def_readwrite("range", &Light::range, "With the inverse square: where it is windowed to 0, metres (0: none).")
+      .def_readwrite("shadows", &Light::shadows,
+                     "Whether it lights only what its shadow rays reach (objects with cast_shadows false never block them).")
       .def_readwrite("intensity", &Light::intensity)
       .def_readwrite("color", &Light::color)
       .def_readwrite("at_camera", &Light::atCamera)

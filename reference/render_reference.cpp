@@ -2,6 +2,7 @@
 
 #include "image/packed_pixels.h"
 #include "shaders/gouraud.h"
+#include "shaders/shadow_rays.h"
 #include "shaders/phong.h"
 #include "shaders/pixel_shading.h"
 #include "shaders/texture.h"
@@ -23,7 +24,11 @@ std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs
     const vec3 V = viewVector(P, in.frame);
     const bool blinn = in.frame.specular == SPECULAR_BLINN;
     vec3 color = phongAmbient(m, in.frame.ambient);
-    for (const LightData& light : in.lights) color += phongLightModel(P, v.normal, V, m, light, blinn);
+    for (const LightData& light : in.lights) {
+      vec3 lit = phongLightModel(P, v.normal, V, m, light, blinn);
+      if (in.shadows && lit != vec3(0.0f) && !lightReaches(*in.shadows, light, P, glm::uvec3(uint32_t(i), SHADOW_NO_OWNER, SHADOW_NO_OWNER))) lit = vec3(0.0f);
+      color += lit;
+    }
     shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, in.frame), 1.0f);
     shaded[i].color = vec4(color, 1.0f);
   }
@@ -89,7 +94,8 @@ uint32_t pixelTexel(const SceneData& data, const FrameInputs& in, glm::uvec4 tri
 // Flat or Phong shading, or any shading in a scene with textures: triangle `tri`'s colour at pixel
 // (x, y), Gouraud's interpolated or its surface lit with the frame's lights, times its texel.
 uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
-                  glm::uvec4 tri, int x, int y) {
+                  uint32_t id, int x, int y) {
+  const glm::uvec4 tri = data.triangles[id];
   const FrameData& frame = in.frame;
   const bool textured = !data.uvs.empty();
   const vec2 bary = textured || frame.shading != SHADING_FLAT
@@ -104,7 +110,12 @@ uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vecto
   if (textured) s.m.color = texturedColor(s.m.color, texel);
   const vec3 V = viewVector(s.P, frame);
   vec3 color = phongAmbient(s.m, frame.ambient);
-  for (const LightData& light : in.lights) color += phongLightModel(s.P, s.N, V, s.m, light, frame.specular == SPECULAR_BLINN);
+  for (const LightData& light : in.lights) {
+    vec3 lit = phongLightModel(s.P, s.N, V, s.m, light, frame.specular == SPECULAR_BLINN);
+    if (in.shadows && lit != vec3(0.0f) && !lightReaches(*in.shadows, light, s.P, glm::uvec3(tri)))
+      lit = vec3(0.0f);
+    color += lit;
+  }
   return packColor(color);
 }
 
@@ -128,10 +139,11 @@ Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<Sh
         packed[i] = background;
         continue;
       }
-      const glm::uvec4 tri = data.triangles[static_cast<uint32_t>(keys[i])];
+      const uint32_t id = static_cast<uint32_t>(keys[i]);
+      const glm::uvec4 tri = data.triangles[id];
       packed[i] = frame.shading == SHADING_GOURAUD && data.uvs.empty()
                       ? resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame, frame.interpolation)
-                      : litPixel(data, in, shaded, tri, int(x), int(y));
+                      : litPixel(data, in, shaded, id, int(x), int(y));
     }
   }
   return imageFromPacked(packed, int(frame.width), int(frame.height));

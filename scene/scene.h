@@ -61,6 +61,8 @@ struct LightSpec {
   // `range` metres when range > 0, glTF's window) instead of as the material's attenuation says.
   bool inverseSquare = false;
   double range = 0;
+  // "shadows": true: lights only the points its shadow ray reaches (docs/DESIGN.md "Shadows").
+  bool shadows = false;
 };
 
 struct CameraSpec {
@@ -136,6 +138,7 @@ struct Object {
   std::shared_ptr<const Mesh> arrays;  // mesh: given as arrays (mesh_arrays.h) instead of a file
   bool baseColors = false;           // mesh: a glTF file's base colours apply (it names no material)
   bool fileLights = true;            // mesh: a glTF file's own lights (KHR_lights_punctual) light the scene
+  bool castShadows = true;           // "cast_shadows": its triangles block shadow rays
   glm::dvec3 translate = {0, 0, 0};  // mesh: the origin of its local frame
   // The local frame's linear map (object_mesh.h objectTransform): `up` first (meshes), then `scale` per axis
   // (non-zero; negative mirrors), then `rotation`.

@@ -7,7 +7,7 @@
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kLightKeys = {"position", "direction", "intensity", "color", "inner_cone", "outer_cone", "falloff", "range"};
+const Keys kLightKeys = {"position", "direction", "intensity", "color", "inner_cone", "outer_cone", "falloff", "range", "shadows"};
 const Keys kMaterialKeys = {"ka", "kd", "ks", "n", "attenuation", "color", "texture"};
 
 // The file's light as a value, its keys and types checked (the values are lightSpec's).
@@ -41,6 +41,7 @@ Light lightValues(const Node& node) {
     light.inverseSquare = name == "inverse_square";
   }
   if (auto range = node.find("range")) light.range = number(*range);
+  if (auto shadows = node.find("shadows")) light.shadows = boolean(*shadows);
   if (light.directional) return light;
   if (!position) node.require("position");  // fails: a light needs one
   if (position->json().is_string()) {
@@ -96,6 +97,7 @@ LightSpec lightSpec(const Light& light, const Where& at) {
   checkFalloff(light, at);
   spec.inverseSquare = light.inverseSquare;
   spec.range = light.range;
+  spec.shadows = light.shadows;
   spec.intensity = nonNegativeFloat(light.intensity, at.at("intensity"));
   spec.color = color(toVec(light.color), at.at("color"));
   if (light.directional) return spec;

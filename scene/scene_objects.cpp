@@ -13,7 +13,8 @@
 namespace phongvk::scenejson {
 namespace {
 
-const Keys kObjectKeys = {"shape", "material", "subdivide", "closed", "scale", "rotate", "object_id"};  // every shape
+const Keys kObjectKeys = {"shape", "material", "subdivide", "closed", "scale", "rotate", "object_id",
+                           "cast_shadows"};  // every shape
 
 struct ShapeInfo {
   Shape shape;
@@ -218,6 +219,7 @@ Object readObject(const Node& node, const std::string& baseDir, MaterialTable& m
   readTransform(node, object);
   if (auto subdivide = node.find("subdivide")) object.subdivide = integer(*subdivide, 0, 10);
   if (auto closed = node.find("closed")) object.closed = boolean(*closed);
+  if (auto casts = node.find("cast_shadows")) object.castShadows = boolean(*casts);
   if (auto label = node.find("object_id")) object.label = integer(*label, 0, std::numeric_limits<int32_t>::max());
   object.baseColors = takesBaseColors(node, object);
   object.material = objectMaterial(node, object, materials);

@@ -63,6 +63,7 @@ Json lightJson(const LightSpec& light) {
   }
   if (light.inverseSquare) json["falloff"] = "inverse_square";
   if (light.range != 0) json["range"] = light.range;
+  if (light.shadows) json["shadows"] = true;
   json["intensity"] = double(light.intensity);
   json["color"] = vec3Json(light.color);
   return json;
@@ -170,6 +171,7 @@ Json objectJson(const SceneSpec& scene, const Object& object) {
   json["rotate"] = rotationJson(object.rotation);
   json["subdivide"] = object.subdivide;
   json["closed"] = object.closed;
+  if (!object.castShadows) json["cast_shadows"] = false;
   json["material"] = objectMaterialJson(scene, object);
   if (object.label) json["object_id"] = *object.label;
   if (object.poseLinear) {  // placed by a pose: the pose, for the object to read back posed

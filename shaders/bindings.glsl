@@ -75,6 +75,8 @@ TEXELS(BINDING_LARGE_SETUP_TEXELS, largeSetupTexels)    // largeSetups[], likewi
 TEXELS(BINDING_UVS, uvTexels)                           // VertexUv[] (scenes with textures)
 TEXELS(BINDING_TEXTURES, textureTexels)                 // TextureData[]
 TEXELS(BINDING_TEXEL_POOL, texelPool)                   // RGBA8 texels, four a texel
+TEXELS(BINDING_BVH_NODES, bvhTexels)                    // BvhNode[] (scenes with shadowed lights)
+TEXELS(BINDING_SHADOW_TRIANGLES, shadowTriangleTexels)  // ShadowTriangle[], likewise
 layout(std430, binding = BINDING_SHADED) writeonly buffer ShadedPositions { vec4 shadedPositions[]; };
 layout(std430, binding = BINDING_SHADED_COLORS) writeonly buffer ShadedColors { vec4 shadedColors[]; };
 // The key buffer: a 64-bit key per pixel (depth.h), or on the 32-bit key path the same key as its
@@ -162,8 +164,23 @@ LightData lightData(uint i) {
   vec4 a = floats(TEXEL(lightTexels, 4u * i));
   vec4 b = floats(TEXEL(lightTexels, 4u * i + 1u));
   vec4 c = floats(TEXEL(lightTexels, 4u * i + 2u));
-  vec4 d = floats(TEXEL(lightTexels, 4u * i + 3u));
-  return LightData(a.xyz, a.w, b.xyz, b.w, c.xyz, c.w, d.x, d.y, d.z, d.w);
+  uvec4 d = TEXEL(lightTexels, 4u * i + 3u);
+  return LightData(a.xyz, a.w, b.xyz, b.w, c.xyz, c.w, uintBitsToFloat(d.x), d.y, uintBitsToFloat(d.z), uintBitsToFloat(d.w));
+}
+
+// The shadow rays' tree and triangles (shadow_rays.h; `scene` stands for the reference's arrays).
+BvhNode bvhNode(uint scene, uint i) {
+  uvec4 a = TEXEL(bvhTexels, 2u * i);
+  uvec4 b = TEXEL(bvhTexels, 2u * i + 1u);
+  return BvhNode(floats(a).xyz, a.w, floats(b).xyz, b.w);
+}
+
+ShadowTriangle shadowTriangle(uint scene, uint i) {
+  uvec4 a = TEXEL(shadowTriangleTexels, 4u * i);
+  uvec4 b = TEXEL(shadowTriangleTexels, 4u * i + 1u);
+  uvec4 c = TEXEL(shadowTriangleTexels, 4u * i + 2u);
+  uvec4 d = TEXEL(shadowTriangleTexels, 4u * i + 3u);
+  return ShadowTriangle(floats(a).xyz, a.w, floats(b).xyz, b.w, floats(c).xyz, c.w, d.x, d.y, d.z, d.w);
 }
 
 VertexUv vertexUv(uint i) {

@@ -141,14 +141,15 @@ FN vec3 phongLightWith(vec3 P, vec3 N, vec3 V, MaterialData m, LightData light, 
   PRECISE vec3 l = directional ? light.position : divide(toLight, d);
   PRECISE float NdotL = dot3(N, l);
   if (NdotL <= 0.0f) return vec3(0.0f);
-  PRECISE float cone = light.spot != 0.0f ? spotCone(light, l) : 1.0f;
+  bool spot = (light.flags & LIGHT_SPOT) != 0u;
+  PRECISE float cone = spot ? spotCone(light, l) : 1.0f;
   if (cone == 0.0f) return vec3(0.0f);
   PRECISE float S = held(directional ? 1.0f
                          : light.falloff != 0.0f ? inverseSquare(light, d)
                          : constantAttenuation
                              ? divide(1.0f, m.attenuation.x)
                              : divide(1.0f, m.attenuation.x + m.attenuation.y * d + m.attenuation.z * d * d));
-  if (light.spot != 0.0f) S = held(S * cone);
+  if (spot) S = held(S * cone);
   PRECISE float shade = held(m.kd * NdotL);
   if (specular) {
     PRECISE float rV = max(specularBase(N, l, V, NdotL, blinn), 0.0f);

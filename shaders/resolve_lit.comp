@@ -11,6 +11,7 @@
 #include "pixel_shading.h"
 #include "texture.h"
 #include "bindings.glsl"
+#include "shadow_rays.h"
 #include "resolve.glsl"
 
 // The scene's lights, as the shade pass has them.
@@ -18,6 +19,7 @@ layout(constant_id = SPEC_LIGHT_COUNT) const uint LIGHT_COUNT = 0u;
 layout(constant_id = SPEC_SPECULAR) const bool SPECULAR = true;
 layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION = false;
 layout(constant_id = SPEC_BLINN) const bool BLINN = false;
+layout(constant_id = SPEC_SHADOWS) const bool SHADOWS = false;  // as the shade pass has it
 
 // The texel triangle `tri` (material m) shows where its barycentrics are `bary`: white where
 // neither the material nor the mesh has a texture.
@@ -55,7 +57,12 @@ uint pixelColor(uint id, int x, int y) {
   vec3 V = viewVector(s.P, frame);
   vec3 color = phongAmbient(s.m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
-    color += phongLightWith(s.P, s.N, V, s.m, lightData(l), SPECULAR, CONSTANT_ATTENUATION, BLINN);
+    LightData light = lightData(l);
+    vec3 lit = phongLightWith(s.P, s.N, V, s.m, light, SPECULAR, CONSTANT_ATTENUATION, BLINN);
+    if (SHADOWS && lit != vec3(0.0f) && !lightReaches(0u, light, s.P, tri.xyz)) {
+      lit = vec3(0.0f);
+    }
+    color += lit;
   }
   return packColor(color);
 }

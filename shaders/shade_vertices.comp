@@ -4,6 +4,7 @@
 #include "extensions.glsl"
 #include "phong.h"
 #include "bindings.glsl"
+#include "shadow_rays.h"
 
 layout(local_size_x = SHADE_GROUP_SIZE) in;
 
@@ -14,6 +15,9 @@ layout(constant_id = SPEC_CONSTANT_ATTENUATION) const bool CONSTANT_ATTENUATION 
 layout(constant_id = SPEC_BLINN) const bool BLINN = false;  // Blinn's half vector (render.specular)
 // Flat and Phong shading light pixels, not vertices (resolve_small.comp): only the positions here.
 layout(constant_id = SPEC_SHADING) const uint SHADING = SHADING_GOURAUD;
+// Some light casts shadows (docs/DESIGN.md "Shadows"): those lights reach a vertex only along an
+// unblocked ray; without any, no ray code at all.
+layout(constant_id = SPEC_SHADOWS) const bool SHADOWS = false;
 
 void shadeVertex(uint i) {
   VertexIn stored = vertexIn(i);
@@ -30,7 +34,10 @@ void shadeVertex(uint i) {
   vec3 V = viewVector(P, frame);
   vec3 color = phongAmbient(m, frame.ambient);
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
-    color += phongLightWith(P, v.normal, V, m, lightData(l), SPECULAR, CONSTANT_ATTENUATION, BLINN);
+    LightData light = lightData(l);
+    vec3 lit = phongLightWith(P, v.normal, V, m, light, SPECULAR, CONSTANT_ATTENUATION, BLINN);
+    if (SHADOWS && lit != vec3(0.0f) && !lightReaches(0u, light, P, uvec3(i, SHADOW_NO_OWNER, SHADOW_NO_OWNER))) lit = vec3(0.0f);
+    color += lit;
   }
   shadedColors[i] = vec4(color, 1.0f);
 }

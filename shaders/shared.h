@@ -90,7 +90,9 @@ PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices t
   X(BINDING_CONTROL, 19, UNIFORM_BUFFER)           /* PassControl (gpu_layout.h) */              \
   X(BINDING_UVS, 20, UNIFORM_TEXEL_BUFFER)         /* VertexUv per vertex (scenes with textures) */  \
   X(BINDING_TEXTURES, 21, UNIFORM_TEXEL_BUFFER)    /* TextureData per texture */                     \
-  X(BINDING_TEXEL_POOL, 22, UNIFORM_TEXEL_BUFFER)  /* every texture's RGBA8 texels, 4 a texel */
+  X(BINDING_TEXEL_POOL, 22, UNIFORM_TEXEL_BUFFER)  /* every texture's RGBA8 texels, 4 a texel */      \
+  X(BINDING_BVH_NODES, 23, UNIFORM_TEXEL_BUFFER)   /* BvhNode[]: the shadow rays' tree */            \
+  X(BINDING_SHADOW_TRIANGLES, 24, UNIFORM_TEXEL_BUFFER) /* ShadowTriangle[], in the tree's leaf order */
 // Arrays the passes only read are uniform texel buffers: texelFetch is gathered in SIMD by CPU
 // devices (lavapipe), where a storage-buffer load is a loop over the lanes. The shaded positions
 // and colours are arrays of their own: the triangle pass reads only positions (16 bytes a vertex
@@ -114,7 +116,8 @@ PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices t
   X(SPEC_CLIP_POLYGONS, 11)             \
   X(SPEC_PROJECTION, 12)                \
   X(SPEC_TEXTURED, 13)                  \
-  X(SPEC_KEY_PASS, 14)
+  X(SPEC_KEY_PASS, 14)                  \
+  X(SPEC_SHADOWS, 15)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;
@@ -202,6 +205,10 @@ PHONGVK_CONST uint TEXTURE_FILTER_BILINEAR = 1;
 // give 16384, and bilinear weights in 8 bits of a texel need side * 256 below 2^24 (texture.h).
 PHONGVK_CONST uint TEXTURE_MAX_SIDE = 16384;
 
+// LightData::flags.
+PHONGVK_CONST uint LIGHT_SPOT = 1;     // a spot light: its cone (phong.h spotCone)
+PHONGVK_CONST uint LIGHT_SHADOWS = 2;  // lights only what its shadow ray reaches (shadow_rays.h)
+
 struct LightData {
   vec3 position;     // a point or spot light: world coordinates relative to the lighting origin;
                      // a directional light: the unit direction toward it
@@ -211,9 +218,34 @@ struct LightData {
   vec3 spotAxis;      // a spot light: the unit direction it points (from the light), else 0
   float spotScale;    // a spot light: 1 / max(cos inner - cos outer, 0.001), else 0 (phong.h spotCone)
   float spotOffset;   // a spot light: -cos outer * spotScale
-  float spot;         // 1: a spot light, 0: another
+  uint flags;         // LIGHT_*
   float falloff;      // a point or spot light: 0, the material's attenuation; 1, the inverse square (phong.h)
   float range;        // with the inverse square: where glTF's window reaches 0, metres; 0: none
+};
+
+// A node of the shadow rays' bounding volume hierarchy (prepare/shadow_bvh.h), in depth-first
+// order: an inner node's first child is the next node. Its box holds its triangles' vertices in
+// the lighting frame (the positions the shade pass lights).
+struct BvhNode {
+  vec3 low;
+  uint count;   // 0: an inner node; else a leaf of this many triangles
+  vec3 high;
+  uint index;   // an inner node: its second child; a leaf: its first triangle in ShadowTriangle order
+};
+
+// A triangle as shadow rays test it: its vertices in the lighting frame, its id (the index of the
+// scene's triangle) and its three vertex indices (a vertex's own triangles never shadow it).
+struct ShadowTriangle {
+  vec3 a;
+  uint id;
+  vec3 b;
+  uint v0;
+  vec3 c;
+  uint v1;
+  uint v2;
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // One frame as the scene and its camera define it: built once per frame by makeFrame
@@ -250,7 +282,10 @@ static_assert(sizeof(MaterialData) == 48 && offsetof(MaterialData, kd) == 28 && 
 static_assert(offsetof(MaterialData, texture) == 40);
 static_assert(sizeof(VertexUv) == 16 && sizeof(TextureData) == 16);
 static_assert(sizeof(LightData) == 64 && offsetof(LightData, color) == 16 && offsetof(LightData, spotAxis) == 32 &&
-              offsetof(LightData, spotOffset) == 48);
+              offsetof(LightData, spotOffset) == 48 && offsetof(LightData, flags) == 52);
+static_assert(sizeof(BvhNode) == 32 && offsetof(BvhNode, high) == 16);
+static_assert(sizeof(ShadowTriangle) == 64 && offsetof(ShadowTriangle, b) == 16 && offsetof(ShadowTriangle, c) == 32 &&
+              offsetof(ShadowTriangle, v2) == 48);
 static_assert(offsetof(FrameData, ambient) == 48 && offsetof(FrameData, focalX) == 60);
 static_assert(offsetof(FrameData, background) == 64 && offsetof(FrameData, nearPlane) == 76);
 static_assert(offsetof(FrameData, principal) == 80 && offsetof(FrameData, farPlane) == 88);

@@ -78,7 +78,7 @@ LightData spotDown() {
   LightData l = light(vec3(0, 0, 2), 1.0f, vec3(1.0f));
   const double cosInner = std::cos(20 * M_PI / 180), cosOuter = std::cos(40 * M_PI / 180);
   const double scale = 1 / (cosInner - cosOuter);
-  l.spot = 1.0f;
+  l.flags = LIGHT_SPOT;
   l.spotAxis = vec3(0, 0, -1);
   l.spotScale = float(scale);
   l.spotOffset = float(-cosOuter * scale);

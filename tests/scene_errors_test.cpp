@@ -151,16 +151,16 @@ TEST(SceneErrors, UnknownKeyNested) {
               s["lights"] = {{{"position", {0, 0, 0}}, {"power", 1}}};
             }),
             "a.json: lights[0].power: unknown key (allowed: position, direction, intensity, color, inner_cone, "
-            "outer_cone, falloff, range)");
+            "outer_cone, falloff, range, shadows)");
   EXPECT_EQ(objectError(R"({"shape": "sphere", "radiu": 1})"),
             "a.json: objects[0].radiu: unknown key (allowed: shape, material, subdivide, closed, "
-            "scale, rotate, object_id, center, radius, segments)");
+            "scale, rotate, object_id, cast_shadows, center, radius, segments)");
 }
 
 TEST(SceneErrors, KeyOfAnotherShape) {
   EXPECT_EQ(objectError(R"({"shape": "cube", "radius": 1})"),
             "a.json: objects[0].radius: unknown key, not used by shape 'cube' (allowed: shape, "
-            "material, subdivide, closed, scale, rotate, object_id, center, size)");
+            "material, subdivide, closed, scale, rotate, object_id, cast_shadows, center, size)");
 }
 
 TEST(SceneErrors, MissingRequiredField) {

@@ -96,6 +96,8 @@ struct Light {
   // range > 0) instead of as each material's attenuation says.
   bool inverseSquare = false;
   double range = 0;
+  // Lights only the points from which nothing stands between it and them (docs/DESIGN.md "Shadows").
+  bool shadows = false;
   bool operator==(const Light&) const = default;
 };
 

@@ -240,7 +240,7 @@ def _live_class(base, fields):
 _LiveCamera = _live_class(Camera, ("position", "look_at", "up", "fov", "width", "height", "near", "far", "intrinsics",
                                    "ortho_height"))
 _LiveLight = _live_class(Light, ("position", "direction", "spot", "inner_cone", "outer_cone", "falloff", "range",
-                                 "intensity", "color", "at_camera"))
+                                 "intensity", "color", "at_camera", "shadows"))
 _LiveRenderSettings = _live_class(RenderSettings, ("shading", "specular", "interpolation", "samples", "background",
                                                    "texture_filter"))
 

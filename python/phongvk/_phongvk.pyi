@@ -56,9 +56,11 @@ class Light:
     outer_cone: float
     falloff: str
     range: float
+    shadows: bool
     def __init__(self, *, position: Sequence[float] = ..., direction: Optional[Sequence[float]] = None,
                  spot: Optional[Sequence[float]] = None, inner_cone: float = ..., outer_cone: float = ...,
-                 falloff: str = ..., range: float = ..., intensity: float = ..., color: Sequence[float] = ..., at_camera: bool = ...) -> None: ...
+                 falloff: str = ..., range: float = ..., intensity: float = ..., color: Sequence[float] = ...,
+                 at_camera: bool = ..., shadows: bool = ...) -> None: ...
 
 class Texture:
     width: int

@@ -328,6 +328,23 @@ def test_a_spot_light_renders_as_the_same_light_written_and_lights_only_its_cone
         light.outer_cone = 100
     assert built.lights[0].outer_cone == 40
 
+def test_a_shadowed_light_darkens_what_an_object_hides_from_it_on_both_backends():
+    def scene(shadows, casts=True):
+        return phongvk.scene_from_dict({
+            "camera": {"position": [0, -3, 4], "look_at": [0, 0, 0], "width": 96, "height": 64},
+            "render": {"shading": "phong"}, "lights": [{"position": [0, 0, 3], "shadows": shadows}],
+            "objects": [{"shape": "cube", "center": [0, 0, -0.05], "size": 4, "scale": [1, 1, 0.025]},
+                        {"shape": "sphere", "center": [0, 0, 1], "radius": 0.4, "cast_shadows": casts}]})
+    lit, shadowed, uncast = both(scene(False)), both(scene(True)), both(scene(True, casts=False))
+    assert shadowed.sum() < lit.sum() and np.array_equal(uncast, lit)
+    built = scene(False)
+    built.lights = [phongvk.Light(position=(0, 0, 3), shadows=True)]
+    assert np.array_equal(both(built), shadowed)
+    assert built.to_dict()["lights"][0]["shadows"] is True
+    assert scene(True, casts=False).to_dict()["objects"][1]["cast_shadows"] is False
+    built.lights[0].shadows = False  # a live view: the shadow goes
+    assert np.array_equal(both(built), lit)
+
 # ---- materials and render settings as values ----
 
 def written_scene(tmp_path, material=None, **more):
