@@ -25,11 +25,14 @@ vec3 toCameraAxes(vec3 n, const FrameData& frame) {
 
 }  // namespace
 
-glm::vec3 cameraNormal(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y) {
+SurfacePoint sampleSurface(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y) {
   const glm::uvec4 tri = data.triangles[triangle];
   const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
-  const SurfacePoint s = pixelSurface(data, in, tri, projected(a, in), projected(b, in), projected(c, in), x, y);
-  return toCameraAxes(s.N, in.frame);
+  return pixelSurface(data, in, tri, projected(a, in), projected(b, in), projected(c, in), x, y);
+}
+
+glm::vec3 cameraNormal(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y) {
+  return toCameraAxes(sampleSurface(data, in, triangle, x, y).N, in.frame);
 }
 
 std::vector<float> normalsOfSamples(const SceneData& data, const FrameInputs& in, const std::vector<uint64_t>& sampleKeys,

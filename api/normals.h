@@ -4,6 +4,7 @@
 #pragma once
 
 #include "prepare/scene_data.h"
+#include "shaders/pixel_shading.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -20,6 +21,10 @@ inline constexpr size_t NO_SAMPLE = ~size_t(0);
 // where the surface has no normal (a degenerate face, vertex normals cancelling). The stored
 // normal, not flipped toward the eye on a back face: the shading lights it as stored.
 glm::vec3 cameraNormal(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y);
+
+// The surface point the frame's shading lights at sample (x, y) of triangle `triangle` (its index
+// in data.triangles): render_reference.h pixelSurface, as the renderers shade it.
+gpu::SurfacePoint sampleSurface(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y);
 
 // Per pixel, three floats: cameraNormal of the triangle whose key `sampleKeys[nearest[i]]` names
 // (the whole scene's index: a share's keys are offset by data.triangleBase) at that sample; 0, 0, 0

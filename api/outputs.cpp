@@ -1,6 +1,7 @@
 // outputs.cpp — see outputs.h.
 #include "api/outputs.h"
 
+#include "api/lights_reached.h"
 #include "api/normals.h"
 #include "shaders/depth.h"
 
@@ -11,7 +12,7 @@
 namespace phongvk {
 
 bool needsKeys(const Outputs& outputs) {
-  return outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds || outputs.normals;
+  return outputs.alpha || outputs.depth || outputs.objectIds || outputs.triangleIds || outputs.normals || outputs.lights;
 }
 
 RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& data, const FrameInputs& in,
@@ -21,7 +22,8 @@ RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& dat
   // Per pixel, the nearest of its samples (the smallest key), where it lies, and how many of them a
   // triangle covers.
   std::vector<uint64_t> keys(pixels, gpu::KEY_CLEAR);
-  std::vector<size_t> nearest(outputs.normals ? pixels : 0, NO_SAMPLE);
+  const bool surfaces = outputs.normals || outputs.lights;  // outputs taken at the nearest sample's point
+  std::vector<size_t> nearest(surfaces ? pixels : 0, NO_SAMPLE);
   std::vector<uint8_t> alpha(outputs.alpha ? pixels : 0);
   for (size_t i = 0; i < pixels; ++i) {
     const size_t x = i % size_t(width), y = i / size_t(width);
@@ -33,18 +35,20 @@ RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& dat
         covered += key != gpu::KEY_CLEAR;
         if (key >= keys[i]) continue;  // the first of equal keys: ties go to the earlier sample
         keys[i] = key;
-        if (outputs.normals) nearest[i] = sample;
+        if (surfaces) nearest[i] = sample;
       }
     }
     if (outputs.alpha) alpha[i] = uint8_t((255 * covered + samples / 2) / samples);  // rounded as the colours are
   }
   std::vector<float> normals = outputs.normals ? normalsOfSamples(data, in, out.keys, nearest) : std::vector<float>();
+  std::vector<int32_t> lights = outputs.lights ? lightsReached(data, in, out.keys, nearest) : std::vector<int32_t>();
   // The keys read as the visibility buffer reads them (image.h visibilityOf).
   RenderOutput perPixel{std::move(out.image), std::move(keys)};
   Visibility visibility = visibilityOf(perPixel);
   RenderedFrame frame{std::move(perPixel.image), std::move(alpha)};
   if (outputs.depth) frame.depth = std::move(visibility.depth);
   frame.normals = std::move(normals);
+  frame.lights = std::move(lights);
   if (outputs.triangleIds) {
     frame.triangleIds.resize(pixels);  // NO_TRIANGLE reads as -1
     std::memcpy(frame.triangleIds.data(), visibility.triangle.data(), pixels * sizeof(int32_t));

@@ -68,6 +68,11 @@ void runBench(const BenchOptions& options) {
     runMovingObjects(options.quick);
     return;
   }
+  if (options.shadowsOnly) {
+    runShadows(options.sourceDir, options.quick);
+    timeShadowBuild(options.quick);
+    return;
+  }
   checkWritable(options.out);
   checkWritable(options.plot);
   // The context; each backend makes its own renderer per scene.
@@ -96,6 +101,9 @@ void runBench(const BenchOptions& options) {
     report.geometryChanges = runGeometryChanges(options.quick);
     std::printf("a moving object:\n");
     report.movingObjects = runMovingObjects(options.quick);
+    std::printf("shadows:\n");
+    report.shadows = runShadows(options.sourceDir, options.quick);
+    report.shadowBuild = timeShadowBuild(options.quick);
     if (report.plotNote.empty()) {
       report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
     }

@@ -1,6 +1,8 @@
 // geometry_change.cpp — see geometry_change.h.
 #include "geometry_change.h"
 
+#include "grids.h"
+
 #include "api/timing.h"
 #include "phongvk/phongvk.h"
 #include "tools/statistics.h"
@@ -15,24 +17,6 @@ namespace phongvk::bench {
 namespace {
 
 constexpr int FRAMES = GEOMETRY_CHANGE_FRAMES;
-
-// A wavy n x n grid (2n² triangles), its wave shifted by `phase`: another mesh for every phase.
-MeshArrays waveGrid(int n, float phase) {
-  MeshArrays mesh;
-  for (int y = 0; y <= n; ++y) {
-    for (int x = 0; x <= n; ++x) {
-      const float u = float(x) / float(n) - 0.5f, v = float(y) / float(n) - 0.5f;
-      mesh.positions.insert(mesh.positions.end(), {u, v, 0.05f * std::sin(12.0f * u + phase) * std::cos(9.0f * v)});
-    }
-  }
-  for (int y = 0; y < n; ++y) {
-    for (int x = 0; x < n; ++x) {
-      const int64_t a = int64_t(y) * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
-      mesh.triangles.insert(mesh.triangles.end(), {a, b, d, a, d, c});
-    }
-  }
-  return mesh;
-}
 
 Scene sceneOf(const MeshArrays& mesh, int width, int height) {
   Scene scene(width, height);

@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
   app.add_option("--device", options.device, "Vulkan device index (see 'phongvk devices')")->check(CLI::NonNegativeNumber);
   app.add_flag("--moving-only", options.movingOnly,
                "Only a moving object against a moving camera (printed, no report written)");
+  app.add_flag("--shadows-only", options.shadowsOnly,
+               "Only shadowed frames against unshadowed ones and the tree's build (printed, no report written)");
   app.add_flag("--devices-only", options.devicesOnly,
                "Only the device table (each Vulkan device and key path), in a report of its own");
   try {

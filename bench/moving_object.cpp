@@ -1,6 +1,8 @@
 // moving_object.cpp — see moving_object.h.
 #include "moving_object.h"
 
+#include "grids.h"
+
 #include "api/timing.h"
 #include "phongvk/phongvk.h"
 #include "tools/statistics.h"
@@ -13,24 +15,6 @@
 namespace phongvk::bench {
 
 namespace {
-
-// A flat n x n grid (2n² triangles) a metre across, about its centre.
-MeshArrays grid(int n) {
-  MeshArrays mesh;
-  for (int y = 0; y <= n; ++y) {
-    for (int x = 0; x <= n; ++x) {
-      const float u = float(x) / float(n) - 0.5f, v = float(y) / float(n) - 0.5f;
-      mesh.positions.insert(mesh.positions.end(), {u, v, 0.02f * std::sin(20.0f * u) * std::cos(15.0f * v)});
-    }
-  }
-  for (int y = 0; y < n; ++y) {
-    for (int x = 0; x < n; ++x) {
-      const int64_t a = int64_t(y) * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
-      mesh.triangles.insert(mesh.triangles.end(), {a, b, d, a, d, c});
-    }
-  }
-  return mesh;
-}
 
 // A turn by `angle` about z and a small shift: the object's pose for frame `k`.
 Matrix4 poseAt(int k) {
@@ -56,7 +40,7 @@ MovingObjectRun measure(Backend backend, int n, int width, int height, int round
   Scene scene(width, height);
   scene.setLights({{.position = {0.5, -1, 2}}});
   scene.setCamera(cameraAt(0));
-  const ObjectId object = scene.add(grid(n), poseAt(0), Material{.ks = 0.4, .attenuation = {1, 0, 0}});
+  const ObjectId object = scene.add(waveGrid(n, 0.0f), poseAt(0), Material{.ks = 0.4, .attenuation = {1, 0, 0}});
   renderer.render(scene);  // warm-up: the build and every pipeline the frames use
   scene.setPose(object, poseAt(1));
   renderer.render(scene);

@@ -150,6 +150,43 @@ std::string movingObjectSection(const Report& r) {
   return s + "\n";
 }
 
+std::string shadowTargets(const Report& r) {
+  std::vector<ShadowRun> gpu;
+  for (const ShadowRun& x : r.shadows) {
+    if (x.backend == "gpu") gpu.push_back(x);
+  }
+  const bool built = r.shadowBuild.seconds <= SHADOW_BUILD_TARGET_SECONDS;
+  return runsTargetRow<ShadowRun>(
+             "shadows per vertex <= " + number(SHADOW_PAPER_TARGET, 1) + "x the unshadowed frame (paper cube), a 1M "
+             "grid's <= " + number(SHADOW_GRID_TARGET, 1) + "x (compute port)",
+             gpu, [](const ShadowRun& x) { return x.ratio() <= x.target; }, [](const ShadowRun& x) { return x.ratio(); }) +
+         row({"the shadow rays' tree for " + std::to_string(r.shadowBuild.triangles) + " triangles <= " +
+                  seconds(SHADOW_BUILD_TARGET_SECONDS),
+              built ? "**yes**" : "**no**", seconds(r.shadowBuild.seconds)});
+}
+
+std::string shadowSection(const Report& r) {
+  std::string s = "## Shadows\n\nThe public `Renderer`, every light of the scene casting shadows against the same "
+                  "lights casting none, " + std::to_string(r.quick ? 1 : SHADOW_ROUNDS) + " interleaved rounds of " +
+                  std::to_string(SHADOW_FRAMES) + " frames each way, medians; each frame turns the lights a little "
+                  "about z, so every frame lights its vertices again (Gouraud: a ray per vertex and light). The "
+                  "grid is the moving-object grid under a sphere, its lights in a ring above. \"Rays/s\" is the "
+                  "vertices times the shadowed lights over the shadowed frame's time (every ray that may be "
+                  "traced; one whose light adds nothing there is not). The tree (prepare/shadow_bvh.h) is built "
+                  "once per geometry: " + std::to_string(r.shadowBuild.triangles) + " triangles in " +
+                  seconds(r.shadowBuild.seconds) + " (median of 3).\n\n";
+  s += header({"backend", "scene", "triangles", "shadowed lights", "without ms", "with ms", "with / without", "rays/s"});
+  for (const ShadowRun& x : r.shadows) {
+    if (!x.failure.empty()) {
+      s += row({x.backend, x.scene, "–", std::to_string(x.lights), x.failure, "–", "–", "–"});
+      continue;
+    }
+    s += row({x.backend, x.scene, std::to_string(x.triangles), std::to_string(x.lights), number(x.plainMs, 2),
+              number(x.shadowedMs, 2), ratio(x.ratio()), number(x.raysPerSecond() / 1e6, 1) + "M"});
+  }
+  return s + "\n";
+}
+
 std::string endToEndTargets(const EndToEnd& e) {
   return runsTargetRow<SequenceRun>(
              "`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
@@ -200,6 +237,7 @@ std::string targetTable(const Report& r) {
   s += meshLoadTarget(r.meshLoads);
   s += geometryChangeTarget(r.geometryChanges);
   s += movingObjectTarget(r.movingObjects);
+  s += shadowTargets(r);
   s += "\nSpeed ratios are wall clock (the render call, as a user of either backend waits for it); ";
   s += "each scene's misses and what its time or memory went to are listed under the suite.\n\n";
   return s;
@@ -407,7 +445,7 @@ std::string method(const Report& r) {
 std::string formatReport(const Report& report) {
   return preamble(report) + machine(report) + targetTable(report) + suite(report) +
          deviceTableSection(report.devices, report.repeat) + setupSection(report) +
-         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) + movingObjectSection(report) +
+         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) + movingObjectSection(report) + shadowSection(report) +
          method(report);
 }
 

@@ -7,6 +7,7 @@
 #include "error_sweep.h"
 #include "geometry_change.h"
 #include "moving_object.h"
+#include "shadows.h"
 #include "machine.h"
 #include "mesh_load.h"
 #include "scene_bench.h"
@@ -31,6 +32,8 @@ struct Report {
   std::vector<MeshLoadRun> meshLoads;
   std::vector<GeometryChangeRun> geometryChanges;
   std::vector<MovingObjectRun> movingObjects;
+  std::vector<ShadowRun> shadows;
+  ShadowBuild shadowBuild;
   std::string plotLink;  // the plot, relative to the report; empty when there is none
   std::string plotNote;  // why there is no plot
 };

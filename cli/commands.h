@@ -46,6 +46,7 @@ struct RenderOptions : ViewOptions {
   std::string depth;            // --depth FILE (.png or .npy; "": none)
   std::string ids;              // --ids FILE: object ids (.png or .npy; "": none)
   std::string normals;          // --normals FILE: camera-space normals (.png or .npy; "": none)
+  std::string lights;           // --lights FILE: how many lights reach each pixel (.png or .npy; "": none)
 };
 
 struct DiffOptions : ViewOptions {

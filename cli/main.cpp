@@ -136,6 +136,11 @@ int main(int argc, char** argv) {
                         "FILE.png, 8-bit RGB normal map, (n + 1) / 2 * 255 rounded (0, 0, 0 where empty), or "
                         "FILE.npy, float32 (height, width, 3), 0, 0, 0 where empty")
       ->check(OUTPUT_NAME);
+  renderCmd->add_option("--lights", render.lights,
+                        "Also write how many lights reach each pixel's surface (shadowed lights whose ray is "
+                        "blocked do not): FILE.png, 16-bit grey, count + 1 (0 where empty), or FILE.npy, int32, -1 "
+                        "where empty")
+      ->check(OUTPUT_NAME);
 
   DiffOptions diff;
   CLI::App* diffCmd = app.add_subcommand("diff", "Render with both backends and compare pixel by pixel");

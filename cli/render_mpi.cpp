@@ -121,16 +121,20 @@ Composited composite(RenderedFrame& frame, const RenderOptions& options, int ran
   keepOnly(frame.depth, 1, keep);
   keepOnly(frame.objectIds, 1, keep);
   keepOnly(frame.normals, 3, keep);
+  keepOnly(frame.lights, 1, keep);
   c.what = "RGB";
   if (!frame.depth.empty()) c.what += ", depth";
   if (!frame.objectIds.empty()) c.what += ", object ids";
   if (!frame.normals.empty()) c.what += ", normals";
-  c.pixelBytes = frame.image.rgb.size() + 4 * (frame.depth.size() + frame.objectIds.size() + frame.normals.size());
+  if (!frame.lights.empty()) c.what += ", lights";
+  c.pixelBytes = frame.image.rgb.size() +
+                 4 * (frame.depth.size() + frame.objectIds.size() + frame.normals.size() + frame.lights.size());
   const auto pixelsStart = Clock::now();
   reduceBits(frame.image.rgb, rank);
   reduceBits(frame.depth, rank);
   reduceBits(frame.objectIds, rank);
   reduceBits(frame.normals, rank);
+  reduceBits(frame.lights, rank);
   c.pixelsMs = msSince(pixelsStart);
   return c;
 }

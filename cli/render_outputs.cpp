@@ -1,6 +1,6 @@
-// render_outputs.cpp — --rgba, --depth, --ids and --normals of `phongvk render`. A 16-bit PNG holds
-// a depth in millimetres (0 where empty), as the TUM and NYU RGB-D datasets store theirs, and an
-// object id as index + 1 (0 where empty); an 8-bit RGB PNG holds a normal as normal maps do,
+// render_outputs.cpp — --rgba, --depth, --ids, --normals and --lights of `phongvk render`. A 16-bit
+// PNG holds a depth in millimetres (0 where empty), as the TUM and NYU RGB-D datasets store theirs,
+// an object id as index + 1 and a count of lights as count + 1 (0 where empty); an 8-bit RGB PNG holds a normal as normal maps do,
 // (n + 1) / 2 * 255 rounded (0, 0, 0 where empty); a .npy file holds the renderer's own values.
 #include "cli/render_outputs.h"
 
@@ -80,6 +80,12 @@ void writeIds(const RenderOptions& options, const RenderedFrame& frame) {
   writePng(options.ids, grey16(frame, frame.objectIds, [](int32_t id) { return uint16_t(id + 1); }), options.pngLevel);
 }
 
+void writeLights(const RenderOptions& options, const RenderedFrame& frame) {
+  const int w = frame.image.width, h = frame.image.height;
+  if (fileKind(options.lights, "--lights") == FileKind::Npy) return writeNpy(options.lights, frame.lights, w, h);
+  writePng(options.lights, grey16(frame, frame.lights, [](int32_t n) { return uint16_t(n + 1); }), options.pngLevel);
+}
+
 void writeNormals(const RenderOptions& options, const RenderedFrame& frame) {
   const int w = frame.image.width, h = frame.image.height;
   if (normalsKind(options) == FileKind::Npy) return writeNpy(options.normals, frame.normals, w, h, 3);
@@ -91,7 +97,8 @@ void writeNormals(const RenderOptions& options, const RenderedFrame& frame) {
 // ./x.png and a link to it are one file); standard output ('-') is no file.
 void checkDistinctFiles(const RenderOptions& options) {
   const std::pair<const char*, const std::string*> files[] = {
-      {"-o", &options.output}, {"--depth", &options.depth}, {"--ids", &options.ids}, {"--normals", &options.normals}};
+      {"-o", &options.output}, {"--depth", &options.depth}, {"--ids", &options.ids}, {"--normals", &options.normals},
+      {"--lights", &options.lights}};
   std::vector<std::pair<std::filesystem::path, const char*>> seen;
   for (const auto& [option, path] : files) {
     if (path->empty() || *path == "-") continue;
@@ -114,6 +121,7 @@ Outputs outputsAsked(const RenderOptions& options) {
   outputs.depth = fileKind(options.depth, "--depth") != FileKind::None;
   outputs.objectIds = fileKind(options.ids, "--ids") != FileKind::None;
   outputs.normals = normalsKind(options) != FileKind::None;
+  outputs.lights = fileKind(options.lights, "--lights") != FileKind::None;
   return outputs;
 }
 
@@ -123,7 +131,7 @@ void checkOutputFiles(const RenderOptions& options, const Scene& scene) {
     throw UsageError("--ids " + options.ids + ": a 16-bit PNG holds at most " + std::to_string(MAX_PNG_OBJECTS) +
                      " objects' ids, the scene has " + std::to_string(scene.objectCount()) + ": write .npy instead");
   }
-  for (const std::string& path : {options.depth, options.ids, options.normals}) {
+  for (const std::string& path : {options.depth, options.ids, options.normals, options.lights}) {
     if (!path.empty()) checkWritable(path);
   }
 }
@@ -137,6 +145,7 @@ void writeRenderedFiles(const RenderOptions& options, const RenderedFrame& frame
   if (!options.depth.empty()) writeDepth(options, frame);
   if (!options.ids.empty()) writeIds(options, frame);
   if (!options.normals.empty()) writeNormals(options, frame);
+  if (!options.lights.empty()) writeLights(options, frame);
 }
 
 }  // namespace phongvk::cli

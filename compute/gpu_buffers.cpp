@@ -3,6 +3,7 @@
 // the descriptor set over all of them, and each frame's uploads of only what changed.
 #include "compute/gpu_renderer.h"
 
+#include "prepare/shadow_bvh.h"
 #include "shaders/large_triangles.h"
 #include "vulkan/vk_check.h"
 
@@ -52,7 +53,7 @@ void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   checkFits(context, sizeof(IdList) + data.triangles.size() * sizeof(uint32_t), "the clip list");
   texels(data.uvs.size() * sizeof(VertexUv), "the texture coordinates");
   if (data.shadows) {
-    texels(data.shadows->nodes.size() * sizeof(BvhNode), "the shadow rays' tree");
+    texels(shadowBvhNodeCapacity(data.shadows->triangles.size()) * sizeof(BvhNode), "the shadow rays' tree");
     texels(data.shadows->triangles.size() * sizeof(ShadowTriangle), "the shadow rays' triangles");
   }
   texels(data.texelCount * sizeof(uint32_t) + TEXEL_BYTES - 1, "the textures' texels");
@@ -102,7 +103,10 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   createTexelBuffer(scene_.uvs, context_, data.uvs, MemoryKind::DeviceLocal, texelViews(context_));
   const ShadowGeometry none;
   const ShadowGeometry& shadows = data.shadows ? *data.shadows : none;
-  createTexelBuffer(scene_.bvhNodes, context_, shadows.nodes, MemoryKind::DeviceLocal, texelViews(context_));
+  // Room for any tree over these triangles: one built again for moved objects may have more nodes.
+  const VkDeviceSize nodeBytes = shadowBvhNodeCapacity(shadows.triangles.size()) * sizeof(BvhNode);
+  createTexelBuffer(scene_.bvhNodes, context_, nullptr, nodeBytes, 0, MemoryKind::DeviceLocal, texelViews(context_));
+  if (!shadows.nodes.empty()) uploadToBuffer(context_, scene_.bvhNodes.buffer, shadows.nodes.data(), shadows.nodes.size() * sizeof(BvhNode));
   createTexelBuffer(scene_.shadowTriangles, context_, shadows.triangles, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelPool(scene_.texelPool, context_, data);

@@ -16,9 +16,9 @@ namespace phongvk {
 // triangles: 555 MB; with the reference, 63 B); rounded up.
 inline constexpr uint64_t BYTES_PER_TRIANGLE = 112;
 // Per triangle more with a light that casts shadows, counted from the arrays: the caster list (20 B),
-// the tree's triangles on the host and the device (64 B each), its nodes (about 2 x 32 B per 4
-// triangles, twice) and the build's sort items (16 B).
-inline constexpr uint64_t SHADOW_BYTES_PER_TRIANGLE = 196;
+// the tree's triangles on the host and the device (64 B each), its nodes (at most 2 x 32 B a
+// triangle, on the host and the device) and the build's codes, order and centroids (28 B).
+inline constexpr uint64_t SHADOW_BYTES_PER_TRIANGLE = 304;
 // Per pixel: the image, the visibility keys and the GPU's colour and key buffers.
 inline constexpr uint64_t BYTES_PER_PIXEL = 32;
 

@@ -27,9 +27,10 @@ Outputs outputsNamed(const std::vector<std::string>& names) {
     else if (name == "object_id") outputs.objectIds = true;
     else if (name == "triangle_id") outputs.triangleIds = true;
     else if (name == "normal") outputs.normals = true;
+    else if (name == "lights") outputs.lights = true;
     else if (name != "color")
       throw ArgumentError("outputs: unknown output '" + name +
-                          "' (color, rgba, alpha, depth, object_id, triangle_id, normal)");
+                          "' (color, rgba, alpha, depth, object_id, triangle_id, normal, lights)");
   }
   return outputs;
 }
@@ -56,6 +57,8 @@ py::dict outputsDict(RenderedFrame&& frame, const std::vector<std::string>& name
       d["triangle_id"] = ownedArray(std::move(frame.triangleIds), {h, w});
     } else if (name == "normal") {
       d["normal"] = ownedArray(std::move(frame.normals), {h, w, 3});
+    } else if (name == "lights") {
+      d["lights"] = ownedArray(std::move(frame.lights), {h, w});
     }
   }
   // The colour last: rgba above copied from the image this moves.

@@ -33,8 +33,9 @@ SHARED_BEGIN
 
 // Triangles a leaf holds at most (prepare/shadow_bvh.h).
 PHONGVK_CONST uint BVH_LEAF_SIZE = 4;
-// The deepest path a traversal keeps: the host's trees are at most 40 nodes deep (shadow_bvh.h).
-PHONGVK_CONST uint SHADOW_STACK = 48;
+// The deepest path a traversal keeps: the host's trees are at most 30 + log2(N / 4) + 2 levels
+// deep, 62 for 2^32 triangles (prepare/shadow_bvh.h).
+PHONGVK_CONST uint SHADOW_STACK = 64;
 // A direction component smaller than this counts as 0 (and a ray whose largest one is, as none):
 // a device that flushes subnormal floats to zero then computes what every other does.
 PHONGVK_CONST float SHADOW_TINY = 1e-30f;
@@ -87,23 +88,24 @@ FN ShadowRay shadowRay(vec3 org, vec3 dir, bool segment, uvec3 owners) {
   return r;
 }
 
-// Whether the ray's span (0, 1) or (0, infinity) meets box [low, high]: per axis, the slab's
-// distances where the ray moves along it, the origin's place where it does not.
+// The distances along the ray between which it is within the slab [lo, hi] of one axis: where the
+// ray moves along the axis, those of the slab's sides; where it does not (inv 0), every distance
+// when the origin is within the slab, none when outside.
+FN vec2 slabSpan(float o, float lo, float hi, float inv) {
+  if (inv == 0.0f) return o >= lo && o <= hi ? vec2(-3.0e38f, 3.0e38f) : vec2(3.0e38f, -3.0e38f);
+  PRECISE float t0 = (lo - o) * inv;
+  PRECISE float t1 = (hi - o) * inv;
+  return vec2(min(t0, t1), max(t0, t1));
+}
+
+// Whether the ray's span (0, 1) or (0, infinity) meets box [low, high]: the three slabs' spans
+// overlap it.
 FN bool rayMeetsBox(ShadowRay r, vec3 low, vec3 high) {
-  PRECISE float tNear = 0.0f;
-  PRECISE float tFar = r.segment ? 1.0f : 3.0e38f;
-  for (uint k = 0u; k < 3u; ++k) {
-    float o = component(r.org, k), lo = component(low, k), hi = component(high, k);
-    float inv = component(r.inv, k);
-    if (inv == 0.0f) {
-      if (o < lo || o > hi) return false;
-    } else {
-      PRECISE float t0 = (lo - o) * inv;
-      PRECISE float t1 = (hi - o) * inv;
-      tNear = max(tNear, min(t0, t1));
-      tFar = min(tFar, max(t0, t1));
-    }
-  }
+  vec2 x = slabSpan(r.org.x, low.x, high.x, r.inv.x);
+  vec2 y = slabSpan(r.org.y, low.y, high.y, r.inv.y);
+  vec2 z = slabSpan(r.org.z, low.z, high.z, r.inv.z);
+  PRECISE float tNear = max(max(x.x, y.x), max(z.x, 0.0f));
+  PRECISE float tFar = min(min(x.y, y.y), min(z.y, r.segment ? 1.0f : 3.0e38f));
   PRECISE float slack = tFar * SHADOW_BOX_SLACK;
   return tNear <= slack;
 }

@@ -71,7 +71,7 @@ int checkedDepth(const ShadowGeometry& g, uint32_t node, std::vector<int>& seen)
   return 1 + std::max(checkedDepth(g, node + 1, seen), checkedDepth(g, n.index, seen));
 }
 
-TEST(ShadowBvh, HoldsEveryTriangleOnceWithinItsDepthBoundAndTheSameTreeEveryTime) {
+TEST(ShadowBvh, HoldsEveryTriangleOnceWithinItsBoundsAndTheSameTreeEveryTime) {
   std::vector<ShadowTriangle> triangles;
   uint32_t seed = 12345;
   const auto next = [&] {
@@ -86,7 +86,8 @@ TEST(ShadowBvh, HoldsEveryTriangleOnceWithinItsDepthBoundAndTheSameTreeEveryTime
   const ShadowGeometry g = buildShadowBvh(triangles);
   std::vector<int> seen(g.triangles.size(), 0);
   const int depth = checkedDepth(g, 0, seen);
-  EXPECT_LE(depth, int(std::ceil(std::log2(10100.0 / BVH_LEAF_TRIANGLES))) + 2);
+  EXPECT_LE(depth, 30 + int(std::ceil(std::log2(10100.0 / BVH_LEAF_TRIANGLES))) + 2);
+  EXPECT_LE(g.nodes.size(), shadowBvhNodeCapacity(10100));
   EXPECT_LE(depth, int(gpu::SHADOW_STACK));
   for (int count : seen) EXPECT_EQ(count, 1);
   const ShadowGeometry again = buildShadowBvh(triangles);
@@ -165,6 +166,32 @@ TEST(Shadows, ASphereCastsTheDiscItsTangentConeCutsFromThePlaneToThePixel) {
     EXPECT_GT(dark, 2000) << shading;
     EXPECT_GT(lit, 5000) << shading;
   }
+}
+
+TEST(Shadows, TheLightsOutputCountsTheLightsThatReachEachPixelAlikeOnBoth) {
+  // The sphere's disc: 0 lights reach the floor there, 1 beyond it, -1 where nothing is.
+  const int n = 64;
+  const Scene scene = parseScene(sphereOverPlane(n, "phong"));
+  const Outputs outputs{.lights = true};
+  const RenderedFrame cpu = Renderer(Backend::Cpu).renderOutputs(scene, outputs);
+  const RenderedFrame gpu = Renderer(RendererOptions{Backend::Gpu, -1, true}).renderOutputs(scene, outputs);
+  ASSERT_EQ(cpu.lights.size(), size_t(n) * n);
+  EXPECT_EQ(cpu.lights, gpu.lights);
+  const double pixel = 4.0 / n, disc = 3 * std::tan(std::asin(0.5 / 1.8));
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const double r = std::hypot((x + 0.5) * pixel - 2, (y + 0.5) * pixel - 2);
+      const int32_t count = cpu.lights[size_t(y) * n + x];
+      if (r > 0.5 + pixel && r < disc - pixel) EXPECT_EQ(count, 0) << x << ", " << y;
+      if (r > disc + pixel && r < 1.9) EXPECT_EQ(count, 1) << x << ", " << y;
+    }
+  }
+  // A light without shadows reaches every surface (the floor fills the view).
+  Scene unshadowed = scene;
+  std::vector<Light> lights = unshadowed.lights();
+  lights[0].shadows = false;
+  unshadowed.setLights(lights);
+  for (int32_t count : Renderer(Backend::Cpu).renderOutputs(unshadowed, outputs).lights) EXPECT_EQ(count, 1);
 }
 
 TEST(Shadows, ALightInsideAClosedMeshLightsNothingOutside) {

@@ -277,6 +277,11 @@ struct Outputs {
   // and normalized. On a back face (an open object's) it is the stored normal, facing away from
   // the camera, not flipped.
   bool normals = false;
+  // How many of the frame's lights reach the nearest surface (docs/DESIGN.md "Shadows"): each light
+  // without shadows, and each shadowed one whose ray from the surface point is not blocked; -1 where
+  // empty. Where the frame's shading lights a pixel (flat: the triangle's centroid; Gouraud and
+  // Phong: the point under the pixel's nearest sample).
+  bool lights = false;
 };
 
 // A frame and the outputs asked for, each width x height values, row-major, row 0 at the top
@@ -292,6 +297,7 @@ struct RenderedFrame {
   std::vector<int32_t> objectIds;
   std::vector<int32_t> triangleIds;
   std::vector<float> normals;  // x, y, z per pixel
+  std::vector<int32_t> lights;
 };
 
 // Renders scenes on one backend. It keeps what it built and uploaded: rendering a scene with the

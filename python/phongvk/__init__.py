@@ -161,14 +161,16 @@ class Renderer(_phongvk.Renderer):
         width x height pixels when both are given (the vertical field of view is kept).
 
         With outputs (names among "color", "rgba", "alpha", "depth", "object_id", "triangle_id",
-        "normal"), a dict of arrays by name instead: color an Image, rgba a (height, width, 4) uint8
+        "normal", "lights"), a dict of arrays by name instead: color an Image, rgba a (height, width, 4) uint8
         array with alpha where triangles cover the pixel (255: every sample), alpha that
         (height, width) uint8 coverage alone, depth float32 metres along the camera's axis (inf
         where empty), object_id (the index in the scene's objects) and triangle_id int32 (-1 where
         empty), normal a (height, width, 3) float32 array of unit shading normals in camera space,
         x right, y up, z forward along the depth's axis (a surface facing the camera has z < 0;
         0, 0, 0 where empty): the face normal with flat shading, the vertex normals interpolated at
-        the pixel and normalized with Gouraud and Phong, as stored on a back face (not flipped).
+        the pixel and normalized with Gouraud and Phong, as stored on a back face (not flipped);
+        lights int32, how many lights reach the pixel's surface (a shadowed light whose ray is
+        blocked does not; -1 where empty).
         With samples per pixel, depth, ids and normal are the pixel's nearest sample's. Every output
         is the same bytes on the gpu and cpu backends; the graphics backend gives color only."""
         if outputs is None:

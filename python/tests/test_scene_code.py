@@ -342,6 +342,9 @@ def test_a_shadowed_light_darkens_what_an_object_hides_from_it_on_both_backends(
     assert np.array_equal(both(built), shadowed)
     assert built.to_dict()["lights"][0]["shadows"] is True
     assert scene(True, casts=False).to_dict()["objects"][1]["cast_shadows"] is False
+    counts = [phongvk.Renderer(b).render(built, outputs=["lights"])["lights"] for b in ("cpu", "gpu")]
+    assert np.array_equal(counts[0], counts[1]) and counts[0].dtype == np.int32
+    assert set(np.unique(counts[0])) == {-1, 0, 1}  # empty, in the sphere's shadow, lit
     built.lights[0].shadows = False  # a live view: the shadow goes
     assert np.array_equal(both(built), lit)
 
