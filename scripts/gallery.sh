@@ -93,5 +93,16 @@ model() {
 model scene scenes/textured.json
 model box /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb
 model spider /usr/share/assimp/models/OBJ/spider.obj
+# lit NAME: a still of scenes/NAME.json (spot lights, shadows, a glTF file's own lights) at 360x240,
+# 4 samples per pixel, Phong shading.
+lit() {
+  local name="$1"
+  timed "$out/lights_$name.png" "scenes/$name.json" \
+    "$phongvk" render "scenes/$name.json" -o "$out/lights_$name.png" --width 360 --height 240 --samples 4 \
+    --shading phong --backend "$backend" --png-level 12
+}
+lit spot_light
+lit shadows
+lit file_lights
 total_ms=$(( $(now_ms) - total_start ))
 echo "total: $((total_ms / 1000)).$(printf '%03d' $((total_ms % 1000))) s, $(du -ch "$out"/*.png | tail -1 | cut -f1) of PNG in $out"
