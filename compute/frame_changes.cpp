@@ -31,20 +31,6 @@ bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::ve
   return true;
 }
 
-// Whether an object's place for lighting changed (a posed object moved): what ObjectData holds
-// from lightOffset on (offset, flags, pose). Its viewOffset follows the camera, and the positions
-// alone.
-bool lightingPlacesChanged(const std::vector<ObjectData>& now, const std::vector<ObjectData>& last) {
-  if (now.size() != last.size()) return true;
-  constexpr size_t FROM = offsetof(ObjectData, lightOffset);
-  for (size_t i = 0; i < now.size(); ++i) {
-    if (std::memcmp(reinterpret_cast<const char*>(&now[i]) + FROM, reinterpret_cast<const char*>(&last[i]) + FROM,
-                    sizeof(ObjectData) - FROM) != 0)
-      return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 void FrameChanges::restart(const SceneData& data) {
@@ -58,7 +44,7 @@ void FrameChanges::restart(const SceneData& data) {
 ShadeWork FrameChanges::send(const VulkanContext& context, const FrameArrays& arrays, const FrameInputs& in) {
   const bool materialsChanged = uploadIfChanged(context, arrays.materials, in.materials, materials_, "materials");
   const bool lightsChanged = uploadIfChanged(context, arrays.lights, in.lights, lights_, "lights");
-  const bool objectsMoved = lightingPlacesChanged(in.objects, objects_);
+  const bool objectsMoved = !sameLightingPlaces(in.objects, objects_);  // a posed object moved
   const bool objectsChanged = uploadIfChanged(context, arrays.objects, in.objects, objects_, "objects");
   const bool shadowsMoved = in.shadows && in.shadowVersion != shadowVersion_;
   if (shadowsMoved) {

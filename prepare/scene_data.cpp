@@ -163,23 +163,10 @@ void keepShadowCasters(SceneData& data, const SceneSpec& scene) {
   }
 }
 
-// Whether an object's place for lighting differs between `a` and `b`: what ObjectData holds from
-// lightOffset on (offset, flags, pose).
-bool samePlaces(const std::vector<gpu::ObjectData>& a, const std::vector<gpu::ObjectData>& b) {
-  if (a.size() != b.size()) return false;
-  constexpr size_t FROM = offsetof(gpu::ObjectData, lightOffset);
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (std::memcmp(reinterpret_cast<const char*>(&a[i]) + FROM, reinterpret_cast<const char*>(&b[i]) + FROM,
-                    sizeof(gpu::ObjectData) - FROM) != 0)
-      return false;
-  }
-  return true;
-}
-
 // The shadow rays' tree for the objects where they now stand, unless it was built for these places.
 // Each caster's vertices as the shade pass lights them: posed, in the lighting frame.
 void placeShadowCasters(SceneData& data) {
-  if (!data.shadowed || (data.shadows && samePlaces(data.shadowPlacement, data.objects))) return;
+  if (!data.shadowed || (data.shadows && sameLightingPlaces(data.shadowPlacement, data.objects))) return;
   std::vector<gpu::ShadowTriangle> triangles(data.shadowCasters.size());
   const auto lit = [&](uint32_t index) {
     const gpu::ObjectData& object = data.objects[data.vertices[index].object];
@@ -314,6 +301,17 @@ void placeObjects(SceneData& data, const SceneSpec& scene) {
     data.objects[i].lightOffset = glm::vec3(data.objectOrigins[i] - data.lightingOrigin);
   }
   placeShadowCasters(data);
+}
+
+bool sameLightingPlaces(const std::vector<gpu::ObjectData>& a, const std::vector<gpu::ObjectData>& b) {
+  if (a.size() != b.size()) return false;
+  constexpr size_t FROM = offsetof(gpu::ObjectData, lightOffset);
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (std::memcmp(reinterpret_cast<const char*>(&a[i]) + FROM, reinterpret_cast<const char*>(&b[i]) + FROM,
+                    sizeof(gpu::ObjectData) - FROM) != 0)
+      return false;
+  }
+  return true;
 }
 
 bool hasShadowedLights(const SceneSpec& scene) {

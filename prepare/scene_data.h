@@ -130,6 +130,10 @@ void refreshShading(SceneData& data, const SceneSpec& scene);
 // a specular term.
 bool lightingIsViewIndependent(const FrameInputs& in);
 
+// Whether every object of `a` has the place for lighting it has in `b`: what ObjectData holds from
+// lightOffset on (offset, flags, pose). Its viewOffset follows the camera, and the positions alone.
+bool sameLightingPlaces(const std::vector<gpu::ObjectData>& a, const std::vector<gpu::ObjectData>& b);
+
 // The frame for `view`: camera basis, image size, and offsets from the eye computed in double.
 FrameInputs makeFrame(const SceneData& data, const View& view);
 

@@ -26,7 +26,7 @@ std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs
     vec3 color = phongAmbient(m, in.frame.ambient);
     for (const LightData& light : in.lights) {
       vec3 lit = phongLightModel(P, v.normal, V, m, light, blinn);
-      if (in.shadows && lit != vec3(0.0f) && !lightReaches(*in.shadows, light, P, glm::uvec3(uint32_t(i), SHADOW_NO_OWNER, SHADOW_NO_OWNER))) lit = vec3(0.0f);
+      if (in.shadows) lit = shadowedTerm(*in.shadows, light, lit, P, vertexOwners(uint32_t(i)));
       color += lit;
     }
     shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, in.frame), 1.0f);
@@ -112,8 +112,7 @@ uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vecto
   vec3 color = phongAmbient(s.m, frame.ambient);
   for (const LightData& light : in.lights) {
     vec3 lit = phongLightModel(s.P, s.N, V, s.m, light, frame.specular == SPECULAR_BLINN);
-    if (in.shadows && lit != vec3(0.0f) && !lightReaches(*in.shadows, light, s.P, glm::uvec3(tri)))
-      lit = vec3(0.0f);
+    if (in.shadows) lit = shadowedTerm(*in.shadows, light, lit, s.P, glm::uvec3(tri));
     color += lit;
   }
   return packColor(color);

@@ -143,10 +143,11 @@ std::vector<MeshLight> turnedLights(std::vector<MeshLight> lights, const LinearT
 Mesh importFile(const Object& object, std::vector<MeshLight>& lights) {
   const std::string where = object.jsonPath + ".file";
   const MeshFormat format = meshFormat(object.file, where);
+  const LinearTransform transform = objectTransform(object);
   Mesh loaded = importMeshFile(object.file, format, object.baseColors, where);
-  if (object.fileLights) lights = turnedLights(std::move(loaded.lights), objectTransform(object), where + ": " + object.file);
+  if (object.fileLights) lights = turnedLights(std::move(loaded.lights), transform, where + ": " + object.file);
   loaded.lights.clear();
-  return finishLoadedMesh(std::move(loaded), objectTransform(object), where + ": " + object.file);
+  return finishLoadedMesh(std::move(loaded), transform, where + ": " + object.file);
 }
 
 SurfaceMesh makeShape(const Object& object, glm::dvec3& origin, std::vector<MeshLight>& lights) {

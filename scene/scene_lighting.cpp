@@ -46,7 +46,6 @@ Light lightValues(const Node& node) {
   if (!position) node.require("position");  // fails: a light needs one
   if (position->json().is_string()) {
     if (string(*position) != "camera") position->fail("must be a point or \"camera\", got '" + string(*position) + "'");
-    if (light.spot) position->fail("a spot light stands at a point, not at the camera");
     light.atCamera = true;
   } else {
     light.position = array(*position);

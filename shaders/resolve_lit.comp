@@ -59,9 +59,7 @@ uint pixelColor(uint id, int x, int y) {
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
     LightData light = lightData(l);
     vec3 lit = phongLightWith(s.P, s.N, V, s.m, light, SPECULAR, CONSTANT_ATTENUATION, BLINN);
-    if (SHADOWS && lit != vec3(0.0f) && !lightReaches(0u, light, s.P, tri.xyz)) {
-      lit = vec3(0.0f);
-    }
+    if (SHADOWS) lit = shadowedTerm(0u, light, lit, s.P, tri.xyz);
     color += lit;
   }
   return packColor(color);

@@ -36,7 +36,7 @@ void shadeVertex(uint i) {
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
     LightData light = lightData(l);
     vec3 lit = phongLightWith(P, v.normal, V, m, light, SPECULAR, CONSTANT_ATTENUATION, BLINN);
-    if (SHADOWS && lit != vec3(0.0f) && !lightReaches(0u, light, P, uvec3(i, SHADOW_NO_OWNER, SHADOW_NO_OWNER))) lit = vec3(0.0f);
+    if (SHADOWS) lit = shadowedTerm(0u, light, lit, P, vertexOwners(i));
     color += lit;
   }
   shadedColors[i] = vec4(color, 1.0f);

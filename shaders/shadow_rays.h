@@ -182,6 +182,16 @@ FN bool lightReaches(SHADOW_SCENE scene, LightData light, vec3 P, uvec3 owners) 
   return !shadowRayBlocked(scene, shadowRay(P, dir, !directional, owners));
 }
 
+// The owners of vertex i's point: the vertex alone.
+FN uvec3 vertexOwners(uint i) { return uvec3(i, SHADOW_NO_OWNER, SHADOW_NO_OWNER); }
+
+// A light's term `lit` at P as a renderer adds it: 0 where the light casts shadows and its ray is
+// blocked. The ray is traced only where the term is not already 0.
+FN vec3 shadowedTerm(SHADOW_SCENE scene, LightData light, vec3 lit, vec3 P, uvec3 owners) {
+  if (lit == vec3(0.0f) || lightReaches(scene, light, P, owners)) return lit;
+  return vec3(0.0f);
+}
+
 SHARED_END
 
 #endif
