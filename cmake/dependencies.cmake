@@ -10,7 +10,9 @@ pkg_check_modules(LIBDEFLATE REQUIRED IMPORTED_TARGET libdeflate)  # PNG deflate
 # corrupt or truncated image, row by row into the texture.
 pkg_check_modules(LIBPNG REQUIRED IMPORTED_TARGET libpng)
 pkg_check_modules(LIBJPEG REQUIRED IMPORTED_TARGET libjpeg)
-set(PHONGVK_SCENE_LIBRARIES glm::glm nlohmann_json::nlohmann_json tinyobjloader::tinyobjloader)
+# Draco (Debian's libdraco-dev) decodes glTF's KHR_draco_mesh_compression (meshio/gltf_draco.cpp).
+find_package(draco CONFIG REQUIRED)
+set(PHONGVK_SCENE_LIBRARIES glm::glm nlohmann_json::nlohmann_json tinyobjloader::tinyobjloader draco::draco)
 set(PHONGVK_IMAGE_LIBRARIES PkgConfig::LIBDEFLATE PkgConfig::LIBPNG PkgConfig::LIBJPEG)
 # stb (Debian's libstb-dev) installs its headers under /usr/include/stb.
 set(PHONGVK_STB_INCLUDE_DIR /usr/include/stb)

@@ -33,10 +33,16 @@ struct MeshLight {
 
 // Positions are local to the object's origin (so far-away objects keep float precision);
 // triangles wind counter-clockwise seen from outside (outward normal = cross(b - a, c - a)).
+// Points and line segments are drawn a fixed number of pixels wide (docs/DESIGN.md "Points and
+// lines"); a mesh has triangles, points or lines, or any mix of them.
 struct Mesh {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;    // unit length, one per position
+  // One per position: unit length, or (0, 0, 0) for a vertex only points and lines use that was
+  // given no normal (drawn unlit: its colour as it is).
+  std::vector<glm::vec3> normals;
   std::vector<glm::uvec3> triangles;
+  std::vector<uint32_t> points;      // vertex indices, each drawn as a point
+  std::vector<glm::uvec2> lines;     // vertex index pairs, each drawn as a segment
   // One RGBA8 colour per position (red in the low byte) that multiplies the material's colour, or
   // none: white.
   std::vector<uint32_t> colors;

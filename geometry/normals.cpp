@@ -22,8 +22,10 @@ void computeVertexNormals(Mesh& mesh) {
   std::vector<NormalSum> sums;
   reserveLarge(sums, vertexCount);  // fresh memory on huge pages (a 10M-triangle mesh: 280 MB)
   sums.resize(vertexCount);
+  std::vector<bool> used(vertexCount, false);  // by a triangle, with area or without
   for (const glm::uvec3& t : mesh.triangles) {
     assert(t.x < vertexCount && t.y < vertexCount && t.z < vertexCount);
+    used[t.x] = used[t.y] = used[t.z] = true;
     const glm::dvec3 a(mesh.positions[t.x]), b(mesh.positions[t.y]), c(mesh.positions[t.z]);
     const glm::dvec3 n = glm::cross(b - a, c - a);
     if (n == glm::dvec3(0.0)) continue;
@@ -40,8 +42,10 @@ void computeVertexNormals(Mesh& mesh) {
     // Cancelled down to rounding noise: its direction would be noise too.
     const NormalSum& s = sums[v];
     glm::dvec3 n = glm::length(s.sum) > 1e-9 * s.weight ? s.sum : s.fallback;
-    mesh.normals[v] =
-        n == glm::dvec3(0.0) ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(glm::normalize(n));
+    if (!used[v])
+      mesh.normals[v] = glm::vec3(0.0f);
+    else
+      mesh.normals[v] = n == glm::dvec3(0.0) ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(glm::normalize(n));
   }
 }
 

@@ -9,7 +9,8 @@ namespace phongvk {
 // cross(b - a, c - a) of its triangles: each face weighs by its area, so a sliver does not tilt a
 // vertex the way a large face does. Vertices shared by index are smooth; split ones stay sharp.
 // A vertex whose sum cancels (a two-sided sheet) takes the normal of its first triangle with area;
-// one with no such triangle gets +z. Unit length always.
+// one whose triangles all have zero area gets +z. A vertex no triangle uses (one only points and
+// lines draw) gets (0, 0, 0): it is drawn unlit. Unit length for every vertex a triangle uses.
 void computeVertexNormals(Mesh& mesh);
 
 }  // namespace phongvk

@@ -43,7 +43,8 @@ const Json* element(const Json& root, const char* key, const Json& index) {
   return i < array->size() ? &(*array)[size_t(i)] : nullptr;
 }
 
-// The triangles a primitive makes: its indices' (or positions') count, by its mode.
+// The triangles a primitive makes, by its mode, from its indices' (or positions') count: a point or a
+// line segment counts as one (its vertex, index and drawing take no more than a triangle's).
 uint64_t primitiveTriangles(const Json& root, const Json& primitive) {
   const uint64_t mode = primitive.contains("mode") ? unsignedAt(primitive, "mode") : 4;
   const Json* accessor = nullptr;
@@ -54,9 +55,15 @@ uint64_t primitiveTriangles(const Json& root, const Json& primitive) {
       accessor = element(root, "accessors", *position);
   }
   const uint64_t count = accessor && accessor->is_object() ? unsignedAt(*accessor, "count") : 0;
-  if (mode == 4) return count / 3;
-  if (mode == 5 || mode == 6) return count > 2 ? count - 2 : 0;
-  return 0;  // points and lines make no triangles
+  switch (mode) {
+    case 0: return count;                          // points
+    case 1: return count / 2;                      // lines
+    case 2: return count > 2 ? count : count / 2;  // a line loop, closed from 3 vertices
+    case 3: return count > 1 ? count - 1 : 0;      // a line strip
+    case 4: return count / 3;
+    case 5: case 6: return count > 2 ? count - 2 : 0;
+    default: return 0;
+  }
 }
 
 uint64_t meshTriangles(const Json& root, const Json& meshIndex) {
@@ -70,15 +77,30 @@ uint64_t meshTriangles(const Json& root, const Json& meshIndex) {
   return triangles;
 }
 
-}  // namespace
-
-std::optional<uint64_t> gltfTriangles(const std::string& path, bool binary) {
+// The file's JSON, or null when it cannot be read or parsed.
+Json rootOf(const std::string& path, bool binary) {
   std::string why;
   const std::optional<RegularFile> file = RegularFile::open(path, why);
-  if (!file) return std::nullopt;
+  if (!file) return Json();
   const Json root = Json::parse(jsonText(*file, binary), nullptr, false);
+  return root.is_object() ? root : Json();
+}
+
+}  // namespace
+
+std::vector<std::string> gltfRequiredExtensions(const std::string& path, bool binary) {
+  const Json root = rootOf(path, binary);
+  std::vector<std::string> names;
+  if (!root.is_object() || !root.contains("extensionsRequired") || !root["extensionsRequired"].is_array()) return names;
+  for (const Json& name : root["extensionsRequired"])
+    if (name.is_string()) names.push_back(name.get<std::string>());
+  return names;
+}
+
+std::optional<uint64_t> gltfTriangles(const std::string& path, bool binary) {
+  const Json root = rootOf(path, binary);
   if (!root.is_object()) return std::nullopt;
-  const Json* scene = element(root, "scenes", root.contains("scene") ? root["scene"] : Json(0));
+  const Json* scene = element(root, "scenes", root.contains("scene") ? root["scene"] : Json(uint64_t(0)));  // unsigned, as element asks
   if (!scene || !scene->is_object() || !scene->contains("nodes") || !(*scene)["nodes"].is_array()) return 0;
   // Each node once (the importer refuses a node reached twice), walked without recursion.
   std::vector<bool> seen(root.contains("nodes") && root["nodes"].is_array() ? root["nodes"].size() : 0, false);

@@ -1,11 +1,13 @@
 // gltf_import.cpp — see gltf_import.h. tinygltf parses the JSON and loads the buffers; every
-// accessor read here is checked against its buffer view and buffer first, so that a file whose
-// offsets, strides or counts lie is an error, not a read out of bounds.
+// accessor read here is checked against its buffer view and buffer first (gltf_accessor.h), so
+// that a file whose offsets, strides or counts lie is an error, not a read out of bounds.
 #include "meshio/gltf_import.h"
 
 #include "base/number_text.h"
 #include "base/regular_file.h"
 #include "image/texture_decode.h"
+#include "meshio/gltf_accessor.h"
+#include "meshio/gltf_draco.h"
 #include "meshio/gltf_lights.h"
 #include "meshio/mesh_import.h"
 #include "phongvk/errors.h"
@@ -76,76 +78,6 @@ uint32_t wrapMode(int gl) {
   return gpu::TEXTURE_WRAP_REPEAT;
 }
 
-// Reads accessor elements as doubles, bounds checked once up front.
-class Accessor {
- public:
-  Accessor(const tinygltf::Model& model, int index, const std::string& what, const std::string& path, const std::string& where) {
-    const auto bad = [&](const std::string& why) { fail(where, path, what + " (accessor " + std::to_string(index) + "): " + why); };
-    if (index < 0 || size_t(index) >= model.accessors.size()) bad("does not exist");
-    const tinygltf::Accessor& a = model.accessors[size_t(index)];
-    if (a.sparse.isSparse) bad("sparse accessors are not supported");
-    if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size()) bad("has no buffer view");
-    const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) bad("its buffer does not exist");
-    const std::vector<unsigned char>& buffer = model.buffers[size_t(view.buffer)].data;
-    components_ = tinygltf::GetNumComponentsInType(uint32_t(a.type));
-    componentSize_ = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    if (components_ <= 0 || componentSize_ <= 0) bad("unknown type or component type");
-    componentType_ = a.componentType;
-    normalized_ = a.normalized;
-    count_ = a.count;
-    const size_t element = size_t(components_) * size_t(componentSize_);
-    stride_ = view.byteStride != 0 ? view.byteStride : element;
-    if (stride_ < element) bad("its stride is smaller than an element");
-    // Every sum and product below is checked before it is made: offsets and counts near 2^64
-    // would otherwise wrap around and pass.
-    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
-      bad("its buffer view runs past the end of its buffer");
-    if (a.byteOffset > view.byteLength) bad("runs past the end of its buffer view");
-    const size_t room = view.byteLength - a.byteOffset;  // bytes from the accessor's start to the view's end
-    if (count_ > 0 && (element > room || count_ - 1 > (room - element) / stride_))
-      bad("runs past the end of its buffer view (" + std::to_string(count_) + " elements)");
-    const size_t start = view.byteOffset + a.byteOffset;
-    data_ = buffer.data() + start;
-  }
-
-  size_t count() const { return count_; }
-  int components() const { return components_; }
-
-  double at(size_t i, int c) const {
-    const unsigned char* p = data_ + i * stride_ + size_t(c) * size_t(componentSize_);
-    switch (componentType_) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: return read<float>(p);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return scaled(read<uint8_t>(p), 255.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return scaled(read<uint16_t>(p), 65535.0);
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return read<uint32_t>(p);
-      case TINYGLTF_COMPONENT_TYPE_BYTE: return scaled(read<int8_t>(p), 127.0);
-      case TINYGLTF_COMPONENT_TYPE_SHORT: return scaled(read<int16_t>(p), 32767.0);
-      default: return NAN;
-    }
-  }
-
-  bool isInteger() const { return componentType_ != TINYGLTF_COMPONENT_TYPE_FLOAT && componentType_ != TINYGLTF_COMPONENT_TYPE_DOUBLE; }
-  bool isUnsignedInteger() const {
-    return componentType_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || componentType_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-           componentType_ == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-  }
-
- private:
-  template <typename T>
-  static double read(const unsigned char* p) {
-    T value;
-    std::memcpy(&value, p, sizeof value);
-    return double(value);
-  }
-  double scaled(double value, double max) const { return normalized_ ? std::fmax(value / max, -1.0) : value; }
-
-  const unsigned char* data_ = nullptr;
-  size_t count_ = 0, stride_ = 0;
-  int components_ = 0, componentSize_ = 0, componentType_ = 0;
-  bool normalized_ = false;
-};
-
 // The node's transform: its matrix, or translation, rotation and scale. Arrays of another length
 // and rotations that are not unit quaternions are errors (the specification's rules), not a guess.
 glm::dmat4 nodeMatrix(const tinygltf::Node& node, const std::string& name, const std::string& path, const std::string& where) {
@@ -193,7 +125,9 @@ class Reader {
     if (std::optional<MeshLight> light = gltfNodeLight(model_, n, name, transform, path_, where_)) lights_.push_back(*light);
     if (n.mesh >= 0) {
       if (size_t(n.mesh) >= model_.meshes.size()) fail(where_, path_, "node " + std::to_string(index) + " names a mesh that does not exist");
-      for (const tinygltf::Primitive& p : model_.meshes[size_t(n.mesh)].primitives) primitive(p, transform);
+      const std::vector<tinygltf::Primitive>& primitives = model_.meshes[size_t(n.mesh)].primitives;
+      for (size_t p = 0; p < primitives.size(); ++p)
+        primitive(primitives[p], transform, "meshes[" + std::to_string(n.mesh) + "].primitives[" + std::to_string(p) + "]");
     }
     for (int child : n.children) node(child, transform, depth + 1);
   }
@@ -202,13 +136,27 @@ class Reader {
   std::vector<MeshLight>& lights() { return lights_; }
 
  private:
+  // Attribute `name` of the primitive: decoded where its Draco compression holds it, otherwise read
+  // from its accessor; nothing when the primitive has none.
+  std::optional<Accessor> attribute(const tinygltf::Primitive& p, const std::string& name) const {
+    if (draco_) {
+      const auto decoded = draco_->attributes.find(name);
+      if (decoded != draco_->attributes.end())
+        return Accessor(decoded->second.values.data(), draco_->vertices, decoded->second.components, GLTF_FLOAT);
+    }
+    const auto found = p.attributes.find(name);
+    if (found == p.attributes.end()) return std::nullopt;
+    return Accessor(model_, found->second, name, path_, where_);
+  }
+
   std::vector<uint32_t> indices(const tinygltf::Primitive& p, size_t vertices) const {
     std::vector<uint32_t> list;
-    if (p.indices < 0) {
+    if (p.indices < 0 && !draco_) {
       for (size_t i = 0; i < vertices; ++i) list.push_back(uint32_t(i));
       return list;
     }
-    const Accessor a(model_, p.indices, "indices", path_, where_);
+    const Accessor a = draco_ ? Accessor(draco_->indices.data(), draco_->indices.size(), 1, GLTF_UNSIGNED_INT)
+                              : Accessor(model_, p.indices, "indices", path_, where_);
     if (!a.isUnsignedInteger() || a.components() != 1)
       fail(where_, path_, "indices (accessor " + std::to_string(p.indices) + ") are not unsigned integers (5121, 5123 or 5125 scalars)");
     for (size_t i = 0; i < a.count(); ++i) {
@@ -230,20 +178,36 @@ class Reader {
     return t;
   }
 
+  // The indices as what `mode` draws: points; lines (a strip's and a loop's segments, a loop of
+  // three vertices or more closed by its last); triangles (strips and fans unrolled).
+  static void addElements(std::vector<uint32_t> i, int mode, MeshPart& part) {
+    const size_t n = i.size();
+    if (mode == TINYGLTF_MODE_POINTS) part.points = std::move(i);
+    if (mode == TINYGLTF_MODE_LINE)
+      for (size_t k = 0; k + 1 < n; k += 2) part.lines.push_back({i[k], i[k + 1]});
+    if (mode == TINYGLTF_MODE_LINE_STRIP || mode == TINYGLTF_MODE_LINE_LOOP)
+      for (size_t k = 0; k + 1 < n; ++k) part.lines.push_back({i[k], i[k + 1]});
+    if (mode == TINYGLTF_MODE_LINE_LOOP && n > 2) part.lines.push_back({i[n - 1], i[0]});
+    if (mode >= TINYGLTF_MODE_TRIANGLES) part.triangles = triangles(i, mode);
+  }
+
   glm::dvec4 baseColor(const tinygltf::Primitive& p) const {
     if (!baseColors_ || p.material < 0 || size_t(p.material) >= model_.materials.size()) return glm::dvec4(1.0);
     const std::vector<double>& f = model_.materials[size_t(p.material)].pbrMetallicRoughness.baseColorFactor;
     return f.size() == 4 ? glm::dvec4(f[0], f[1], f[2], f[3]) : glm::dvec4(1.0);
   }
 
-  void primitive(const tinygltf::Primitive& p, const glm::dmat4& transform) {
+  // Primitive `p` (named `name`, "meshes[0].primitives[1]") as a part: its vertices placed by
+  // `transform`. Compressed (KHR_draco_mesh_compression), its decoded triangles (Draco's faces,
+  // whether the mode says triangles or a strip) and attributes.
+  void primitive(const tinygltf::Primitive& p, const glm::dmat4& transform, const std::string& name) {
     const int mode = p.mode;
     if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
       fail(where_, path_, "a primitive's mode is " + std::to_string(mode) + ", not a glTF primitive mode (0 to 6)");
-    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) return;
-    const auto position = p.attributes.find("POSITION");
-    if (position == p.attributes.end()) fail(where_, path_, "a primitive has no POSITION");
-    const Accessor positions(model_, position->second, "POSITION", path_, where_);
+    draco_ = decodeDracoPrimitive(model_, p, name, path_, where_);
+    const std::optional<Accessor> found = attribute(p, "POSITION");
+    if (!found) fail(where_, path_, "a primitive has no POSITION");
+    const Accessor& positions = *found;
     if (positions.components() != 3 || positions.isInteger()) fail(where_, path_, "POSITION is not 3 floats a vertex");
     MeshPart part;
     for (size_t v = 0; v < positions.count(); ++v) {
@@ -254,36 +218,38 @@ class Reader {
       }
       part.positions.push_back(glm::vec3(world));
     }
-    normals(p, transform, part);
+    const bool drawsTriangles = mode >= TINYGLTF_MODE_TRIANGLES;
+    normals(p, transform, drawsTriangles, part);
     colors(p, part);
     texturing(p, part);
-    part.triangles = triangles(indices(p, positions.count()), mode);
+    addElements(indices(p, positions.count()), draco_ ? TINYGLTF_MODE_TRIANGLES : mode, part);
+    draco_.reset();
     parts_.push_back(std::move(part));
   }
 
-  void normals(const tinygltf::Primitive& p, const glm::dmat4& transform, MeshPart& part) const {
-    const auto normal = p.attributes.find("NORMAL");
-    if (normal == p.attributes.end()) return;
-    const Accessor a(model_, normal->second, "NORMAL", path_, where_);
-    if (a.components() != 3 || a.count() != part.positions.size()) fail(where_, path_, "NORMAL is not one 3-vector a vertex");
+  // The primitive's normals, turned by `transform`'s inverse transpose. On triangles, one of zero
+  // length makes them unusable (the primitive is flat-shaded instead); on points and lines it is
+  // (0, 0, 0), that vertex drawn unlit.
+  void normals(const tinygltf::Primitive& p, const glm::dmat4& transform, bool drawsTriangles, MeshPart& part) const {
+    const std::optional<Accessor> a = attribute(p, "NORMAL");
+    if (!a) return;
+    if (a->components() != 3 || a->count() != part.positions.size()) fail(where_, path_, "NORMAL is not one 3-vector a vertex");
     const glm::dmat3 m = glm::transpose(glm::inverse(glm::dmat3(transform)));
-    for (size_t v = 0; v < a.count(); ++v) {
-      const glm::dvec3 n = m * glm::dvec3(a.at(v, 0), a.at(v, 1), a.at(v, 2));
+    for (size_t v = 0; v < a->count(); ++v) {
+      const glm::dvec3 n = m * glm::dvec3(a->at(v, 0), a->at(v, 1), a->at(v, 2));
       const double length = glm::length(n);
-      if (!std::isfinite(length) || length == 0.0) {  // unusable: the primitive is flat-shaded instead
+      if (!std::isfinite(length) || (length == 0.0 && drawsTriangles)) {
         part.normals.clear();
         return;
       }
-      part.normals.push_back(glm::vec3(n));
+      part.normals.push_back(length == 0.0 ? glm::vec3(0.0f) : glm::vec3(n));
     }
   }
 
   void colors(const tinygltf::Primitive& p, MeshPart& part) const {
     const glm::dvec4 base = baseColor(p);
-    const auto color = p.attributes.find("COLOR_0");
-    std::optional<Accessor> a;
-    if (color != p.attributes.end()) {
-      a.emplace(model_, color->second, "COLOR_0", path_, where_);
+    const std::optional<Accessor> a = attribute(p, "COLOR_0");
+    if (a) {
       if ((a->components() != 3 && a->components() != 4) || a->count() != part.positions.size())
         fail(where_, path_, "COLOR_0 is not one RGB or RGBA colour a vertex");
     } else if (base == glm::dvec4(1.0)) {
@@ -304,12 +270,11 @@ class Reader {
     const tinygltf::TextureInfo& info = model_.materials[size_t(p.material)].pbrMetallicRoughness.baseColorTexture;
     if (info.index < 0) return;
     const std::string name = "TEXCOORD_" + std::to_string(info.texCoord);
-    const auto coordinates = p.attributes.find(name);
-    if (coordinates == p.attributes.end())
+    const std::optional<Accessor> a = attribute(p, name);
+    if (!a)
       fail(where_, path_, "materials[" + std::to_string(p.material) + "]'s base colour texture reads " + name + ", which a primitive lacks");
-    const Accessor a(model_, coordinates->second, name, path_, where_);
-    if (a.components() != 2 || a.count() != part.positions.size()) fail(where_, path_, name + " is not one 2-vector a vertex");
-    for (size_t v = 0; v < a.count(); ++v) part.uvs.push_back(glm::vec2(float(a.at(v, 0)), float(a.at(v, 1))));
+    if (a->components() != 2 || a->count() != part.positions.size()) fail(where_, path_, name + " is not one 2-vector a vertex");
+    for (size_t v = 0; v < a->count(); ++v) part.uvs.push_back(glm::vec2(float(a->at(v, 0)), float(a->at(v, 1))));
     part.texture = texture(info.index);
   }
 
@@ -380,6 +345,7 @@ class Reader {
   const std::string& path_;
   const std::string& where_;
   std::vector<MeshPart> parts_;
+  std::optional<DracoPrimitive> draco_;  // the primitive being read, decoded, where it is compressed
   std::vector<MeshLight> lights_;  // in the order the node tree reaches them
   std::vector<bool> visited_;  // nodes reached so far
   std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by texture index, once decoded
@@ -387,19 +353,33 @@ class Reader {
   std::vector<std::string> ignoredMaps_;  // the kinds of map seen that are not rendered
 };
 
+// The extensions phongvk implements: a file may require these and no others.
+bool implemented(const std::string& extension) {
+  return extension == "KHR_draco_mesh_compression" || extension == "KHR_lights_punctual";
+}
+
+// "requires the extension X, which phongvk does not implement" for the required extensions phongvk
+// does not implement, or "" when it implements them all: a file that requires one (quantized
+// positions, a texture transform) cannot be read right without it.
+std::string unimplementedRequirement(const std::vector<std::string>& required) {
+  std::vector<std::string> missing;
+  for (const std::string& name : required) {
+    if (!implemented(name)) missing.push_back(name);
+  }
+  if (missing.empty()) return "";
+  std::string names;
+  for (const std::string& name : missing) names += (names.empty() ? "" : ", ") + name;
+  return "requires the extension" + std::string(missing.size() > 1 ? "s " : " ") + names + ", which phongvk does not implement";
+}
+
 // glTF 2.x (a later minor version is read as 2.0, as the specification allows), and no required
-// extension: phongvk implements none, and a file that requires one (Draco compression, quantized
-// positions) cannot be read right without it.
+// extension phongvk does not implement.
 void checkAsset(const tinygltf::Model& model, const std::string& path, const std::string& where) {
   const std::string& version = model.asset.version;
   if (version.rfind("2.", 0) != 0)
     fail(where, path, "asset.version is '" + version + "'; phongvk reads glTF 2.0 files (convert a glTF 1.0 file to 2.0 first)");
-  if (!model.extensionsRequired.empty()) {
-    std::string names;
-    for (const std::string& name : model.extensionsRequired) names += (names.empty() ? "" : ", ") + name;
-    fail(where, path, "requires the extension" + std::string(model.extensionsRequired.size() > 1 ? "s " : " ") + names +
-                          ", which phongvk does not implement");
-  }
+  const std::string unimplemented = unimplementedRequirement(model.extensionsRequired);
+  if (!unimplemented.empty()) fail(where, path, unimplemented);
 }
 
 // Where a GLB's BIN chunk would end, past the file's own length: tinygltf checks the chunk's length
@@ -431,8 +411,28 @@ bool loadGlb(tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& er
     fail(where, path, "not a valid GLB file: its BIN chunk would end at byte " + std::to_string(*end) +
                           ", past the file's length of " + std::to_string(length) + " bytes");
   }
+  giveCompressedIndicesViews(bytes, true);
   return loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(), unsigned(bytes.size()),
                                      tinygltf::GetBaseDir(path));
+}
+
+// A .gltf read once and parsed as tinygltf's LoadASCIIFromFile parses it (with its messages), its
+// compressed primitives' indices given a buffer view first (gltf_draco.h).
+bool loadGltf(tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& error, std::string& warning,
+              const std::string& path) {
+  std::vector<unsigned char> bytes;
+  std::string why;
+  if (!readRegularFile(&bytes, &why, path, nullptr)) {
+    error = "Failed to read file: " + path + ": " + why + "\n";
+    return false;
+  }
+  if (bytes.empty()) {
+    error = "Empty file.";
+    return false;
+  }
+  giveCompressedIndicesViews(bytes, false);
+  return loader.LoadASCIIFromString(&model, &error, &warning, reinterpret_cast<const char*>(bytes.data()),
+                                    unsigned(bytes.size()), tinygltf::GetBaseDir(path));
 }
 
 }  // namespace
@@ -443,9 +443,12 @@ Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std
   loader.SetFsCallbacks({fileExists, tinygltf::ExpandFilePath, readRegularFile, tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string error, warning;
-  const bool loaded = binary ? loadGlb(loader, model, error, warning, path, where)
-                             : loader.LoadASCIIFromFile(&model, &error, &warning, path);
-  if (!loaded) fail(where, path, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " + error.substr(0, error.find('\n')));
+  const bool loaded = binary ? loadGlb(loader, model, error, warning, path, where) : loadGltf(loader, model, error, warning, path);
+  if (!loaded) {
+    const std::string unimplemented = unimplementedRequirement(gltfRequiredExtensions(path, binary));
+    if (!unimplemented.empty()) fail(where, path, unimplemented);
+    fail(where, path, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " + error.substr(0, error.find('\n')));
+  }
   checkAsset(model, path, where);
   if (model.scenes.empty()) fail(where, path, "no scene");
   const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;

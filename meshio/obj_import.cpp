@@ -37,6 +37,9 @@ struct ObjData {
   std::vector<float> texcoords;           // uv per 'vt' line
   std::vector<tinyobj::index_t> corners;  // the faces' corners, in order
   std::vector<uint32_t> faceSizes;        // corners per face, in file order
+  std::vector<tinyobj::index_t> pointCorners;  // the 'p' lines' vertices, in order (a point cloud: every 'v')
+  std::vector<tinyobj::index_t> lineCorners;   // the 'l' lines' vertices, in order
+  std::vector<uint32_t> lineSizes;             // vertices per 'l' line, in file order
   std::vector<int> faceMaterials;         // each face's material (usemtl), -1 for none
   std::vector<std::string> diffuseMaps;   // each material's map_Kd, as its library names it
   std::vector<std::string> ignoredMaps;   // the other maps the materials name (map_Ks, bump, ...), once each
@@ -102,6 +105,23 @@ bool isCorner(std::string_view corner) {
   }
 }
 
+// A vertex of a 'p' or an 'l' line: its position index as the file writes it, that index resolved
+// (0-based; out of range when the file's 'v' lines do not reach it) and the line it is on.
+struct ElementVertex {
+  int64_t written = 0, resolved = 0;
+  size_t lineNumber = 0;
+};
+
+// What the file's lines say beyond tinyobjloader's reading: the faces' corner counts (tinyobjloader
+// keeps only their low 8 bits), and the points and polylines of its 'p' and 'l' lines, read here
+// (tinyobjloader 2.0.0rc10 repeats a shape's lines and points at each change of material).
+struct ObjLines {
+  std::vector<uint32_t> faceSizes;
+  std::vector<ElementVertex> pointVertices, lineVertices;
+  std::vector<uint32_t> lineSizes;
+  size_t vertexLines = 0;  // 'v' lines
+};
+
 // Calls visit(lineNumber, words) for each line of `text` that has words, lines numbered from 1.
 template <typename Visit>
 void forEachLine(std::string_view text, Visit&& visit) {
@@ -116,12 +136,38 @@ void forEachLine(std::string_view text, Visit&& visit) {
   }
 }
 
+// The position index of the 'p' or 'l' vertex `word` (checked by isCorner), resolved as a face
+// corner's is: positive from the first 'v' line, negative back from the last before it.
+ElementVertex elementVertex(std::string_view word, size_t vertexLines, size_t lineNumber) {
+  int64_t index = 0;
+  std::from_chars(word.data(), word.data() + std::min(word.find('/'), word.size()), index);
+  return {index, index > 0 ? index - 1 : int64_t(vertexLines) + index, lineNumber};
+}
+
+// A 'p' line's vertices, or an 'l' line's (two or more), added to `lines`.
+void readElement(const std::vector<std::string_view>& words, size_t lineNumber, ObjLines& lines, const std::string& path,
+                 const std::string& where) {
+  const bool line = words[0] == "l";
+  if (words.size() < (line ? 3u : 2u))
+    fail(where, path, "line " + std::to_string(lineNumber) + ": " +
+                          (line ? "an 'l' line needs 2 vertices or more, got " + std::to_string(words.size() - 1)
+                                : std::string("a 'p' line needs a vertex or more")));
+  for (size_t w = 1; w < words.size(); ++w) {
+    if (!isCorner(words[w]))
+      fail(where, path, "line " + std::to_string(lineNumber) + ": '" + std::string(words[w]).substr(0, 40) + "' is not a" +
+                            (line ? "n 'l'" : " 'p'") + " vertex (v or v/vt, indices 32-bit and not 0)");
+    (line ? lines.lineVertices : lines.pointVertices).push_back(elementVertex(words[w], lines.vertexLines, lineNumber));
+  }
+  if (line) lines.lineSizes.push_back(uint32_t(words.size() - 1));
+}
+
 // What tinyobjloader lets through without a word, checked line by line: every number on the v, vn
 // and vt lines is a plain decimal number, a v line has x, y and z, a face has three corners or
-// more and every corner index is one (in 32 bits); and the file is text. Returns the faces' corner
-// counts, in file order (tinyobjloader keeps only their low 8 bits).
-std::vector<uint32_t> checkLines(std::string_view text, const std::string& path, const std::string& where) {
-  std::vector<uint32_t> faceSizes;
+// more and every corner index is one (in 32 bits), a 'p' line a vertex or more and an 'l' line two;
+// and the file is text.
+ObjLines checkLines(std::string_view text, const std::string& path, const std::string& where) {
+  ObjLines lines;
+  std::vector<uint32_t>& faceSizes = lines.faceSizes;
   if (text.find('\0') != std::string_view::npos)
     fail(where, path, "not a text file (it holds NUL bytes: binary, or UTF-16 text, which OBJ is not)");
   forEachLine(text, [&](size_t lineNumber, const std::vector<std::string_view>& words) {
@@ -134,6 +180,9 @@ std::vector<uint32_t> checkLines(std::string_view text, const std::string& path,
       }
       if (keyword == "v" && words.size() < 4)
         fail(where, path, at() + "a 'v' line needs x, y and z, got " + std::to_string(words.size() - 1) + " numbers");
+      if (keyword == "v") ++lines.vertexLines;
+    } else if (keyword == "p" || keyword == "l") {
+      readElement(words, lineNumber, lines, path, where);
     } else if (keyword == "f") {
       if (words.size() < 4) fail(where, path, at() + "a face needs 3 corners or more, got " + std::to_string(words.size() - 1));
       faceSizes.push_back(uint32_t(words.size() - 1));
@@ -143,7 +192,55 @@ std::vector<uint32_t> checkLines(std::string_view text, const std::string& path,
       }
     }
   });
-  return faceSizes;
+  return lines;
+}
+
+// The points' or the lines' vertices as corners of the file's positions (no normal, no texture
+// coordinate). Throws for an index outside the file's 'v' lines, naming the line.
+std::vector<tinyobj::index_t> elementCorners(const std::vector<ElementVertex>& vertices, size_t positions, const char* keyword,
+                                             const std::string& path, const std::string& where) {
+  std::vector<tinyobj::index_t> corners;
+  corners.reserve(vertices.size());
+  for (const ElementVertex& v : vertices) {
+    if (v.resolved < 0 || uint64_t(v.resolved) >= positions)
+      fail(where, path, "line " + std::to_string(v.lineNumber) + ": '" + keyword + "' vertex index " + std::to_string(v.written) +
+                            " is out of range (the file has " + std::to_string(positions) + " vertices)");
+    corners.push_back({int(v.resolved), -1, -1});
+  }
+  return corners;
+}
+
+glm::dvec3 at(const std::vector<float>& xyz, int index) {
+  return {xyz[3 * size_t(index)], xyz[3 * size_t(index) + 1], xyz[3 * size_t(index) + 2]};
+}
+
+// A normal index of the file's 'vn' lines whose normal is finite and not zero.
+bool usableNormal(const std::vector<float>& normals, int index) {
+  if (index < 0) return false;
+  const double length = glm::length(at(normals, index));
+  return std::isfinite(length) && length != 0.0;
+}
+
+// A file of 'v' lines alone is a point cloud: every vertex a point, with the normal of the 'vn'
+// line of the same rank (where usable) when there are as many as 'v' lines (MeshLab writes them so).
+std::vector<tinyobj::index_t> pointCloud(const std::vector<float>& positions, const std::vector<float>& normals) {
+  std::vector<tinyobj::index_t> corners(positions.size() / 3);
+  const bool paired = normals.size() == positions.size();
+  for (size_t v = 0; v < corners.size(); ++v) corners[v] = {int(v), paired && usableNormal(normals, int(v)) ? int(v) : -1, -1};
+  return corners;
+}
+
+// The points and lines of the file's 'p' and 'l' lines; in a file without them and without faces,
+// every vertex a point.
+void addPointsAndLines(ObjData& data, const ObjLines& lines, const std::string& path, const std::string& where) {
+  const size_t positions = data.positions.size() / 3;
+  data.pointCorners = elementCorners(lines.pointVertices, positions, "p", path, where);
+  data.lineCorners = elementCorners(lines.lineVertices, positions, "l", path, where);
+  data.lineSizes = lines.lineSizes;
+  if (data.corners.empty() && data.pointCorners.empty() && data.lineCorners.empty()) {
+    if (positions == 0) fail(where, path, "nothing to draw (no 'f', 'l', 'p' or 'v' lines)");
+    data.pointCorners = pointCloud(data.positions, data.normals);
+  }
 }
 
 // The file's bytes as a stream, read where they lie (no copy).
@@ -265,7 +362,8 @@ void noteIgnoredMaps(const tinyobj::material_t& m, std::vector<std::string>& nam
 
 ObjData parse(const std::string& path, const std::string& where) {
   const MappedFile file(path, where);
-  const std::vector<uint32_t> faceSizes = checkLines(file.bytes(), path, where);
+  const ObjLines lines = checkLines(file.bytes(), path, where);
+  const std::vector<uint32_t>& faceSizes = lines.faceSizes;
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;
@@ -280,7 +378,7 @@ ObjData parse(const std::string& path, const std::string& where) {
     const std::string at = badIndexAt(file.bytes(), {attrib.vertices.size() / 3, attrib.texcoords.size() / 2, attrib.normals.size() / 3});
     fail(where, path, at.empty() ? "a face has an invalid vertex index" : at);
   }
-  ObjData data{attrib.vertices, attrib.normals, attrib.texcoords, {}, faceSizes, {}, {}};
+  ObjData data{attrib.vertices, attrib.normals, attrib.texcoords, {}, faceSizes, {}, {}, {}, {}, {}, {}};
   for (const tinyobj::material_t& m : materials) {
     data.diffuseMaps.push_back(m.diffuse_texname);
     noteIgnoredMaps(m, data.ignoredMaps);
@@ -299,8 +397,8 @@ ObjData parse(const std::string& path, const std::string& where) {
   for (uint32_t size : faceSizes) corners += size;
   if (faces != faceSizes.size() || corners != data.corners.size())
     fail(where, path, "tinyobjloader read the faces differently from the file's 'f' lines");
-  if (data.corners.empty()) fail(where, path, "no triangles (no 'f' lines)");
   checkIndices(data, file.bytes(), path, where);
+  addPointsAndLines(data, lines, path, where);
   return data;
 }
 
@@ -316,16 +414,11 @@ void checkPositions(const ObjData& data, const std::string& path, const std::str
   }
 }
 
-glm::dvec3 at(const std::vector<float>& xyz, int index) {
-  return {xyz[3 * size_t(index)], xyz[3 * size_t(index) + 1], xyz[3 * size_t(index) + 2]};
-}
-
-// Usable file normals: every corner has one, finite and not zero.
+// Usable file normals: every face corner has one, finite and not zero. (Points and lines have
+// their own: none, or in a point cloud the usable ones of its 'vn' lines.)
 bool hasFileNormals(const ObjData& data) {
   for (const tinyobj::index_t& c : data.corners) {
-    if (c.normal_index < 0) return false;
-    glm::dvec3 n = at(data.normals, c.normal_index);
-    if (!std::isfinite(glm::length(n)) || glm::length(n) == 0.0) return false;
+    if (!usableNormal(data.normals, c.normal_index)) return false;
   }
   return true;
 }
@@ -370,8 +463,9 @@ bool faceHasTexcoords(const ObjData& data, size_t k, uint32_t size) {
 }
 
 // Vertices are the distinct corners (position, normal, and where the face samples a texture its
-// texture coordinate and texture) the faces use, in the order of first use. OBJ's v runs up the
-// image, phongvk's down (texture_image.h): v becomes 1 - v.
+// texture coordinate and texture) the faces, points and lines use, in the order of first use; with
+// file normals, a point's or a line's vertex without one has (0, 0, 0). OBJ's v runs up the image,
+// phongvk's down (texture_image.h): v becomes 1 - v.
 Mesh buildMesh(const ObjData& data, bool fileNormals, const std::string& path, const std::string& where) {
   Mesh mesh;
   const std::vector<uint32_t> textureOf = loadDiffuseMaps(data, mesh, path, where);
@@ -384,7 +478,7 @@ Mesh buildMesh(const ObjData& data, bool fileNormals, const std::string& path, c
                                                uint32_t(mesh.positions.size()));
     if (inserted) {
       mesh.positions.push_back(glm::vec3(at(data.positions, c.vertex_index)));
-      if (fileNormals) mesh.normals.push_back(glm::vec3(at(data.normals, normal)));
+      if (fileNormals) mesh.normals.push_back(normal < 0 ? glm::vec3(0.0f) : glm::vec3(at(data.normals, normal)));
       if (textured) {
         const bool has = texture != gpu::TEXTURE_NONE;
         const double u = has ? data.texcoords[2 * size_t(texcoord)] : 0.0, v = has ? data.texcoords[2 * size_t(texcoord) + 1] : 1.0;
@@ -405,6 +499,13 @@ Mesh buildMesh(const ObjData& data, bool fileNormals, const std::string& path, c
     for (unsigned int c = 0; c < size; ++c) face.push_back(vertex(data.corners[k + c], texture));
     k += size;
     triangulatePolygon(mesh.positions, face, mesh.triangles);
+  }
+  const auto untextured = [&](const tinyobj::index_t& c) { return vertex(c, gpu::TEXTURE_NONE); };
+  for (const tinyobj::index_t& c : data.pointCorners) mesh.points.push_back(untextured(c));
+  size_t first = 0;  // each polyline: its consecutive pairs
+  for (uint32_t size : data.lineSizes) {
+    for (uint32_t i = 0; i + 1 < size; ++i) mesh.lines.push_back({untextured(data.lineCorners[first + i]), untextured(data.lineCorners[first + i + 1])});
+    first += size;
   }
   return mesh;
 }

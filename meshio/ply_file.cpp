@@ -300,6 +300,11 @@ VertexLayout vertexLayout(const Element& vertex) {
   int* slots[9] = {&layout.position[0], &layout.position[1], &layout.position[2], &layout.normal[0], &layout.normal[1],
                    &layout.normal[2],   &layout.color[0],    &layout.color[1],    &layout.color[2]};
   for (int k = 0; k < 9; ++k) *slots[k] = propertyIndex(vertex, kNames[k]);
+  // Colours by the other names scanners write (diffuse_red, ...), where red, green, blue are not all there.
+  static const char* kDiffuseNames[3] = {"diffuse_red", "diffuse_green", "diffuse_blue"};
+  if (layout.color[0] < 0 || layout.color[1] < 0 || layout.color[2] < 0) {
+    for (int k = 0; k < 3; ++k) layout.color[k] = propertyIndex(vertex, kDiffuseNames[k]);
+  }
   // Texture coordinates, by the names exporters use: the first pair present.
   static const char* kUvNames[4][2] = {{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
   for (const auto& names : kUvNames) {
@@ -333,14 +338,21 @@ class Reader {
         readVertices(element, cursor);
       } else if (element.name == "face") {
         readFaces(element, cursor);
+      } else if (element.name == "edge") {
+        readEdges(element, cursor);
       } else {
         skipElement(element, cursor);
       }
     }
     if (!vertex) fail(where_, path_, "no 'vertex' element");
+    if (part_.triangles.empty() && part_.points.empty() && part_.lines.empty()) {  // a point cloud
+      part_.points.resize(part_.positions.size());
+      for (size_t v = 0; v < part_.points.size(); ++v) part_.points[v] = uint32_t(v);
+    }
     std::vector<MeshPart> parts(1);
     parts[0] = std::move(part_);
-    if (!usableNormals_) parts[0].normals.clear();
+    // A zero normal is unusable where a triangle may use it, and (0, 0, 0), unlit, on points and lines alone.
+    if (badNormal_ || (zeroNormal_ && !parts[0].triangles.empty())) parts[0].normals.clear();
     Mesh mesh = joinParts(parts, false, where_ + ": " + path_);
     if (faceTexcoords_)
       mesh.notice = path_ + ": its per-face texture coordinates (texcoord lists) are not read (phongvk reads u and v per vertex)";
@@ -382,13 +394,14 @@ class Reader {
       }
       if (uvs) part_.uvs.push_back(glm::vec2(float(row[size_t(layout.uv[0])]), float(1.0 - row[size_t(layout.uv[1])])));
     }
-    usableNormals_ = normals && usableNormals_;
+    badNormal_ = badNormal_ || !normals;
   }
 
   void addNormal(const glm::dvec3& n) {
     const double length = glm::length(n);
-    if (!std::isfinite(length) || length == 0.0) usableNormals_ = false;
-    part_.normals.push_back(glm::vec3(n));
+    badNormal_ = badNormal_ || !std::isfinite(length);
+    zeroNormal_ = zeroNormal_ || length == 0.0;
+    part_.normals.push_back(length == 0.0 ? glm::vec3(0.0f) : glm::vec3(n));
   }
 
   double readProperty(const Property& p, Rows& cursor) {
@@ -419,8 +432,36 @@ class Reader {
                                     ", but there are " + std::to_string(vertices) + " vertices");
           corners_.push_back(uint32_t(index));
         }
-        if (corners_.size() >= 3) triangulatePolygon(part_.positions, corners_, part_.triangles);  // 1 or 2: a point, a line
+        if (corners_.size() >= 3) triangulatePolygon(part_.positions, corners_, part_.triangles);
+        if (corners_.size() == 2) part_.lines.push_back({corners_[0], corners_[1]});
+        if (corners_.size() == 1) part_.points.push_back(corners_[0]);
       }
+    }
+  }
+
+  // The edge element's rows as lines: vertex1 to vertex2 (other properties read and passed over).
+  void readEdges(const Element& element, Rows& cursor) {
+    const int ends[2] = {propertyIndex(element, "vertex1"), propertyIndex(element, "vertex2")};
+    if (ends[0] < 0 || ends[1] < 0) fail(where_, path_, "the edge element has no vertex1 and vertex2");
+    for (int end : ends) {
+      if (!isInteger(element.properties[size_t(end)].type))
+        fail(where_, path_, "the edge element's " + element.properties[size_t(end)].name + " is not an integer");
+    }
+    reserveLarge(part_.lines, part_.lines.size() + size_t(std::min<uint64_t>(element.count, maxRows_)));
+    std::vector<double> row(element.properties.size());
+    const size_t vertices = part_.positions.size();
+    for (uint64_t e = 0; e < element.count; ++e) {
+      cursor.beginRow(element, e);
+      for (size_t p = 0; p < element.properties.size(); ++p) row[p] = readProperty(element.properties[p], cursor);
+      glm::uvec2 line;
+      for (int k = 0; k < 2; ++k) {
+        const double index = row[size_t(ends[k])];
+        if (!(index >= 0 && index < double(vertices)))
+          fail(where_, path_, "edge " + std::to_string(e) + " has vertex index " + formatNumber(index) + ", but there are " +
+                                  std::to_string(vertices) + " vertices");
+        line[k] = uint32_t(index);
+      }
+      part_.lines.push_back(line);
     }
   }
 
@@ -449,7 +490,8 @@ class Reader {
   const std::string& where_;
   MeshPart part_;
   std::vector<uint32_t> corners_;  // the face being read
-  bool usableNormals_ = true;
+  bool badNormal_ = false;   // a normal that is not finite, or no nx, ny, nz: none are used
+  bool zeroNormal_ = false;  // a normal of zero length
   bool faceTexcoords_ = false;  // MeshLab's per-face "texcoord" lists, which are not read
 };
 

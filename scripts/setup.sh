@@ -2,7 +2,7 @@
 # Installs what phongvk needs, from Debian 12 packages only. Run as root (or with sudo).
 #
 #   bash scripts/setup.sh          # to build the library, the phongvk command, the Python package and
-#                                  # the benchmark, and to render (26 packages)
+#                                  # the benchmark, and to render (27 packages)
 #   bash scripts/setup.sh --test   # and everything the tests and the full CI need: scripts/test.sh,
 #                                  # scripts/ci.sh (fuzz.sh, sanitize.sh) (20 more)
 #
@@ -31,6 +31,7 @@ packages=(
   libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev libdeflate-dev
   libpng-dev libjpeg62-turbo-dev  # texture decoding (image/png_decode.cpp, image/jpeg_decode.cpp)
   libtinyobjloader-dev libtinygltf-dev  # OBJ and glTF import (scene/)
+  libdraco-dev  # glTF's KHR_draco_mesh_compression (meshio/gltf_draco.cpp)
   libvulkan-dev libvulkan-volk-dev glslang-tools spirv-tools  # Vulkan loader and headers, volk, shader compilers
   mesa-vulkan-drivers  # lavapipe: the GPU backend on a machine without a GPU
   python3 python3-dev pybind11-dev python3-numpy  # import phongvk (python/: built by default)

@@ -149,9 +149,9 @@ TEST(HostileGltf, IllegalFilesAreRefusedByName) {
   Gltf shortMatrix;
   shortMatrix.nodes = R"([{"mesh": 0, "matrix": [1, 0, 0]}])";
   EXPECT_EQ(gltfError(shortMatrix), "nodes[0].matrix has 3 numbers, not 16");
-  Gltf draco;
-  draco.top = R"("extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"], )";
-  EXPECT_EQ(gltfError(draco), "requires the extension KHR_draco_mesh_compression, which phongvk does not implement");
+  Gltf meshopt;
+  meshopt.top = R"("extensionsUsed": ["EXT_meshopt_compression"], "extensionsRequired": ["EXT_meshopt_compression"], )";
+  EXPECT_EQ(gltfError(meshopt), "requires the extension EXT_meshopt_compression, which phongvk does not implement");
   // A rotation written with a few digits is a unit quaternion still.
   Gltf rounded;
   rounded.nodes = R"([{"mesh": 0, "rotation": [0, 0, 0.7071, 0.7071]}])";
@@ -377,12 +377,12 @@ TEST(HostileCli, AnOutputNameTooLongExitsTwo) {
 // A model given alone names itself, not the scene phongvk made around it.
 TEST(HostileCli, AModelAloneIsNamedOnce) {
   const std::string dir = test::makeTempDir();
-  Gltf draco;
-  draco.top = R"("extensionsRequired": ["KHR_draco_mesh_compression"], )";
-  const std::string path = draco.write(dir);
+  Gltf meshopt;
+  meshopt.top = R"("extensionsRequired": ["EXT_meshopt_compression"], )";
+  const std::string path = meshopt.write(dir);
   const test::CommandResult run = test::runCli("render " + path + " --backend cpu -o " + dir + "/x.png");
   EXPECT_EQ(run.exitCode, 2) << run.output;
-  EXPECT_NE(run.output.find("error: " + path + ": requires the extension KHR_draco_mesh_compression, which phongvk does not implement\n"),
+  EXPECT_NE(run.output.find("error: " + path + ": requires the extension EXT_meshopt_compression, which phongvk does not implement\n"),
             std::string::npos)
       << run.output;
   EXPECT_EQ(run.output.find("objects[0]"), std::string::npos) << run.output;

@@ -73,7 +73,7 @@ void expectObjError(const std::string& text, const std::string& why) {
 }
 
 TEST(ObjMesh, BadFilesNameTheJsonPathAndTheFile) {
-  expectObjError("this is not\nan OBJ file \x01\x02\n", "no triangles (no 'f' lines)");
+  expectObjError("this is not\nan OBJ file \x01\x02\n", "nothing to draw (no 'f', 'l', 'p' or 'v' lines)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
                  "line 4: face corner '9': vertex index 9 is out of range (the file has 3 vertices)");
   expectObjError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -7\n",
