@@ -144,6 +144,10 @@ class GraphicsBackend : public VulkanBackend {
 
  protected:
   void upload(const SceneData& data, uint32_t) override {
+    if (hasQuads(data)) {
+      throw SceneError("the graphics backend (the benchmark's baseline) draws triangles only: use the gpu or cpu "
+                       "backend for points and lines");
+    }
     const ContextLock lock(context_);
     renderer_.reset();
     renderer_.emplace(context_, data);

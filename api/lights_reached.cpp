@@ -2,6 +2,7 @@
 #include "api/lights_reached.h"
 
 #include "api/normals.h"
+#include "reference/render_reference.h"
 #include "shaders/shadow_rays.h"
 
 namespace phongvk {
@@ -15,7 +16,7 @@ std::vector<int32_t> lightsReached(const SceneData& data, const FrameInputs& in,
     const uint32_t triangle = uint32_t(sampleKeys[nearest[i]]) - data.triangleBase;
     const gpu::SurfacePoint s =
         sampleSurface(data, in, triangle, int(nearest[i] % sampleWidth), int(nearest[i] / sampleWidth));
-    const glm::uvec3 owners(data.triangles[triangle]);
+    const glm::uvec3 owners = cornerVertices(data, triangle);
     int32_t count = 0;
     for (const gpu::LightData& light : in.lights) {
       count += (light.flags & gpu::LIGHT_SHADOWS) == 0u || gpu::lightReaches(*in.shadows, light, s.P, owners);

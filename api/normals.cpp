@@ -26,9 +26,8 @@ vec3 toCameraAxes(vec3 n, const FrameData& frame) {
 }  // namespace
 
 SurfacePoint sampleSurface(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y) {
-  const glm::uvec4 tri = data.triangles[triangle];
-  const VertexIn &a = data.vertices[tri.x], &b = data.vertices[tri.y], &c = data.vertices[tri.z];
-  return pixelSurface(data, in, tri, projected(a, in), projected(b, in), projected(c, in), x, y);
+  const auto corners = recordShaded(data, in.frame, triangle, [&](uint32_t v) { return projected(data.vertices[v], in); });
+  return pixelSurface(data, in, triangle, corners, x, y);
 }
 
 glm::vec3 cameraNormal(const SceneData& data, const FrameInputs& in, uint32_t triangle, int x, int y) {

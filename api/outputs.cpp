@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 
 namespace phongvk {
 
@@ -50,8 +49,11 @@ RenderedFrame outputsFromKeys(RenderOutput&& out, int side, const SceneData& dat
   frame.normals = std::move(normals);
   frame.lights = std::move(lights);
   if (outputs.triangleIds) {
-    frame.triangleIds.resize(pixels);  // NO_TRIANGLE reads as -1
-    std::memcpy(frame.triangleIds.data(), visibility.triangle.data(), pixels * sizeof(int32_t));
+    frame.triangleIds.resize(pixels);  // a record as the primitive it draws; NO_TRIANGLE reads as -1
+    for (size_t i = 0; i < pixels; ++i) {
+      const uint32_t record = visibility.triangle[i];
+      frame.triangleIds[i] = record == NO_TRIANGLE ? -1 : int32_t(primitiveOf(data, record));
+    }
   }
   if (outputs.objectIds) {
     frame.objectIds.resize(pixels);

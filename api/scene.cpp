@@ -9,6 +9,7 @@
 #include "prepare/memory_estimate.h"
 #include "prepare/scene_data.h"
 #include "shaders/phong.h"
+#include "shaders/screen_quads.h"
 
 #include "scene/animate.h"
 #include "scene/camera.h"
@@ -333,11 +334,20 @@ SceneTriangles Scene::triangles() const {
     out.mesh.positions.insert(out.mesh.positions.end(), {float(world.x), float(world.y), float(world.z)});
     out.mesh.normals.insert(out.mesh.normals.end(), {v.normal.x, v.normal.y, v.normal.z});
   }
-  out.mesh.triangles.reserve(data.triangles.size() * 3);
-  out.objects.reserve(data.triangles.size());
-  for (const glm::uvec4& t : data.triangles) {
-    out.mesh.triangles.insert(out.mesh.triangles.end(), {int64_t(t.x), int64_t(t.y), int64_t(t.z)});
-    out.objects.push_back(int32_t(t.w));
+  out.mesh.triangles.reserve(size_t(data.quadBase) * 3);
+  out.objects.reserve(data.quadBase);
+  for (uint32_t id = 0; id < data.triangles.size(); ++id) {
+    const glm::uvec4& t = data.triangles[id];
+    if (!isQuadRecord(data, id)) {
+      out.mesh.triangles.insert(out.mesh.triangles.end(), {int64_t(t.x), int64_t(t.y), int64_t(t.z)});
+      out.objects.push_back(int32_t(t.w));
+    } else if ((t.z & 1u) == 0u && (t.z & gpu::QUAD_POINT) != 0u) {  // a quad's first half stands for it
+      out.mesh.points.push_back(int64_t(t.x));
+      out.pointObjects.push_back(int32_t(t.w));
+    } else if ((t.z & 1u) == 0u) {
+      out.mesh.lines.insert(out.mesh.lines.end(), {int64_t(t.x), int64_t(t.y)});
+      out.lineObjects.push_back(int32_t(t.w));
+    }
   }
   return out;
 }

@@ -25,6 +25,8 @@ TriangleMesh TriangleMesh::fromFile(const std::string& path, ModelUp up) {
 
 size_t TriangleMesh::vertexCount() const { return mesh_->positions.size(); }
 size_t TriangleMesh::triangleCount() const { return mesh_->triangles.size(); }
+size_t TriangleMesh::lineCount() const { return mesh_->lines.size(); }
+size_t TriangleMesh::pointCount() const { return mesh_->points.size(); }
 
 const std::shared_ptr<const Mesh>& TriangleMeshAccess::mesh(const TriangleMesh& mesh) { return mesh.mesh_; }
 

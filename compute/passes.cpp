@@ -65,6 +65,9 @@ std::vector<PipelineRequest> passRequests(const PassChoices& choices, const std:
   if (frame.projection != PROJECTION_PERSPECTIVE) {  // as the others, only where not the default
     for (PipelineRequest& r : requests) r.specs.push_back({SPEC_PROJECTION, frame.projection});
   }
+  if (choices.quads) {  // every pass that loads a record's corners or shades a vertex
+    for (PipelineRequest& r : requests) r.specs.push_back({SPEC_QUADS, 1u});
+  }
   return requests;
 }
 

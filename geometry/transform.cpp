@@ -29,7 +29,7 @@ glm::dvec3 transformPoint(const LinearTransform& t, glm::vec3 p) { return t.matr
 
 glm::vec3 transformNormal(const LinearTransform& t, glm::vec3 n) {
   const glm::dvec3 d = t.keepsDirections ? glm::dvec3(n) : t.normalMatrix * glm::dvec3(n);
-  return glm::vec3(glm::normalize(d));
+  return d == glm::dvec3(0.0) ? glm::vec3(0.0f) : glm::vec3(glm::normalize(d));  // no normal stays none
 }
 
 void transformPositions(Mesh& mesh, const LinearTransform& t, const std::string& where) {

@@ -7,7 +7,8 @@ namespace phongvk {
 
 bool seenOnlyFromBehind(const SceneData& data, const glm::dvec3& eye) {
   size_t back = 0;
-  for (const glm::uvec4& t : data.triangles) {
+  for (uint32_t id = 0; id < data.quadBase; ++id) {  // points and lines face every way
+    const glm::uvec4& t = data.triangles[id];
     const glm::dvec3 origin = data.objectOrigins[t.w];
     const gpu::ObjectData& object = data.objects[t.w];  // a posed object's vertices as the renderers turn them
     const glm::dvec3 p0 = origin + glm::dvec3(gpu::posedVertex(data.vertices[t.x], object).position);

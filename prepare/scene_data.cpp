@@ -4,6 +4,7 @@
 #include "base/number_text.h"
 #include "prepare/shadow_bvh.h"
 #include "shaders/phong.h"
+#include "shaders/screen_quads.h"
 #include "scene/object_mesh.h"
 
 #include <algorithm>
@@ -56,19 +57,46 @@ namespace {
 // allocated once at their final size: grown object by object, they were allocated about twice
 // over (fresh memory the kernel zero-fills page by page) and copied at each growth
 // (docs/PERFORMANCE.md, "Mesh loading"). Throws SceneError past 2^32 vertices.
-std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, size_t& triangles) {
+std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, size_t& records) {
   std::vector<ObjectMesh> meshes;
   meshes.reserve(scene.objects.size());
-  vertices = triangles = 0;
+  vertices = records = 0;
   for (const Object& object : scene.objects) {
     meshes.push_back(buildSceneObject(scene, object));
-    vertices += meshes.back().mesh.positions.size();
-    triangles += meshes.back().mesh.triangles.size();
+    const Mesh& mesh = meshes.back().mesh;
+    vertices += mesh.positions.size();
+    records += mesh.triangles.size() + 2 * (mesh.lines.size() + mesh.points.size());
     if (vertices > std::numeric_limits<uint32_t>::max()) {
       throw SceneError(object.jsonPath + ": the scene has more than 2^32 vertices");
     }
+    if (records >= std::numeric_limits<uint32_t>::max()) {  // a key's id is 32 bits, all ones for none
+      throw SceneError(object.jsonPath + ": the scene has more than 2^32 triangles and quads of points and lines");
+    }
   }
   return meshes;
+}
+
+// A point's or a line's quad width in 1/256 pixel (screen_quads.h), from the object's pixels
+// (checked to be in (0, QUAD_MAX_WIDTH] where the scene was read): at least 1.
+uint32_t quadWidthUnits(double pixels) { return std::max(uint32_t(std::lround(pixels * 256.0)), 1u); }
+
+// The quads of an object's lines and points (two records each, screen_quads.h), kept apart until
+// every object's triangles are in: the triangle array holds triangles, then lines, then points.
+struct QuadRecords {
+  std::vector<glm::uvec4> lines;
+  std::vector<glm::uvec4> points;
+};
+
+void appendQuads(QuadRecords& quads, const Mesh& mesh, const SceneSpec& scene, const Object& object, uint32_t base,
+                 uint32_t objectIndex) {
+  const uint32_t lineCode = quadWidthUnits(object.lineWidth.value_or(scene.lineWidth)) << gpu::QUAD_WIDTH_SHIFT;
+  const uint32_t pointCode = quadWidthUnits(object.pointSize.value_or(scene.pointSize)) << gpu::QUAD_WIDTH_SHIFT | gpu::QUAD_POINT;
+  for (const glm::uvec2& l : mesh.lines) {
+    for (uint32_t half = 0; half < 2; ++half) quads.lines.push_back({base + l.x, base + l.y, lineCode | half, objectIndex});
+  }
+  for (uint32_t p : mesh.points) {
+    for (uint32_t half = 0; half < 2; ++half) quads.points.push_back({base + p, base + p, pointCode | half, objectIndex});
+  }
 }
 
 // Texture `image`'s index in data.textures, its texels appended to the pool the first time (each
@@ -156,7 +184,7 @@ glm::dvec3 meanOrigin(const std::vector<glm::dvec3>& origins) {
 // The triangles that cast shadows (SceneData::shadowCasters), before a share keeps its own.
 void keepShadowCasters(SceneData& data, const SceneSpec& scene) {
   data.shadowed = true;
-  for (size_t i = 0; i < data.triangles.size(); ++i) {
+  for (size_t i = 0; i < data.quadStart; ++i) {  // points and lines cast none
     if (!scene.objects[data.triangles[i].w].castShadows) continue;
     data.shadowCasters.push_back(data.triangles[i]);
     data.shadowCasterIds.push_back(uint32_t(i));
@@ -204,6 +232,7 @@ void keepShare(SceneData& data, const SceneSpec& scene) {
   const uint64_t first = count * part / parts, end = count * (part + 1) / parts;
   data.triangles = std::vector<glm::uvec4>(data.triangles.begin() + first, data.triangles.begin() + end);
   data.triangleBase = uint32_t(first);
+  data.quadBase = uint32_t(std::clamp<uint64_t>(data.quadStart, first, end) - first);
 }
 
 }  // namespace
@@ -213,21 +242,26 @@ SceneData buildSceneData(const SceneSpec& scene) {
     throw SceneError((scene.path.empty() ? "" : scene.path + ": ") + "objects: scene has no objects");
   }
   SceneData data;
-  size_t vertices, triangles;
-  std::vector<ObjectMesh> meshes = buildMeshes(scene, vertices, triangles);
+  size_t vertices, records;
+  std::vector<ObjectMesh> meshes = buildMeshes(scene, vertices, records);
   reserveLarge(data.vertices, vertices);
-  reserveLarge(data.triangles, triangles);
+  reserveLarge(data.triangles, records);
   const bool textured = anyTexture(meshes, scene);
   if (textured) reserveLarge(data.uvs, vertices);
+  QuadRecords quads;
   for (size_t i = 0; i < meshes.size(); ++i) {
-    appendObject(data, meshes[i], static_cast<uint32_t>(i));
     const Object& object = scene.objects[i];
+    appendQuads(quads, meshes[i].mesh, scene, object, uint32_t(data.vertices.size()), uint32_t(i));
+    appendObject(data, meshes[i], static_cast<uint32_t>(i));
     if (textured) appendTexturing(data, meshes[i].mesh, scene.materials[size_t(object.material)], sceneWhere(scene, object));
     const std::string& notice = meshes[i].mesh.notice;
     if (!notice.empty() && std::find(data.notices.begin(), data.notices.end(), notice) == data.notices.end())
       data.notices.push_back(notice);
     meshes[i] = {};  // freed as soon as copied
   }
+  data.quadBase = data.quadStart = uint32_t(data.triangles.size());
+  data.triangles.insert(data.triangles.end(), quads.lines.begin(), quads.lines.end());
+  data.triangles.insert(data.triangles.end(), quads.points.begin(), quads.points.end());
   for (const Object& object : scene.objects) {
     if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, texture);
   }
@@ -386,7 +420,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
 namespace {
 
 bool sameObjectGeometry(const Object& a, const Object& b) {
-  return a.shape == b.shape && a.fileLights == b.fileLights && a.castShadows == b.castShadows && a.center == b.center && a.radius == b.radius && a.size == b.size &&
+  return a.shape == b.shape && a.fileLights == b.fileLights && a.castShadows == b.castShadows && a.pointSize == b.pointSize && a.lineWidth == b.lineWidth && a.center == b.center && a.radius == b.radius && a.size == b.size &&
          a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
          a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
          a.scale == b.scale && a.rotation == b.rotation && a.up == b.up && a.baseColors == b.baseColors &&
@@ -403,7 +437,8 @@ bool sameTextures(const SceneSpec& a, const SceneSpec& b) {
 }  // namespace
 
 bool sameGeometry(const SceneSpec& a, const SceneSpec& b) {
-  return sameTextures(a, b) && hasShadowedLights(a) == hasShadowedLights(b) && a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
+  return sameTextures(a, b) && hasShadowedLights(a) == hasShadowedLights(b) && a.pointSize == b.pointSize &&
+         a.lineWidth == b.lineWidth && a.sharePart == b.sharePart && a.shareParts == b.shareParts && std::equal(a.objects.begin(), a.objects.end(), b.objects.begin(), b.objects.end(), sameObjectGeometry);
 }
 
 bool lightingIsViewIndependent(const FrameInputs& in) {
@@ -442,6 +477,8 @@ FrameInputs makeFrame(const SceneData& data, const View& view) {
   f.eye = glm::vec3(view.eye - data.lightingOrigin);
   f.projection = projectionOf(view.orthographic);
   f.textureFilter = data.textureFilter;
+  f.quadBase = data.quadBase;
+  f.pixelScale = float(view.pixelScale);
 
   in.objects = data.objects;
   for (size_t i = 0; i < in.objects.size(); ++i) {

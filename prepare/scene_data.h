@@ -23,7 +23,13 @@ namespace phongvk {
 // GPU path; materials and lights may be refreshed per frame (refreshShading).
 struct SceneData {
   std::vector<gpu::VertexIn> vertices;      // local to their object's origin
-  std::vector<glm::uvec4> triangles;        // xyz: vertex indices; w: object index
+  // xyz: vertex indices; w: object index. Every object's triangles, then every object's lines,
+  // then its points, each of those two records: its quad's halves (shaders/screen_quads.h).
+  std::vector<glm::uvec4> triangles;
+  // The first quad half: in `triangles` (a share's own), and in the whole scene's records (none in
+  // arrays made by hand, as tests make them).
+  uint32_t quadBase = UINT32_MAX;
+  uint32_t quadStart = UINT32_MAX;
   std::vector<glm::dvec3> objectOrigins;    // world, double: offsets are taken in double
   // Each object's box about its origin, in its own axes (a posed object's before its pose).
   std::vector<std::array<glm::dvec3, 2>> objectBoxes;
@@ -102,6 +108,19 @@ uint64_t textureBytes(const SceneData& data);
 // Builds every object's mesh and flattens the scene. Throws SceneError, also for a scene without
 // objects.
 SceneData buildSceneData(const SceneSpec& scene);
+
+// Whether record `id` of data.triangles is a point's or a line's quad half.
+inline bool isQuadRecord(const SceneData& data, uint32_t id) { return id >= data.quadBase; }
+
+// Whether the scene (a share: its part) draws points or lines.
+inline bool hasQuads(const SceneData& data) { return data.quadBase < data.triangles.size(); }
+
+// A record of the whole scene (a key's id) as the primitive it draws: a triangle keeps its index, a
+// line or a point, whose quad is two records, is numbered after the triangles (lines first, then
+// points, objects in order): the ids the outputs show (docs/DESIGN.md "Points and lines").
+inline uint32_t primitiveOf(const SceneData& data, uint32_t record) {
+  return record < data.quadStart ? record : data.quadStart + (record - data.quadStart) / 2;
+}
 
 // True when a and b make the same meshes: the same objects, in order, with the same shapes,
 // geometry values, mesh files (unchanged on disk) or mesh arrays (the same added mesh), and culling. Materials, lights, the camera and

@@ -126,14 +126,22 @@ material, closed, normals, uvs, colors and object_id as in add_mesh.)")
             out["normals"] = ownedArray(std::move(t.mesh.normals), {vertices, 3});
             out["faces"] = ownedArray(std::move(t.mesh.triangles), {faces, 3});
             out["objects"] = ownedArray(std::move(t.objects), {faces});
+            const py::ssize_t lines = py::ssize_t(t.lineObjects.size()), points = py::ssize_t(t.pointObjects.size());
+            out["lines"] = ownedArray(std::move(t.mesh.lines), {lines, 2});
+            out["line_objects"] = ownedArray(std::move(t.lineObjects), {lines});
+            out["points"] = ownedArray(std::move(t.mesh.points), {points});
+            out["point_objects"] = ownedArray(std::move(t.pointObjects), {points});
             return out;
           },
-          "Every triangle as both renderers draw it (shapes tessellated, meshes subdivided, transforms and "
-          "poses applied), in world coordinates: a dict of numpy arrays, vertices (N, 3) float32, normals "
-          "(N, 3) float32 (unit), faces (M, 3) int64 (vertex indices) and objects (M,) int32 (each "
-          "triangle's object, its index in the scene's objects). For drawing the same geometry with another "
-          "renderer, or exporting it. Builds the meshes, as bounds does; SceneError for a scene whose meshes, "
-          "or the arrays of them, need more than the memory limit.")
+          "Every triangle, line and point as both renderers draw them (shapes tessellated, meshes subdivided, "
+          "transforms and poses applied), in world coordinates: a dict of numpy arrays, vertices (N, 3) float32, "
+          "normals (N, 3) float32 (unit; 0 for a point's or a line's vertex given none), faces (M, 3) int64 "
+          "(vertex indices) and objects (M,) int32 (each triangle's object, its index in the scene's objects), "
+          "lines (L, 2) int64 and line_objects (L,), points (P,) int64 and point_objects (P,). The "
+          "triangle_ids output numbers them in that order: triangle t is t, line k is M + k, point k is "
+          "M + L + k. For drawing the same geometry with another renderer, or exporting it. Builds the meshes, "
+          "as bounds does; SceneError for a scene whose meshes, or the arrays of them, need more than the "
+          "memory limit.")
       .def_property("camera", &Scene::camera, &Scene::setCamera,
                     "The camera (a phongvk.Camera); assigning one checks it like a scene file's \"camera\".")
       .def_property("lights", &Scene::lights, &Scene::setLights,

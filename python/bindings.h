@@ -120,11 +120,13 @@ std::vector<uint8_t> colorRows(const py::object& colors, py::ssize_t vertices);
 // bottom; phongvk's from the top, so v becomes 1 - v).
 void visualArrays(const py::object& object, MeshArrays& mesh, bool uvsGiven, bool colorsGiven);
 
-// The arrays of a mesh: vertices and faces, or (faces None) one object with .vertices and .faces
+// The arrays of a mesh: vertices with faces, lines (N, 2) and points (N,) where given (vertices
+// alone: a point cloud), or (faces None and vertices no array) one object with .vertices and .faces
 // arrays (a trimesh.Trimesh, say, whose visual's vertex colours and uvs come too); texture
 // coordinates and vertex colours if given.
 MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const py::object& normals,
-                      const py::object& uvs = py::none(), const py::object& colors = py::none());
+                      const py::object& uvs = py::none(), const py::object& colors = py::none(),
+                      const py::object& lines = py::none(), const py::object& points = py::none());
 
 // A (4, 4) array (or rows of 4 numbers) as a row-major Matrix4; None is the identity.
 Matrix4 matrix4(const py::object& value, const char* name);

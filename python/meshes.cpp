@@ -57,22 +57,43 @@ void visualArrays(const py::object& object, MeshArrays& mesh, bool uvsGiven, boo
   }
 }
 
+// Lines (N, 2) or points (N,) (columns 1): integer vertex indices, flattened.
+std::vector<int64_t> indexRows(const py::object& value, const char* name, py::ssize_t columns) {
+  const std::string shape = columns == 1 ? "(N,)" : "(N, " + std::to_string(columns) + ")";
+  const py::array a = numberArray(value, name, ("an integer array of shape " + shape).c_str());
+  const char kind = a.dtype().kind();
+  if (kind != 'i' && kind != 'u') {
+    throw py::value_error(std::string(name) + ": expected an integer array of shape " + shape + ", got dtype " +
+                          std::string(py::str(a.dtype())));
+  }
+  if (columns == 1 ? a.ndim() != 1 : (a.ndim() != 2 || a.shape(1) != columns)) {
+    throw py::value_error(std::string(name) + ": expected shape " + shape + ", got " + shapeText(a));
+  }
+  return valuesOf<int64_t>(a, name);
+}
+
+// Whether `value` is one mesh object with .vertices and .faces (a trimesh.Trimesh), not arrays.
+bool isMeshObject(const py::object& value) { return py::hasattr(value, "vertices") && py::hasattr(value, "faces"); }
+
 MeshArrays meshArrays(const py::object& vertices, const py::object& faces, const py::object& normals,
-                      const py::object& uvs, const py::object& colors) {
-  if (faces.is_none()) {
-    if (!py::hasattr(vertices, "vertices") || !py::hasattr(vertices, "faces")) {
-      throw py::type_error("add_mesh: expected vertices and faces, a phongvk.Mesh, or one object with .vertices "
-                           "and .faces arrays (a trimesh.Trimesh, for one), got " +
-                           std::string(py::str(py::type::of(vertices).attr("__name__"))));
-    }
+                      const py::object& uvs, const py::object& colors, const py::object& lines, const py::object& points) {
+  if (faces.is_none() && isMeshObject(vertices)) {
     MeshArrays mesh = meshArrays(vertices.attr("vertices"), vertices.attr("faces"), normals, uvs, colors);
     visualArrays(vertices, mesh, !uvs.is_none(), !colors.is_none());
     return mesh;
   }
+  if (faces.is_none() && lines.is_none() && points.is_none() && !py::isinstance<py::array>(vertices) &&
+      !py::isinstance<py::sequence>(vertices)) {
+    throw py::type_error("add_mesh: expected vertices and faces, a phongvk.Mesh, or one object with .vertices "
+                         "and .faces arrays (a trimesh.Trimesh, for one), got " +
+                         std::string(py::str(py::type::of(vertices).attr("__name__"))));
+  }
   const py::array vertexArray = asArray(vertices, "vertices", true);
   MeshArrays mesh;
   mesh.positions = rowsOf3<float>(vertexArray, "vertices", 'f');
-  mesh.triangles = rowsOf3<int64_t>(asArray(faces, "faces", false), "faces", 'i');
+  if (!faces.is_none()) mesh.triangles = rowsOf3<int64_t>(asArray(faces, "faces", false), "faces", 'i');
+  if (!lines.is_none()) mesh.lines = indexRows(lines, "lines", 2);
+  if (!points.is_none()) mesh.points = indexRows(points, "points", 1);
   if (!normals.is_none()) {
     const py::array normalArray = asArray(normals, "normals", true);
     mesh.normals = rowsOf3<float>(normalArray, "normals", 'f');

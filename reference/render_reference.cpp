@@ -29,6 +29,7 @@ std::vector<ShadedVertex> shadeVertices(const SceneData& data, const FrameInputs
       if (in.shadows) lit = shadowedTerm(*in.shadows, light, lit, P, vertexOwners(uint32_t(i)));
       color += lit;
     }
+    if (isUnlit(v.normal)) color = m.color;  // a point's or a line's vertex given no normal
     shaded[i].hpos = vec4(toHomogeneous(v.position, object.viewOffset, in.frame), 1.0f);
     shaded[i].color = vec4(color, 1.0f);
   }
@@ -39,11 +40,10 @@ std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedV
                                 const FrameData& frame) {
   std::vector<uint64_t> keys(static_cast<size_t>(frame.width) * frame.height, KEY_CLEAR);
   for (uint32_t id = 0; id < data.triangles.size(); ++id) {
-    const glm::uvec4 tri = data.triangles[id];
-    const bool cullBack = (data.objects[tri.w].flags & OBJECT_CULL_BACK) != 0;
+    const bool cullBack = !isQuadRecord(data, id) && (data.objects[data.triangles[id].w].flags & OBJECT_CULL_BACK) != 0;
+    const auto corners = recordShaded(data, frame, id, [&](uint32_t v) { return shaded[v]; });
     TriangleSetup t;
-    if (!setupTriangle(vec3(shaded[tri.x].hpos), vec3(shaded[tri.y].hpos), vec3(shaded[tri.z].hpos),
-                       cullBack, id, frame, t)) {
+    if (!setupTriangle(vec3(corners[0].hpos), vec3(corners[1].hpos), vec3(corners[2].hpos), cullBack, id, frame, t)) {
       continue;
     }
     for (int k = 0; k + 2 < t.count; ++k) {
@@ -62,29 +62,33 @@ std::vector<uint64_t> rasterize(const SceneData& data, const std::vector<ShadedV
 
 namespace {
 
-// The barycentrics of pixel (x, y) in the triangle with shaded vertices s0, s1, s2.
-vec2 pixelBarycentrics(const FrameData& frame, const ShadedVertex& s0, const ShadedVertex& s1, const ShadedVertex& s2,
-                       int x, int y) {
-  return barycentrics(gouraudTriangle(s0, s1, s2, frame.projection), pixelRay(x, y, frame.principal), frame.interpolation);
+// The barycentrics of pixel (x, y) in the triangle with shaded corners `s`.
+vec2 pixelBarycentrics(const FrameData& frame, const std::array<ShadedVertex, 3>& s, int x, int y) {
+  return barycentrics(gouraudTriangle(s[0], s[1], s[2], frame.projection), pixelRay(x, y, frame.principal),
+                      frame.interpolation);
 }
 
-// Flat or Phong shading's surface of triangle `tri` with the pixel's barycentrics `bary` (unused
+// Flat or Phong shading's surface of record `id` with the pixel's barycentrics `bary` (unused
 // with flat shading).
-SurfacePoint surfaceAt(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, vec2 bary) {
-  const ObjectData& object = in.objects[tri.w];
+SurfacePoint surfaceAt(const SceneData& data, const FrameInputs& in, uint32_t id, vec2 bary) {
+  const glm::uvec3 v = cornerVertices(data, id);
+  const ObjectData& object = in.objects[data.triangles[id].w];
   const MaterialData& m = in.materials[object.material];
-  const VertexIn a = posedVertex(data.vertices[tri.x], object), b = posedVertex(data.vertices[tri.y], object),
-                 c = posedVertex(data.vertices[tri.z], object);
-  if (in.frame.shading == SHADING_FLAT) return flatSurface(a, b, c, object.lightOffset, m);
+  const VertexIn a = posedVertex(data.vertices[v.x], object), b = posedVertex(data.vertices[v.y], object),
+                 c = posedVertex(data.vertices[v.z], object);
+  if (in.frame.shading == SHADING_FLAT) {
+    return isQuadRecord(data, id) ? flatQuadSurface(a, b, object.lightOffset, m) : flatSurface(a, b, c, object.lightOffset, m);
+  }
   return phongSurface(a, b, c, object.lightOffset, m, bary);
 }
 
-// The texel triangle `tri` shows where its barycentrics are `bary` (texture.h): white in a scene
+// The texel record `id` shows where its barycentrics are `bary` (texture.h): white in a scene
 // without textures and where neither its material nor its mesh has one.
-uint32_t pixelTexel(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, vec2 bary) {
+uint32_t pixelTexel(const SceneData& data, const FrameInputs& in, uint32_t id, vec2 bary) {
   if (data.uvs.empty()) return VERTEX_WHITE;
-  const VertexUv &a = data.uvs[tri.x], &b = data.uvs[tri.y], &c = data.uvs[tri.z];
-  const uint32_t texture = textureOf(in.materials[in.objects[tri.w].material], a);
+  const glm::uvec3 v = cornerVertices(data, id);
+  const VertexUv &a = data.uvs[v.x], &b = data.uvs[v.y], &c = data.uvs[v.z];
+  const uint32_t texture = textureOf(in.materials[in.objects[data.triangles[id].w].material], a);
   if (texture == TEXTURE_NONE) return VERTEX_WHITE;
   const TextureTaps k = textureTaps(data.textures[texture], interpolateUv(a.uv, b.uv, c.uv, bary), in.frame.textureFilter);
   return blendTaps(pooledTexel(data, texture, k.i00), pooledTexel(data, texture, k.i10), pooledTexel(data, texture, k.i01),
@@ -93,37 +97,34 @@ uint32_t pixelTexel(const SceneData& data, const FrameInputs& in, glm::uvec4 tri
 
 // Flat or Phong shading, or any shading in a scene with textures: triangle `tri`'s colour at pixel
 // (x, y), Gouraud's interpolated or its surface lit with the frame's lights, times its texel.
-uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
+uint32_t litPixel(const SceneData& data, const FrameInputs& in, const std::array<ShadedVertex, 3>& corners,
                   uint32_t id, int x, int y) {
-  const glm::uvec4 tri = data.triangles[id];
   const FrameData& frame = in.frame;
   const bool textured = !data.uvs.empty();
-  const vec2 bary = textured || frame.shading != SHADING_FLAT
-                        ? pixelBarycentrics(frame, shaded[tri.x], shaded[tri.y], shaded[tri.z], x, y)
-                        : vec2(0.0f);
-  const uint32_t texel = pixelTexel(data, in, tri, bary);
+  const vec2 bary = textured || frame.shading != SHADING_FLAT ? pixelBarycentrics(frame, corners, x, y) : vec2(0.0f);
+  const uint32_t texel = pixelTexel(data, in, id, bary);
   if (frame.shading == SHADING_GOURAUD) {
-    const GouraudTriangle g = gouraudTriangle(shaded[tri.x], shaded[tri.y], shaded[tri.z], frame.projection);
+    const GouraudTriangle g = gouraudTriangle(corners[0], corners[1], corners[2], frame.projection);
     return packColor(texturedColor(interpolateColorAt(g, bary), texel));
   }
-  SurfacePoint s = surfaceAt(data, in, tri, bary);
+  SurfacePoint s = surfaceAt(data, in, id, bary);
   if (textured) s.m.color = texturedColor(s.m.color, texel);
   const vec3 V = viewVector(s.P, frame);
   vec3 color = phongAmbient(s.m, frame.ambient);
   for (const LightData& light : in.lights) {
     vec3 lit = phongLightModel(s.P, s.N, V, s.m, light, frame.specular == SPECULAR_BLINN);
-    if (in.shadows) lit = shadowedTerm(*in.shadows, light, lit, s.P, glm::uvec3(tri));
+    if (in.shadows) lit = shadowedTerm(*in.shadows, light, lit, s.P, cornerVertices(data, id));
     color += lit;
   }
-  return packColor(color);
+  return packColor(isQuadRecord(data, id) && isUnlit(s.N) ? s.m.color : color);
 }
 
 }  // namespace
 
-SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, glm::uvec4 tri, const ShadedVertex& s0,
-                          const ShadedVertex& s1, const ShadedVertex& s2, int x, int y) {
+SurfacePoint pixelSurface(const SceneData& data, const FrameInputs& in, uint32_t id,
+                          const std::array<ShadedVertex, 3>& corners, int x, int y) {
   const bool flat = in.frame.shading == SHADING_FLAT;  // the face's surface: no barycentrics
-  return surfaceAt(data, in, tri, flat ? vec2(0.0f) : pixelBarycentrics(in.frame, s0, s1, s2, x, y));
+  return surfaceAt(data, in, id, flat ? vec2(0.0f) : pixelBarycentrics(in.frame, corners, x, y));
 }
 
 Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<ShadedVertex>& shaded,
@@ -139,10 +140,10 @@ Image resolve(const SceneData& data, const FrameInputs& in, const std::vector<Sh
         continue;
       }
       const uint32_t id = static_cast<uint32_t>(keys[i]);
-      const glm::uvec4 tri = data.triangles[id];
+      const auto corners = recordShaded(data, frame, id, [&](uint32_t v) { return shaded[v]; });
       packed[i] = frame.shading == SHADING_GOURAUD && data.uvs.empty()
-                      ? resolvePixel(shaded[tri.x], shaded[tri.y], shaded[tri.z], int(x), int(y), frame, frame.interpolation)
-                      : litPixel(data, in, shaded, id, int(x), int(y));
+                      ? resolvePixel(corners[0], corners[1], corners[2], int(x), int(y), frame, frame.interpolation)
+                      : litPixel(data, in, corners, id, int(x), int(y));
     }
   }
   return imageFromPacked(packed, int(frame.width), int(frame.height));

@@ -62,6 +62,7 @@ View supersampled(View view, int side) {
   view.height *= side;
   view.focal *= double(side);
   view.principal *= double(side);
+  view.pixelScale *= side;
   return view;
 }
 

@@ -20,6 +20,7 @@ struct View {
   double nearPlane;
   double farPlane;
   bool orthographic;     // pixel (x, y) looks along forward from eye + its offset from the principal point / focal
+  int pixelScale = 1;    // pixels per pixel of the image: the sample grid's side (supersampled)
 };
 
 // The largest image either side may be; the loader and the CLI both enforce it.

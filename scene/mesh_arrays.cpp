@@ -47,8 +47,8 @@ void checkCounts(const MeshArrays& a) {
   if (a.positions.size() % 3 != 0 || a.triangles.size() % 3 != 0 || a.normals.size() % 3 != 0) {
     throw ArgumentError("vertices, faces and normals hold 3 values a row");
   }
+  if (a.lines.size() % 2 != 0) throw ArgumentError("lines hold 2 vertex indices a row");
   if (a.positions.empty()) throw ArgumentError("vertices: the mesh has no vertices");
-  if (a.triangles.empty()) throw ArgumentError("faces: the mesh has no faces");
   if (!a.normals.empty() && a.normals.size() != a.positions.size()) {
     throw ArgumentError("normals: expected one row per vertex (" + std::to_string(a.positions.size() / 3) +
                                 "), got " + std::to_string(a.normals.size() / 3));
@@ -66,12 +66,22 @@ void checkPositions(const std::vector<float>& p) {
   }
 }
 
-void checkIndices(const std::vector<int64_t>& t, size_t vertices) {
+// The indices of `array` (rows of `perRow`), each of the vertices.
+void checkIndices(const char* array, const std::vector<int64_t>& t, size_t perRow, size_t vertices) {
   for (size_t i = 0; i < t.size(); ++i) {
     if (t[i] < 0 || uint64_t(t[i]) >= vertices) {
-      failRow("faces", i / 3, "has index " + std::to_string(t[i]) + ", but there are " + std::to_string(vertices) +
-                                  " vertices");
+      failRow(array, i / perRow, "has index " + std::to_string(t[i]) + ", but there are " + std::to_string(vertices) +
+                                     " vertices");
     }
+  }
+}
+
+// The mesh's points and lines; with no faces, lines or points, every vertex a point.
+void addPointsAndLines(const MeshArrays& a, Mesh& mesh) {
+  for (int64_t p : a.points) mesh.points.push_back(uint32_t(p));
+  for (size_t k = 0; k < a.lines.size(); k += 2) mesh.lines.push_back({uint32_t(a.lines[k]), uint32_t(a.lines[k + 1])});
+  if (a.triangles.empty() && a.lines.empty() && a.points.empty()) {
+    for (uint32_t v = 0; v < mesh.positions.size(); ++v) mesh.points.push_back(v);
   }
 }
 
@@ -91,7 +101,9 @@ Mesh meshFromArrays(const MeshArrays& a) {
   checkCounts(a);
   checkPositions(a.positions);
   const size_t vertices = a.positions.size() / 3;
-  checkIndices(a.triangles, vertices);
+  checkIndices("faces", a.triangles, 3, vertices);
+  checkIndices("lines", a.lines, 2, vertices);
+  checkIndices("points", a.points, 1, vertices);
   checkUvs(a.uvs, vertices);
   checkColors(a.colors, vertices);
   Mesh mesh;
@@ -115,7 +127,10 @@ Mesh meshFromArrays(const MeshArrays& a) {
     if (glm::cross(p1 - p0, p2 - p0) == glm::dvec3(0.0)) continue;  // zero area: draws nothing, as from a file
     mesh.triangles.push_back(t);
   }
-  if (mesh.triangles.empty()) throw ArgumentError("faces: every triangle is degenerate (zero area)");
+  addPointsAndLines(a, mesh);
+  if (mesh.triangles.empty() && mesh.lines.empty() && mesh.points.empty()) {
+    throw ArgumentError("faces: every triangle is degenerate (zero area)");
+  }
   if (mesh.normals.empty()) computeVertexNormals(mesh);
   return mesh;
 }
@@ -180,6 +195,27 @@ double index(const Node& node) {
 
 // Faces: vertex indices (meshFromArrays checks their range).
 std::vector<int64_t> indexRows(const Node& node) { return rowsOf3<int64_t>(node, index); }
+
+// Lines: rows [a, b] of vertex indices, flattened.
+std::vector<int64_t> pairRows(const Node& node) {
+  requireArray(node);
+  std::vector<int64_t> values;
+  for (size_t i = 0; i < node.json().size(); ++i) {
+    const Node row = node.element(i);
+    requireArray(row);
+    if (row.json().size() != 2) row.fail("must be [a, b], two vertex indices, got " + std::to_string(row.json().size()));
+    for (size_t c = 0; c < 2; ++c) values.push_back(int64_t(index(row.element(c))));
+  }
+  return values;
+}
+
+// Points: vertex indices.
+std::vector<int64_t> indexList(const Node& node) {
+  requireArray(node);
+  std::vector<int64_t> values;
+  for (size_t i = 0; i < node.json().size(); ++i) values.push_back(int64_t(index(node.element(i))));
+  return values;
+}
 
 // One [r, g, b, a] row of integers 0..255 per vertex, as RGBA8 (red in the low byte).
 std::vector<uint32_t> colorRows(const Node& node, size_t vertices) {
@@ -262,7 +298,9 @@ void readMeshTextures(const Node& object, const std::string& baseDir, Mesh& mesh
 std::shared_ptr<const Mesh> readMeshArrays(const Node& object, const std::string& baseDir) {
   MeshArrays arrays;
   arrays.positions = floatRows(object.require("vertices"));
-  arrays.triangles = indexRows(object.require("faces"));
+  if (auto faces = object.find("faces")) arrays.triangles = indexRows(*faces);
+  if (auto lines = object.find("lines")) arrays.lines = pairRows(*lines);
+  if (auto points = object.find("point_indices")) arrays.points = indexList(*points);
   if (auto normals = object.find("normals")) arrays.normals = floatRows(*normals);
   if (auto uvs = object.find("uvs")) arrays.uvs = uvRows(*uvs);
   Mesh mesh;
@@ -270,7 +308,8 @@ std::shared_ptr<const Mesh> readMeshArrays(const Node& object, const std::string
     mesh = meshFromArrays(arrays);
   } catch (const ArgumentError& error) {
     // "faces: row 2 has index 9, ..." becomes "objects[0].faces: row 2 has index 9, ...".
-    const std::string message = error.what();
+    std::string message = error.what();
+    if (message.rfind("points: ", 0) == 0) message.replace(0, 6, "point_indices");  // the file's name for them
     const size_t colon = message.find(": ");
     if (colon == std::string::npos) object.fail(message);
     object.failAt(message.substr(0, colon), message.substr(colon + 2));

@@ -5,6 +5,8 @@
 
 #include "scene/animate.h"
 #include "scene/scene_sections.h"
+#include "base/number_text.h"
+#include "shaders/screen_quads.h"
 
 #include <array>
 #include <chrono>
@@ -20,7 +22,7 @@ using namespace scenejson;
 // "animate" is read by SceneSequence (animate.h), which hands readScene each frame without it.
 const Keys kSceneKeys = {"camera",  "background", "ambient", "lights",
                          "materials", "objects",    "render",  "animate"};
-const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples", "texture_filter"};
+const Keys kRenderKeys = {"interpolation", "shading", "specular", "samples", "texture_filter", "point_size", "line_width"};
 
 // Samples per pixel: a square of 1 to 4 on a side.
 int samplesPerPixel(int samples, const Where& at) {
@@ -42,6 +44,8 @@ void readRender(const Node& node, SceneSpec& scene) {
   if (auto v = node.find("specular")) s.specular = choice<Specular>(*v, SPECULAR_NAMES);
   if (auto v = node.find("samples")) s.samples = integer(*v, 1, 16);
   if (auto v = node.find("texture_filter")) s.textureFilter = choice<TextureFilter>(*v, TEXTURE_FILTER_NAMES);
+  if (auto v = node.find("point_size")) s.pointSize = number(*v);
+  if (auto v = node.find("line_width")) s.lineWidth = number(*v);
   setRenderSettings(scene, s, node.where());
 }
 
@@ -55,11 +59,20 @@ void setRenderSettings(SceneSpec& scene, const RenderSettings& s, const Where& a
   scene.specular = choice(s.specular, SPECULAR_NAMES, at.at("specular"));
   scene.samples = samplesPerPixel(s.samples, at.at("samples"));
   scene.textureFilter = choice(s.textureFilter, TEXTURE_FILTER_NAMES, at.at("texture_filter"));
+  scene.pointSize = quadWidth(s.pointSize, at.at("point_size"));
+  scene.lineWidth = quadWidth(s.lineWidth, at.at("line_width"));
+}
+
+double quadWidth(double pixels, const Where& at) {
+  inRange(pixels, 0.0, double(gpu::QUAD_MAX_WIDTH), at);
+  if (!(pixels * 256.0 >= 0.5)) at.fail("must be at least 1/256 pixel, got " + formatNumber(pixels));
+  return pixels;
 }
 
 RenderSettings renderSettingsOf(const SceneSpec& scene) {
   const glm::vec3 b = scene.background;
-  return {scene.shading, scene.specular, scene.interpolation, scene.samples, {b.x, b.y, b.z}, scene.textureFilter};
+  return {scene.shading, scene.specular, scene.interpolation, scene.samples, {b.x, b.y, b.z}, scene.textureFilter,
+          scene.pointSize, scene.lineWidth};
 }
 
 SceneSpec readScene(const Node& root, const std::string& path, const std::string& baseDir, bool objectsLater) {

@@ -139,6 +139,8 @@ struct Object {
   bool baseColors = false;           // mesh: a glTF file's base colours apply (it names no material)
   bool fileLights = true;            // mesh: a glTF file's own lights (KHR_lights_punctual) light the scene
   bool castShadows = true;           // "cast_shadows": its triangles block shadow rays
+  std::optional<double> pointSize;   // "point_size": its points' side in pixels, over the scene's render.point_size
+  std::optional<double> lineWidth;   // "line_width": its lines' width in pixels, likewise
   glm::dvec3 translate = {0, 0, 0};  // mesh: the origin of its local frame
   // The local frame's linear map (object_mesh.h objectTransform): `up` first (meshes), then `scale` per axis
   // (non-zero; negative mirrors), then `rotation`.
@@ -172,6 +174,8 @@ struct SceneSpec {
   Specular specular = Specular::Phong;
   int samples = 1;  // per pixel: 1, 4, 9 or 16
   TextureFilter textureFilter = TextureFilter::Bilinear;  // render.texture_filter
+  double pointSize = 1;  // render.point_size: pixels (an object's own "point_size" wins)
+  double lineWidth = 1;  // render.line_width, likewise
   // Which contiguous share of the built triangles to keep (sharePart of shareParts, near-equal
   // ranges in file order), for one process of a scene split across several (phongvk render --mpi).
   // A mesh file given alone (model_scene.h): its messages name that file only, not the scene

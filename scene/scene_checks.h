@@ -50,6 +50,9 @@ using MaterialChoice = std::variant<std::monostate, std::string, MaterialValues>
 
 // `scene` with the render settings (its "render" section at `at`; scene.cpp).
 void setRenderSettings(SceneSpec& scene, const RenderSettings& settings, const Where& at);
+// A point's side or a line's width in pixels: above 0 (at least 1/256), at most QUAD_MAX_WIDTH.
+double quadWidth(double pixels, const Where& at);
+
 // The scene's render settings as a value (the background too).
 RenderSettings renderSettingsOf(const SceneSpec& scene);
 

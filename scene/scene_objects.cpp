@@ -5,6 +5,7 @@
 #include "geometry/transform.h"
 #include "meshio/mesh_file.h"
 #include "scene/object_pose.h"
+#include "scene/scene_checks.h"
 
 #include <cmath>
 #include <filesystem>
@@ -29,7 +30,8 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Cone, "cone", {"center", "radius", "height", "segments", "rings"}},
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
-    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "normals", "colors", "uvs", "textures", "texture_ids", "translate", "up", "pose", "file_lights"}},
+    {Shape::Mesh, "mesh", {"file", "vertices", "faces", "lines", "point_indices", "normals", "colors", "uvs", "textures",
+                           "texture_ids", "translate", "up", "pose", "file_lights", "point_size", "line_width"}},
 };
 
 
@@ -85,7 +87,7 @@ void resolveMeshFile(const Node& node, const std::string& baseDir, Object& objec
 void readMeshSource(const Node& node, const std::string& baseDir, Object& object) {
   const std::optional<Node> file = node.find("file");
   if (!node.find("vertices")) {
-    for (std::string_view key : {"faces", "normals", "colors", "uvs", "textures", "texture_ids"}) {
+    for (std::string_view key : {"faces", "lines", "point_indices", "normals", "colors", "uvs", "textures", "texture_ids"}) {
       if (node.find(key)) node.failAt(key, "needs 'vertices' (a mesh given inline)");
     }
     resolveMeshFile(node.require("file"), baseDir, object);
@@ -107,6 +109,8 @@ void readGeometry(const Node& node, Object& object, const std::string& baseDir) 
   if (auto segments = node.find("segments")) object.segments = integer(*segments, 3, 4096);
   if (auto rings = node.find("rings")) object.rings = integer(*rings, 1, 4096);
   if (auto translate = node.find("translate")) object.translate = point(*translate);
+  if (auto size = node.find("point_size")) object.pointSize = quadWidth(number(*size), size->where());
+  if (auto width = node.find("line_width")) object.lineWidth = quadWidth(number(*width), width->where());
   if (object.shape == Shape::Polyhedron) object.points = readPoints(node.require("points"));
   if (object.shape == Shape::Mesh) readMeshSource(node, baseDir, object);
 }

@@ -134,7 +134,12 @@ void writeArrays(const Mesh& mesh, Json& json) {
   for (const glm::vec3& n : mesh.normals) normals.push_back(vec3Json(n));
   for (uint32_t c : mesh.colors) colors.push_back(Json::array({c & 0xFF, (c >> 8) & 0xFF, (c >> 16) & 0xFF, c >> 24}));
   json["vertices"] = std::move(vertices);
-  json["faces"] = std::move(faces);
+  if (!mesh.triangles.empty()) json["faces"] = std::move(faces);
+  Json lines = Json::array(), points = Json::array();
+  for (const glm::uvec2& l : mesh.lines) lines.push_back(Json::array({l.x, l.y}));
+  for (uint32_t p : mesh.points) points.push_back(p);
+  if (!mesh.lines.empty()) json["lines"] = std::move(lines);
+  if (!mesh.points.empty()) json["point_indices"] = std::move(points);
   json["normals"] = std::move(normals);
   if (!mesh.colors.empty()) json["colors"] = std::move(colors);
   Json uvs = Json::array();
@@ -162,6 +167,8 @@ void writeGeometry(const Object& object, Json& json) {
   }
   json["translate"] = vec3Json(object.translate);
   json["up"] = object.up == UpAxis::Y ? "y" : "z";
+  if (object.pointSize) json["point_size"] = *object.pointSize;
+  if (object.lineWidth) json["line_width"] = *object.lineWidth;
 }
 
 Json objectJson(const SceneSpec& scene, const Object& object) {
@@ -195,7 +202,9 @@ Json renderJson(const SceneSpec& scene) {
           {"shading", SHADING_NAMES[size_t(scene.shading)]},
           {"specular", SPECULAR_NAMES[size_t(scene.specular)]},
           {"samples", scene.samples},
-          {"texture_filter", TEXTURE_FILTER_NAMES[size_t(scene.textureFilter)]}};
+          {"texture_filter", TEXTURE_FILTER_NAMES[size_t(scene.textureFilter)]},
+          {"point_size", scene.pointSize},
+          {"line_width", scene.lineWidth}};
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "gpu_layout.h"
 #include "gouraud.h"
 #include "large_triangles.h"
+#include "screen_quads.h"
 
 layout(std140, binding = BINDING_FRAME) uniform Frame { FrameData frameBlock; };
 // The frame and the pass control as the passes read them: private copies every main makes first
@@ -21,6 +22,9 @@ FrameData frame;
 // field: a constant, so a perspective pass compiles to the code it had before orthographic
 // cameras existed (the shared maths asks frame.projection in every pixel's depth).
 layout(constant_id = SPEC_PROJECTION) const uint PROJECTION = PROJECTION_PERSPECTIVE;
+// The scene has points or lines (screen_quads.h): the records from frame.quadBase on are their quads'
+// halves. Without any, no quad code at all (on lavapipe code a pass merely contains costs every triangle).
+layout(constant_id = SPEC_QUADS) const bool QUADS = false;
 
 #ifdef PHONGVK_GRAPHICS_STAGE
 void loadUniforms() {
@@ -227,27 +231,40 @@ LargeShading largeShading(uint slot, uint mode) {
                       floats(TEXEL(largeSetupTexels, k + 2)), floats(TEXEL(largeSetupTexels, k + 3)), w);
 }
 
-// Shaded vertex v (for the passes after shade_vertices, which writes shadedPositions[] and
-// shadedColors[]).
-ShadedVertex shadedVertex(uint v) {
-  return ShadedVertex(floats(TEXEL(shadedTexels, v)), floats(TEXEL(shadedColorTexels, v)));
+// Whether record `id` of the triangle array is a point's or a line's quad half.
+bool isQuad(uint id) { return QUADS && id >= frame.quadBase; }
+
+// The vertices whose attributes record `id`'s three corners take (screen_quads.h recordVertices).
+uvec3 cornerVertices(uint id, uvec4 record) { return recordVertices(record, isQuad(id)); }
+
+// The homogeneous corners of record `id`: a triangle's vertices, a quad half's corners.
+void recordCorners(uint id, uvec4 record, out vec3 h0, out vec3 h1, out vec3 h2) {
+  uvec3 v = cornerVertices(id, record);  // a quad's code is no vertex: never read as one
+  h0 = floats(TEXEL(shadedTexels, v.x)).xyz;
+  h1 = floats(TEXEL(shadedTexels, v.y)).xyz;
+  h2 = floats(TEXEL(shadedTexels, v.z)).xyz;
+  if (isQuad(id)) quadCorners(h0, h1, record.z, frame, h0, h1, h2);
 }
 
-// The three shaded vertices of triangle `id`.
+// The three shaded vertices of record `id`: for a quad half, its corners with its ends' colours.
 void loadTriangle(uint id, out ShadedVertex a, out ShadedVertex b, out ShadedVertex c) {
   uvec4 t = TEXEL(triangleTexels, id);
-  a = shadedVertex(t.x);
-  b = shadedVertex(t.y);
-  c = shadedVertex(t.z);
+  uvec3 v = cornerVertices(id, t);
+  a.color = floats(TEXEL(shadedColorTexels, v.x));
+  b.color = floats(TEXEL(shadedColorTexels, v.y));
+  c.color = floats(TEXEL(shadedColorTexels, v.z));
+  vec3 h0, h1, h2;
+  recordCorners(id, t, h0, h1, h2);
+  a.hpos = vec4(h0, 1.0f);
+  b.hpos = vec4(h1, 1.0f);
+  c.hpos = vec4(h2, 1.0f);
 }
 
-// Triangle `id`'s homogeneous vertices and whether its back face is culled.
+// Record `id`'s homogeneous corners and whether its back face is culled (a quad's never is).
 void loadForSetup(uint id, out vec3 h0, out vec3 h1, out vec3 h2, out bool cullBack) {
   uvec4 tri = TEXEL(triangleTexels, id);
-  cullBack = (TEXEL(objectTexels, OBJECT_TEXELS * tri.w + 1u).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
-  h0 = floats(TEXEL(shadedTexels, tri.x)).xyz;
-  h1 = floats(TEXEL(shadedTexels, tri.y)).xyz;
-  h2 = floats(TEXEL(shadedTexels, tri.z)).xyz;
+  cullBack = !isQuad(id) && (TEXEL(objectTexels, OBJECT_TEXELS * tri.w + 1u).w & OBJECT_CULL_BACK) != 0u;  // ObjectData.flags
+  recordCorners(id, tri, h0, h1, h2);
 }
 
 // Triangle `id`'s Gouraud constants (gouraud.h).

@@ -192,6 +192,10 @@ FN vec3 phongAmbient(MaterialData m, vec3 ambient) {
   return a;
 }
 
+// Whether normal N is zero: a point's or a line's vertex given none, drawn unlit (its colour C as it
+// is: docs/DESIGN.md "Points and lines"), and where the normals of a line's ends cancel.
+FN bool isUnlit(vec3 N) { return N.x == 0.0f && N.y == 0.0f && N.z == 0.0f; }
+
 // v / |v|, or 0 for a zero vector.
 FN vec3 unitOrZero(vec3 v) {
   PRECISE float len = squareRoot(dot3(v, v));

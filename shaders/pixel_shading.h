@@ -46,6 +46,21 @@ FN SurfacePoint flatSurface(VertexIn a, VertexIn b, VertexIn c, vec3 lightOffset
   return s;
 }
 
+// Flat for a point or a line (screen_quads.h: its quad half's first two corner vertices are its
+// ends a and b): lit at the midpoint of its ends with the mean of their normals made unit, and the
+// mean of their colours; a point (a = b) at itself, with its own normal and colour.
+FN SurfacePoint flatQuadSurface(VertexIn a, VertexIn b, vec3 lightOffset, MaterialData m) {
+  SurfacePoint s;
+  PRECISE vec3 sum = lightingPosition(a.position, lightOffset) + lightingPosition(b.position, lightOffset);
+  s.P = sum * 0.5f;
+  PRECISE vec3 normals = a.normal + b.normal;
+  s.N = unitOrZero(normals);
+  s.m = m;
+  PRECISE vec3 colors = vertexMaterial(m, a.color).color + vertexMaterial(m, b.color).color;
+  s.m.color = colors * 0.5f;
+  return s;
+}
+
 // Phong: position, normal and colour interpolated with the pixel's barycentrics `bary` (gouraud.h
 // barycentrics: perspective-correct or linear in screen space, as the scene's interpolation says),
 // and the normal normalized.

@@ -23,8 +23,8 @@ layout(constant_id = SPEC_SHADOWS) const bool SHADOWS = false;  // as the shade 
 
 // The texel triangle `tri` (material m) shows where its barycentrics are `bary`: white where
 // neither the material nor the mesh has a texture.
-uint pixelTexel(uvec4 tri, MaterialData m, vec2 bary) {
-  VertexUv a = vertexUv(tri.x), b = vertexUv(tri.y), c = vertexUv(tri.z);
+uint pixelTexel(uvec3 v, MaterialData m, vec2 bary) {
+  VertexUv a = vertexUv(v.x), b = vertexUv(v.y), c = vertexUv(v.z);
   uint texture = textureOf(m, a);
   if (texture == TEXTURE_NONE) return VERTEX_WHITE;
   TextureTaps k = textureTaps(textureData(texture), interpolateUv(a.uv, b.uv, c.uv, bary), frame.textureFilter);
@@ -35,6 +35,7 @@ uint pixelTexel(uvec4 tri, MaterialData m, vec2 bary) {
 // texel; packed.
 uint pixelColor(uint id, int x, int y) {
   uvec4 tri = TEXEL(triangleTexels, id);
+  uvec3 v = cornerVertices(id, tri);
   ObjectData object = objectData(tri.w);
   MaterialData m = materialData(object.material);
   GouraudTriangle g;
@@ -43,13 +44,13 @@ uint pixelColor(uint id, int x, int y) {
     g = loadGouraud(id);
     bary = barycentrics(g, pixelRay(x, y, frame.principal), INTERPOLATION);
   }
-  uint texel = TEXTURED ? pixelTexel(tri, m, bary) : VERTEX_WHITE;
+  uint texel = TEXTURED ? pixelTexel(v, m, bary) : VERTEX_WHITE;
   if (SHADING == SHADING_GOURAUD) return packColor(texturedColor(interpolateColorAt(g, bary), texel));
-  VertexIn a = posedVertex(vertexIn(tri.x), object), b = posedVertex(vertexIn(tri.y), object),
-           c = posedVertex(vertexIn(tri.z), object);
+  VertexIn a = posedVertex(vertexIn(v.x), object), b = posedVertex(vertexIn(v.y), object),
+           c = posedVertex(vertexIn(v.z), object);
   SurfacePoint s;
   if (SHADING == SHADING_FLAT) {
-    s = flatSurface(a, b, c, object.lightOffset, m);
+    s = isQuad(id) ? flatQuadSurface(a, b, object.lightOffset, m) : flatSurface(a, b, c, object.lightOffset, m);
   } else {
     s = phongSurface(a, b, c, object.lightOffset, m, bary);
   }
@@ -59,10 +60,10 @@ uint pixelColor(uint id, int x, int y) {
   for (uint l = 0u; l < LIGHT_COUNT; ++l) {
     LightData light = lightData(l);
     vec3 lit = phongLightWith(s.P, s.N, V, s.m, light, SPECULAR, CONSTANT_ATTENUATION, BLINN);
-    if (SHADOWS) lit = shadowedTerm(0u, light, lit, s.P, tri.xyz);
+    if (SHADOWS) lit = shadowedTerm(0u, light, lit, s.P, v);
     color += lit;
   }
-  return packColor(color);
+  return packColor(isQuad(id) && isUnlit(s.N) ? s.m.color : color);
 }
 
 #include "resolve_keys.glsl"

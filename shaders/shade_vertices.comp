@@ -39,6 +39,8 @@ void shadeVertex(uint i) {
     if (SHADOWS) lit = shadowedTerm(0u, light, lit, P, vertexOwners(i));
     color += lit;
   }
+  // A point's or a line's vertex without a normal is unlit (only scenes with them have such vertices).
+  if (QUADS && isUnlit(v.normal)) color = m.color;
   shadedColors[i] = vec4(color, 1.0f);
 }
 

@@ -70,7 +70,7 @@ PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices t
 #define PHONGVK_BINDINGS(X)                                                                            \
   X(BINDING_FRAME, 0, UNIFORM_BUFFER)              /* FrameData */                                    \
   X(BINDING_VERTICES, 1, UNIFORM_TEXEL_BUFFER)     /* VertexIn[] as RGBA32UI texels */                \
-  X(BINDING_TRIANGLES, 2, UNIFORM_TEXEL_BUFFER)    /* 3 vertex indices, w = object index */           \
+  X(BINDING_TRIANGLES, 2, UNIFORM_TEXEL_BUFFER)    /* 3 vertex indices (a quad half: screen_quads.h), w = object */ \
   X(BINDING_OBJECTS, 3, UNIFORM_TEXEL_BUFFER)      /* ObjectData[] */                                 \
   X(BINDING_MATERIALS, 4, UNIFORM_TEXEL_BUFFER)    /* MaterialData[] */                               \
   X(BINDING_LIGHTS, 5, UNIFORM_TEXEL_BUFFER)       /* LightData[] */                                  \
@@ -117,7 +117,8 @@ PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices t
   X(SPEC_PROJECTION, 12)                \
   X(SPEC_TEXTURED, 13)                  \
   X(SPEC_KEY_PASS, 14)                  \
-  X(SPEC_SHADOWS, 15)
+  X(SPEC_SHADOWS, 15)                   \
+  X(SPEC_QUADS, 16)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;
@@ -269,8 +270,8 @@ struct FrameData {
   float focalY;      // pixels per metre at 1 m, down (fy)
   uint projection;   // PROJECTION_*; in the shaders, the specialization constant (bindings.glsl)
   uint textureFilter;  // TEXTURE_FILTER_*
-  uint pad1;
-  uint pad2;
+  uint quadBase;     // the first record of the triangle array that is a point's or a line's quad half (screen_quads.h)
+  float pixelScale;  // pixels of this frame per pixel of the image (the sample grid's side): points' and lines' widths scale by it
 };
 
 #ifdef __cplusplus
@@ -294,6 +295,7 @@ static_assert(offsetof(FrameData, height) == 108 && offsetof(FrameData, interpol
 static_assert(offsetof(FrameData, shading) == 116 && offsetof(FrameData, specular) == 120);
 static_assert(offsetof(FrameData, focalY) == 124);
 static_assert(offsetof(FrameData, projection) == 128 && offsetof(FrameData, textureFilter) == 132);
+static_assert(offsetof(FrameData, quadBase) == 136 && offsetof(FrameData, pixelScale) == 140);
 static_assert(sizeof(FrameData) == 144);
 
 // Every binding number and specialization-constant id appears once in its table.

@@ -107,7 +107,7 @@ TEST(BadInputTypes, WrongTypesNameTheirPath) {
 
 TEST(BadInputTypes, UnknownKeysInRenderAndInlineMaterials) {
   EXPECT_EQ(errorFor(sceneWith(R"("render": {"mode": "screen"})")),
-            "a.json: render.mode: unknown key (allowed: interpolation, shading, specular, samples, texture_filter)");
+            "a.json: render.mode: unknown key (allowed: interpolation, shading, specular, samples, texture_filter, point_size, line_width)");
   EXPECT_EQ(errorFor(sceneWith(R"("objects": [{"shape": "sphere"}, {"shape": "cube", "material": {"shine": 1}}])")),
             "a.json: objects[1].material.shine: unknown key (allowed: ka, kd, ks, n, attenuation, color, texture)");
 }
@@ -229,9 +229,10 @@ TEST_F(BadMesh, NonFiniteOrOverflowingPositions) {
             prefix() + "a vertex coordinate after the object's scale and rotation is 1e+20, beyond the 1e+15 m a scene may use");
 }
 
-TEST_F(BadMesh, NoUsableTriangles) {
-  EXPECT_EQ(meshError(""), prefix() + "no triangles (no 'f' lines)");
-  EXPECT_EQ(meshError("v 0 0 0\nv 1 0 0\nv 0 1 0\n"), prefix() + "no triangles (no 'f' lines)");
+// (A file of 'v' lines alone is a point cloud: mesh_primitives_test.)
+TEST_F(BadMesh, NothingToDraw) {
+  EXPECT_EQ(meshError(""), prefix() + "nothing to draw (no 'f', 'l', 'p' or 'v' lines)");
+  EXPECT_EQ(meshError("vn 0 0 1\nvt 0 0\n"), prefix() + "nothing to draw (no 'f', 'l', 'p' or 'v' lines)");
   EXPECT_EQ(meshError("v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\nf 1 1 2\n"),
             prefix() + "every triangle is degenerate (zero area)");
 }

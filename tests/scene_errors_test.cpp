@@ -249,7 +249,7 @@ TEST(SceneErrors, RenderModesOutOfTheirSets) {
   EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["texture_filter"] = "trilinear"; }),
             "a.json: render.texture_filter: must be one of nearest, bilinear, got 'trilinear'");
   EXPECT_EQ(errorFor([](ordered_json& s) { s["render"]["sample"] = 4; }),
-            "a.json: render.sample: unknown key (allowed: interpolation, shading, specular, samples, texture_filter)");
+            "a.json: render.sample: unknown key (allowed: interpolation, shading, specular, samples, texture_filter, point_size, line_width)");
 }
 
 // ---- ranges ----

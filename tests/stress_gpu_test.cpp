@@ -162,6 +162,7 @@ SceneData gridSceneData(SceneData base, const View& view, const test::TiledSquar
   const double pixel = 3.0 / view.focal.x;  // metres per pixel at the grid's centre
   base.vertices.clear();
   base.triangles.clear();
+  base.quadBase = base.quadStart = UINT32_MAX;  // triangles only
   for (glm::vec2 p : grid.positions) {
     const glm::dvec3 local = view.right * (1.4 * 32 * pixel * p.x) + view.up * (1.4 * 24 * pixel * p.y) +
                              view.forward * (0.5 * p.x + 0.3 * p.y);

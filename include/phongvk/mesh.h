@@ -14,12 +14,16 @@ namespace phongvk {
 
 // N vertices and M triangles, row-major: positions x0 y0 z0 x1 ... (3N floats, world metres),
 // triangles a0 b0 c0 a1 ... (3M vertex indices, counter-clockwise seen from outside), and either
-// no normals (they are then area-weighted face normals, as for an OBJ file without any) or one
-// per vertex (3N floats, any length but zero). The messages of a bad mesh name these as
-// "vertices", "faces" and "normals", with the first bad row.
+// no normals (they are then area-weighted face normals, as for an OBJ file without any; a vertex
+// only points and lines use has none and is drawn unlit) or one per vertex (3N floats, any length
+// but zero). Points and line segments (docs/DESIGN.md "Points and lines") index the same vertices;
+// arrays with vertices alone are a point cloud: every vertex a point. The messages of a bad mesh
+// name these as "vertices", "faces", "lines", "points" and "normals", with the first bad row.
 struct MeshArrays {
   std::vector<float> positions;
   std::vector<int64_t> triangles;
+  std::vector<int64_t> lines;   // segments a0 b0 a1 b1 ... (vertex index pairs)
+  std::vector<int64_t> points;  // vertex indices, each drawn as a point
   std::vector<float> normals;
   // Texture coordinates u0 v0 u1 v1 ... (2N finite floats; (0, 0) the texture's top-left corner,
   // docs/DESIGN.md "Textures"), or none: what a material's texture is sampled with ("uvs").
@@ -53,6 +57,8 @@ class PHONGVK_API TriangleMesh {
 
   size_t vertexCount() const;
   size_t triangleCount() const;
+  size_t lineCount() const;
+  size_t pointCount() const;
 
  private:
   explicit TriangleMesh(std::shared_ptr<const Mesh> mesh);

@@ -32,10 +32,13 @@ namespace phongvk {
 PHONGVK_API const char* version();
 PHONGVK_API const char* revision();
 
-// Scene::triangles: the scene's built geometry in world coordinates.
+// Scene::triangles: the scene's built geometry in world coordinates. The triangle_ids output
+// numbers its primitives in this order: the triangles, then the lines, then the points.
 struct SceneTriangles {
-  MeshArrays mesh;               // positions, normals, triangles (3 vertex indices each)
+  MeshArrays mesh;               // positions, normals (0 where none), triangles, lines and points (vertex indices)
   std::vector<int32_t> objects;  // per triangle: its object's index in the scene
+  std::vector<int32_t> lineObjects;   // per line, likewise
+  std::vector<int32_t> pointObjects;  // per point, likewise
 };
 
 // A validated scene: camera, lights, materials, objects (docs/DESIGN.md "Scene file"). Cheap to

@@ -170,6 +170,10 @@ struct RenderSettings {
   int samples = 1;
   Vec3 background = {0, 0, 0};
   TextureFilter textureFilter = TextureFilter::Bilinear;
+  // Points' side and lines' width in pixels of the image (docs/DESIGN.md "Points and lines"):
+  // above 0, at most 64; a mesh object's "point_size" and "line_width" may say otherwise for it.
+  double pointSize = 1;
+  double lineWidth = 1;
   bool operator==(const RenderSettings&) const = default;
 };
 

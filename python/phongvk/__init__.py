@@ -244,7 +244,7 @@ _LiveCamera = _live_class(Camera, ("position", "look_at", "up", "fov", "width", 
 _LiveLight = _live_class(Light, ("position", "direction", "spot", "inner_cone", "outer_cone", "falloff", "range",
                                  "intensity", "color", "at_camera", "shadows"))
 _LiveRenderSettings = _live_class(RenderSettings, ("shading", "specular", "interpolation", "samples", "background",
-                                                   "texture_filter"))
+                                                   "texture_filter", "point_size", "line_width"))
 
 
 class _LightList:
@@ -307,3 +307,54 @@ def _light(scene, handle):
 
 _light.__doc__ = _LIGHT.__doc__ + " A live view, as scene.lights[i]."
 Scene.light = _light
+
+
+def Points(positions, colors=None, normals=None):
+    """A point cloud: a phongvk.Mesh whose every vertex is drawn as a point, a square
+    render_settings.point_size pixels wide (docs/DESIGN.md "Points and lines"). positions: (N, 3)
+    floats; colors: (N, 3) or (N, 4), uint8 or floats 0..1; normals: (N, 3), without which the
+    points are drawn unlit, in their colour (material colour times vertex colour)."""
+    return Mesh(positions, colors=colors, normals=normals, points=_np.arange(len(positions), dtype=_np.int64))
+
+
+def Lines(positions, segments=None, *, strip=False, loop=False, colors=None, normals=None):
+    """Line segments: a phongvk.Mesh drawn as lines render_settings.line_width pixels wide.
+    positions: (N, 3) floats; segments: (L, 2) vertex indices, or None for consecutive pairs
+    (0-1, 2-3, ...: glTF's LINES), a polyline through every vertex (strip=True, LINE_STRIP) or a
+    closed one (loop=True, LINE_LOOP); colors and normals as in Points (unlit without normals)."""
+    count = len(positions)
+    if segments is None:
+        if strip or loop:
+            first = _np.arange(count - 1 + (1 if loop and count > 2 else 0), dtype=_np.int64)
+            segments = _np.stack([first, (first + 1) % count], axis=1)
+        else:
+            segments = _np.arange(count - count % 2, dtype=_np.int64).reshape(-1, 2)
+    elif strip or loop:
+        raise ValueError("segments: not given with strip or loop, which make the segments")
+    return Mesh(positions, colors=colors, normals=normals, lines=segments)
+
+
+def _add_points(scene, positions, colors=None, normals=None, *, pose=None, material=None, object_id=None):
+    return scene.add(Points(positions, colors=colors, normals=normals), pose=pose, material=material,
+                     object_id=object_id)
+
+
+def _add_lines(scene, positions, segments=None, *, strip=False, loop=False, colors=None, normals=None, pose=None,
+               material=None, object_id=None):
+    return scene.add(Lines(positions, segments, strip=strip, loop=loop, colors=colors, normals=normals), pose=pose,
+                     material=material, object_id=object_id)
+
+
+# Docstrings led by a signature line, as pybind11's methods have theirs (the stubs test reads it).
+_add_points.__doc__ = (
+    "add_points(self: Scene, positions: ArrayLike, colors: ArrayLike = None, normals: ArrayLike = None, *, "
+    "pose: ArrayLike = None, material: MaterialLike = None, object_id: int = None) -> int\n\n"
+    "Adds a point cloud (phongvk.Points: every vertex a point) placed by pose, and returns its handle, as add() does.")
+_add_lines.__doc__ = (
+    "add_lines(self: Scene, positions: ArrayLike, segments: ArrayLike = None, *, strip: bool = False, "
+    "loop: bool = False, colors: ArrayLike = None, normals: ArrayLike = None, pose: ArrayLike = None, "
+    "material: MaterialLike = None, object_id: int = None) -> int\n\n"
+    "Adds line segments (phongvk.Lines) placed by pose, and returns its handle, as add() does.")
+Scene.add_points = _add_points
+Scene.add_lines = _add_lines
+__all__ += ["Lines", "Points"]

@@ -492,7 +492,8 @@ def test_a_bad_material_fails_with_the_files_message(tmp_path, fields):
      r"render.specular: must be one of phong, blinn, got 'cook'"),
     (lambda s: s.with_render(shading="smooth"), phongvk.SceneError, r"render.shading: must be one of"),
     (lambda s: s.with_render(gamma=2.2), phongvk.SceneError,
-     r"render: unknown key 'gamma' \(allowed: background, interpolation, samples, shading, specular, texture_filter\)"),
+     r"render: unknown key 'gamma' \(allowed: background, interpolation, line_width, point_size, samples, shading, specular, "
+     r"texture_filter\)"),
     (lambda s: s.with_render("phong"), TypeError, r"settings: expected a phongvk.RenderSettings"),
 ])
 def test_bad_materials_and_settings_are_clear_errors(call, error, message):
@@ -507,7 +508,7 @@ def test_materials_and_settings_say_what_they_are():
                                               "attenuation=(1.0, 0.0, 0.0), color=(0.8, 0.8, 0.8))")
     assert repr(phongvk.RenderSettings(shading="phong", samples=4)) == (
         "phongvk.RenderSettings(shading='phong', specular='phong', interpolation='perspective', samples=4, "
-        "background=(0.0, 0.0, 0.0), texture_filter='bilinear')")
+        "background=(0.0, 0.0, 0.0), texture_filter='bilinear', point_size=1.0, line_width=1.0)")
     assert "shininess" in phongvk.Material.__doc__ and "samples" in phongvk.RenderSettings.__doc__
     assert "width x height" in phongvk.Scene.__init__.__doc__
     assert phongvk.Material(ks=0.2) != phongvk.Material()
