@@ -143,7 +143,9 @@ RendererStats Renderer::Impl::stats() const {
   s.framesRendered = framesRendered_;
   s.framesShaded = framesShaded();
   s.framesRepeated = framesRepeated();
-  s.triangles = data_ ? data_->triangles.size() : 0;
+  s.triangles = data_ ? std::min<size_t>(data_->triangles.size(), data_->quadBase) : 0;
+  s.lines = data_ ? data_->lineCount : 0;
+  s.points = data_ ? data_->pointCount : 0;
   s.lights = data_ ? data_->lights.size() : 0;
   s.buildMs = buildMs_;
   s.textureBytes = data_ ? textureBytes(*data_) : 0;

@@ -68,6 +68,10 @@ void runBench(const BenchOptions& options) {
     runMovingObjects(options.quick);
     return;
   }
+  if (options.pointsOnly) {
+    runPoints(options.quick);
+    return;
+  }
   if (options.shadowsOnly) {
     runShadows(options.sourceDir, options.quick);
     timeShadowBuild(options.quick);
@@ -104,6 +108,8 @@ void runBench(const BenchOptions& options) {
     std::printf("shadows:\n");
     report.shadows = runShadows(options.sourceDir, options.quick);
     report.shadowBuild = timeShadowBuild(options.quick);
+    std::printf("point clouds:\n");
+    report.points = runPoints(options.quick);
     if (report.plotNote.empty()) {
       report.plotLink = fs::relative(fs::absolute(options.plot), fs::absolute(options.out).parent_path()).string();
     }

@@ -17,6 +17,7 @@ struct BenchOptions {
   int device = -1;                           // Vulkan device index, -1 = best
   std::string cli;                           // the phongvk command the end-to-end section runs
   bool devicesOnly = false;                  // only the device table (device_table.h)
+  bool pointsOnly = false;                   // only the point clouds against grids (points.h), printed
   bool shadowsOnly = false;                  // only the shadow runs (shadows.h), printed
   bool movingOnly = false;                   // only the moving-object runs (moving_object.h), printed
 };

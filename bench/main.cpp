@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
                "Only a moving object against a moving camera (printed, no report written)");
   app.add_flag("--shadows-only", options.shadowsOnly,
                "Only shadowed frames against unshadowed ones and the tree's build (printed, no report written)");
+  app.add_flag("--points-only", options.pointsOnly,
+               "Only point clouds against grids of as many triangles (printed, no report written)");
   app.add_flag("--devices-only", options.devicesOnly,
                "Only the device table (each Vulkan device and key path), in a report of its own");
   try {

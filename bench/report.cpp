@@ -187,6 +187,33 @@ std::string shadowSection(const Report& r) {
   return s + "\n";
 }
 
+std::string pointsTarget(const Report& r) {
+  std::vector<PointsRun> gpu;
+  for (const PointsRun& x : r.points) {
+    if (x.backend == "gpu") gpu.push_back(x);
+  }
+  return runsTargetRow<PointsRun>(
+      "a point cloud's frame at 1080p <= " + number(POINTS_TARGET, 1) + "x a grid of as many triangles (compute port)", gpu,
+      [](const PointsRun& x) { return x.ratio() <= POINTS_TARGET; }, [](const PointsRun& x) { return x.ratio(); });
+}
+
+std::string pointsSection(const Report& r) {
+  std::string s = "## Point clouds\n\nThe public `Renderer` at 1920x1080, a cloud of N points (an n x n grid's vertices, "
+                  "1 pixel each, coloured, unlit) against the wavy grid of about N triangles over the same surface, " +
+                  std::to_string(r.quick ? 1 : POINTS_ROUNDS) + " interleaved rounds of " + std::to_string(POINTS_FRAMES) +
+                  " frames each way, medians; each frame moves the camera.\n\n";
+  s += header({"backend", "points", "grid triangles", "grid ms", "points ms", "points / grid"});
+  for (const PointsRun& x : r.points) {
+    if (!x.failure.empty()) {
+      s += row({x.backend, std::to_string(x.count), "–", x.failure, "–", "–"});
+      continue;
+    }
+    s += row({x.backend, std::to_string(x.count), std::to_string(x.triangles), number(x.gridMs, 1), number(x.pointsMs, 1),
+              ratio(x.ratio())});
+  }
+  return s + "\n";
+}
+
 std::string endToEndTargets(const EndToEnd& e) {
   return runsTargetRow<SequenceRun>(
              "`phongvk sequence` >= " + number(SEQUENCE_RATE_TARGET, 1) +
@@ -238,6 +265,7 @@ std::string targetTable(const Report& r) {
   s += geometryChangeTarget(r.geometryChanges);
   s += movingObjectTarget(r.movingObjects);
   s += shadowTargets(r);
+  s += pointsTarget(r);
   s += "\nSpeed ratios are wall clock (the render call, as a user of either backend waits for it); ";
   s += "each scene's misses and what its time or memory went to are listed under the suite.\n\n";
   return s;
@@ -445,7 +473,7 @@ std::string method(const Report& r) {
 std::string formatReport(const Report& report) {
   return preamble(report) + machine(report) + targetTable(report) + suite(report) +
          deviceTableSection(report.devices, report.repeat) + setupSection(report) +
-         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) + movingObjectSection(report) + shadowSection(report) +
+         sweepSection(report) + endToEndSection(report) + meshLoadSection(report) + geometryChangeSection(report) + movingObjectSection(report) + shadowSection(report) + pointsSection(report) +
          method(report);
 }
 

@@ -7,6 +7,7 @@
 #include "error_sweep.h"
 #include "geometry_change.h"
 #include "moving_object.h"
+#include "points.h"
 #include "shadows.h"
 #include "machine.h"
 #include "mesh_load.h"
@@ -33,6 +34,7 @@ struct Report {
   std::vector<GeometryChangeRun> geometryChanges;
   std::vector<MovingObjectRun> movingObjects;
   std::vector<ShadowRun> shadows;
+  std::vector<PointsRun> points;
   ShadowBuild shadowBuild;
   std::string plotLink;  // the plot, relative to the report; empty when there is none
   std::string plotNote;  // why there is no plot

@@ -43,6 +43,12 @@ std::string describeBackend(const Renderer& renderer) {
 // " (start-up: Vulkan 95.1 ms, float probe cached, pipelines 180.2 ms, first frame 13.2 ms on the
 // device)": where a Vulkan backend's first render went; empty for the reference. The first frame
 // on the device holds the driver's code generation where it happens then (lavapipe on a new machine).
+// ", 6 lines, 2 points" where the scene draws any (docs/DESIGN.md "Points and lines").
+std::string primitivesText(const RendererStats& stats) {
+  return (stats.lines ? ", " + std::to_string(stats.lines) + " lines" : "") +
+         (stats.points ? ", " + std::to_string(stats.points) + " points" : "");
+}
+
 std::string startupText(const RendererStats& stats, Backend backend) {
   if (backend == Backend::Cpu) return "";
   char text[200];
@@ -82,10 +88,10 @@ int runRender(const RenderOptions& options) {
     // Building the meshes counts as loading the scene, as the summary has always said.
     const double renderMs = msSince(renderStart) - stats.buildMs;
     writeRenderedFiles(options, frame);
-    std::fprintf(out, "rendered %s: %dx%d, %zu objects, %zu triangles, %zu lights, %s backend: scene %.1f ms, render %.1f ms%s"
+    std::fprintf(out, "rendered %s: %dx%d, %zu objects, %zu triangles%s, %zu lights, %s backend: scene %.1f ms, render %.1f ms%s"
                 " -> %s\n",
                 options.scene.c_str(), image.width, image.height, scene.objectCount(), stats.triangles,
-                stats.lights, describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,
+                primitivesText(stats).c_str(), stats.lights, describeBackend(renderer).c_str(), loadMs + stats.buildMs, renderMs,
                 startupText(stats, renderer.backend()).c_str(), options.output.c_str());
     if (!stats.notice.empty()) std::fprintf(stderr, "phongvk: notice: %s\n", stats.notice.c_str());
     return int(EXIT_OK);

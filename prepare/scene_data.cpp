@@ -260,6 +260,8 @@ SceneData buildSceneData(const SceneSpec& scene) {
     meshes[i] = {};  // freed as soon as copied
   }
   data.quadBase = data.quadStart = uint32_t(data.triangles.size());
+  data.lineCount = quads.lines.size() / 2;
+  data.pointCount = quads.points.size() / 2;
   data.triangles.insert(data.triangles.end(), quads.lines.begin(), quads.lines.end());
   data.triangles.insert(data.triangles.end(), quads.points.begin(), quads.points.end());
   for (const Object& object : scene.objects) {

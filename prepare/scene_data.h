@@ -30,6 +30,7 @@ struct SceneData {
   // arrays made by hand, as tests make them).
   uint32_t quadBase = UINT32_MAX;
   uint32_t quadStart = UINT32_MAX;
+  size_t lineCount = 0, pointCount = 0;  // the whole scene's
   std::vector<glm::dvec3> objectOrigins;    // world, double: offsets are taken in double
   // Each object's box about its origin, in its own axes (a posed object's before its pose).
   std::vector<std::array<glm::dvec3, 2>> objectBoxes;

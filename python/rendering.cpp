@@ -73,6 +73,8 @@ py::dict statsDict(const RendererStats& s) {
   d["frames_shaded"] = s.framesShaded;
   d["frames_repeated"] = s.framesRepeated;
   d["triangles"] = s.triangles;
+  d["lines"] = s.lines;
+  d["points"] = s.points;
   d["lights"] = s.lights;
   d["build_ms"] = s.buildMs;
   d["texture_bytes"] = s.textureBytes;

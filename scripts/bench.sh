@@ -21,3 +21,6 @@ revision=$(git describe --always --dirty 2>/dev/null || echo unknown)
 
 echo "== peers (phongvk against moderngl from Python)"
 PYTHONPATH=build/python /usr/bin/python3 bench/peers.py --out docs/BENCHMARKS_PEERS.md
+
+echo "== peers, point clouds (phongvk against moderngl's POINTS from Python)"
+PYTHONPATH=build/python /usr/bin/python3 bench/peers_points.py --out docs/BENCHMARKS_PEERS_POINTS.md

@@ -244,7 +244,8 @@ struct RendererStats {
   uint64_t framesRendered = 0;
   uint64_t framesShaded = 0;     // frames whose per-vertex lighting was computed (gpu; others reuse it)
   uint64_t framesRepeated = 0;   // frames rendered again with larger lists or more workgroups (gpu)
-  size_t triangles = 0;          // of the last scene rendered
+  size_t triangles = 0;          // of the last scene rendered (a share: its own)
+  size_t lines = 0, points = 0;  // of the last scene rendered (docs/DESIGN.md "Points and lines")
   size_t lights = 0;             // that lit it: its own and those its model files place
   double buildMs = 0;            // time spent building meshes, in all (uploads not included)
   uint64_t textureBytes = 0;     // the last scene's textures: texels, coordinates, table (docs/DESIGN.md "Textures")

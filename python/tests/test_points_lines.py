@@ -99,3 +99,14 @@ def test_sizes_are_checked_where_they_are_set():
     with pytest.raises(ValueError, match="vertices: row 1 is not finite"):
         phongvk.Points(np.array([[0, 0, 0], [np.nan, 0, 0]], np.float32))
     assert "3 points" in repr(phongvk.Points(np.zeros((3, 3), np.float32)))
+
+
+def test_the_readmes_point_cloud_runs(tmp_path, monkeypatch):
+    """The README's point-cloud example, as written there."""
+    import os
+    import re
+    readme = open(os.path.join(os.environ["PHONGVK_SOURCE_DIR"], "README.md")).read()
+    block = next(b for b in re.findall(r"```python\n(.*?)```", readme, re.S) if "add_points" in b)
+    monkeypatch.chdir(tmp_path)
+    exec("import numpy as np\nimport phongvk\ngpu = phongvk.Renderer('gpu')\n" + block, {})
+    assert phongvk.read_png(str(tmp_path / "cloud.png")).shape == (480, 640, 3)
