@@ -37,6 +37,7 @@ struct AddedMesh {
   bool closed = false;
   Matrix4 pose = IDENTITY_POSE;
   int32_t label = 0;  // its id in the object_id output (Scene::objectId)
+  bool castShadows = true;  // its triangles block shadowed lights (Scene::setCastShadows)
 };
 
 // A light given to addLight: it follows the scene into its other frames, as added meshes do.
@@ -52,6 +53,7 @@ void appendAdded(SceneSpec& spec, const AddedMesh& added) {
   addMeshObject(spec, added.mesh, added.material, added.closed);
   placeObject(spec.objects.back(), added.pose);
   spec.objects.back().label = added.label;
+  spec.objects.back().castShadows = added.castShadows;
 }
 
 // `spec`'s lights with the added ones after them.
@@ -241,6 +243,15 @@ void Scene::setObjectId(ObjectId object, int32_t id) {
   State& state = State::own(state_);
   state.ownSpec().objects[state.objectIndex(i)].label = id;
   state.added[i].label = id;
+}
+
+bool Scene::castsShadows(ObjectId object) const { return state_->added[state_->position(object)].castShadows; }
+
+void Scene::setCastShadows(ObjectId object, bool casts) {
+  const size_t i = state_->position(object);
+  State& state = State::own(state_);
+  state.ownSpec().objects[state.objectIndex(i)].castShadows = casts;
+  state.added[i].castShadows = casts;
 }
 
 void Scene::setMesh(ObjectId object, const TriangleMesh& mesh) {

@@ -92,6 +92,14 @@ material, closed, normals, uvs, colors and object_id as in add_mesh.)")
           py::arg("object"), py::arg("object_id"),
           "Gives an added object your own number in the object_id output (0..2^31-1; objects may share one).")
       .def(
+          "casts_shadows", [](const Scene& s, unsigned long long id) { return s.castsShadows(ObjectId{id}); },
+          py::arg("object"), "Whether an added object's triangles block lights that cast shadows (True when added).")
+      .def(
+          "set_cast_shadows", [](Scene& s, unsigned long long id, bool casts) { s.setCastShadows(ObjectId{id}, casts); },
+          py::arg("object"), py::arg("cast_shadows"),
+          "Whether an added object's triangles block lights that cast shadows, as a scene file's \"cast_shadows\": "
+          "False for a ground plane or a helper that should not.")
+      .def(
           "add_light", [](Scene& s, const Light& light) { return s.addLight(light).value; }, py::arg("light"),
           "Adds a light (a phongvk.Light, checked like a scene file's) after the scene's lights and returns its "
           "handle, for light, set_light and remove. It follows the scene into its other frames.")

@@ -76,6 +76,16 @@ void checkIndices(const char* array, const std::vector<int64_t>& t, size_t perRo
   }
 }
 
+// A zero normal says "no normal" (docs/DESIGN.md "Points and lines": drawn unlit), which only a
+// vertex that no face uses may have: a face's vertex needs a direction.
+void checkZeroNormals(const MeshArrays& a, const Mesh& mesh) {
+  if (mesh.normals.empty()) return;
+  for (size_t k = 0; k < a.triangles.size(); ++k) {
+    const size_t v = size_t(a.triangles[k]);
+    if (mesh.normals[v] == glm::vec3(0.0f)) failRow("normals", v, "has no direction: " + rowText(a.normals, v));
+  }
+}
+
 // The mesh's points and lines; with no faces, lines or points, every vertex a point.
 void addPointsAndLines(const MeshArrays& a, Mesh& mesh) {
   for (int64_t p : a.points) mesh.points.push_back(uint32_t(p));
@@ -116,10 +126,8 @@ Mesh meshFromArrays(const MeshArrays& a) {
   for (size_t v = 0; v < vertices; ++v) mesh.positions.push_back(glm::vec3(rowOf(a.positions, v)));
   for (size_t v = 0; v < a.normals.size() / 3; ++v) {
     const glm::dvec3 n = rowOf(a.normals, v);
-    if (!std::isfinite(glm::length(n)) || glm::length(n) == 0.0) {
-      failRow("normals", v, "has no direction: " + rowText(a.normals, v));
-    }
-    mesh.normals.push_back(unitNormal(n));
+    if (!std::isfinite(glm::length(n))) failRow("normals", v, "has no direction: " + rowText(a.normals, v));
+    mesh.normals.push_back(n == glm::dvec3(0.0) ? glm::vec3(0.0f) : unitNormal(n));  // zero: unlit, checked below
   }
   for (size_t k = 0; k < a.triangles.size(); k += 3) {
     const glm::uvec3 t(uint32_t(a.triangles[k]), uint32_t(a.triangles[k + 1]), uint32_t(a.triangles[k + 2]));
@@ -127,6 +135,7 @@ Mesh meshFromArrays(const MeshArrays& a) {
     if (glm::cross(p1 - p0, p2 - p0) == glm::dvec3(0.0)) continue;  // zero area: draws nothing, as from a file
     mesh.triangles.push_back(t);
   }
+  checkZeroNormals(a, mesh);
   addPointsAndLines(a, mesh);
   if (mesh.triangles.empty() && mesh.lines.empty() && mesh.points.empty()) {
     throw ArgumentError("faces: every triangle is degenerate (zero area)");

@@ -113,6 +113,10 @@ class PHONGVK_API Scene {
   // outside that range).
   int32_t objectId(ObjectId object) const;
   void setObjectId(ObjectId object, int32_t id);
+  // Whether an added object's triangles block lights that cast shadows (a scene file's
+  // "cast_shadows"; true when added): false for a ground plane or a helper that should not.
+  bool castsShadows(ObjectId object) const;
+  void setCastShadows(ObjectId object, bool casts);
   // The object's geometry replaced by `mesh` in place: its handle, id, pose, material and
   // closedness stay.
   void setMesh(ObjectId object, const TriangleMesh& mesh);
