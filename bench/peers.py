@@ -38,7 +38,7 @@ import time
 
 import numpy as np
 
-from gl_matrices import look_at, perspective
+from gl_peer import look_at, perspective, unavailable
 
 import phongvk
 
@@ -263,18 +263,6 @@ RENDERERS = {
     "phongvk cpu": lambda mesh, size: PhongvkRenderer("cpu", mesh, size),
     "moderngl": ModernglRenderer,
 }
-
-
-def unavailable(name):
-    """Why a renderer cannot run here, or None."""
-    if name != "moderngl":
-        return None
-    try:
-        import moderngl
-        moderngl.create_standalone_context(backend="egl").release()
-    except Exception as e:  # not installed, or no EGL device
-        return f"not available: {type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}".strip()
-    return None
 
 
 # --- measurement --------------------------------------------------------------------------------

@@ -42,7 +42,7 @@ import time
 
 import numpy as np
 
-from gl_matrices import look_at, perspective
+from gl_peer import look_at, perspective, unavailable
 
 HERE = pathlib.Path(__file__).resolve().parent
 SIZE = (1280, 720)
@@ -158,18 +158,6 @@ RENDERERS = {
 }
 
 
-def unavailable(name):
-    """Why a renderer cannot run here, or None."""
-    if name != "moderngl":
-        return None
-    try:
-        import moderngl
-        moderngl.create_standalone_context(backend="egl").release()
-    except Exception as e:  # not installed, or no EGL device
-        return f"not available: {type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}".strip()
-    return None
-
-
 # --- measurement --------------------------------------------------------------------------------
 
 def moving_camera_ms(name, base, frames):
@@ -276,7 +264,7 @@ def report(n, results, missing, sanity_lines, rounds, frames):
     out += [f"- {line}" for line in sanity_lines]
     out += [f"- **{name}**: {why}" for name, why in missing.items()]
     out += ["", "| workload | phongvk gpu ms/frame | moderngl ms/frame | phongvk / moderngl |", "|---|--:|--:|--:|"]
-    rows = [("moving camera (same cloud)", "moving", 1), (f"new cloud each frame (`set_mesh` / `vbo.write`)", "new", 1),
+    rows = [("moving camera (same cloud)", "moving", 1), ("new cloud each frame (`set_mesh` / `vbo.write`)", "new", 1),
             ("cold process (one frame, ms wall clock)", "cold", 1000)]
     for label, key, scale in rows:
         cells = [format(results[name][key] * scale, ".1f") if name in results else "–" for name in RENDERERS]
