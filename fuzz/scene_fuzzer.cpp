@@ -5,6 +5,7 @@
 // of a scene small enough to build quickly have finite positions, unit normals and indices in range.
 // Mesh files resolve against scenes/, so the seed scenes' meshes/*.obj are found.
 #include "prepare/scene_data.h"
+#include "shaders/screen_quads.h"
 #include "scene/camera.h"
 #include "scene/scene.h"
 
@@ -32,18 +33,25 @@ bool cheapToBuild(const SceneSpec& scene) {
   std::abort();
 }
 
+// Finite vertices with unit normals (zero for a point's or a line's vertex given none), triangles'
+// indices in range, and the quads of points and lines (shaders/screen_quads.h) on vertices in range
+// with a width in (0, QUAD_MAX_WIDTH] pixels.
 void checkMeshes(const SceneData& data) {
   for (const gpu::VertexIn& v : data.vertices) {
     for (int i = 0; i < 3; ++i) {
       if (!std::isfinite(v.position[i]) || !std::isfinite(v.normal[i])) broken("a vertex is not finite");
     }
     const float length = std::sqrt(v.normal.x * v.normal.x + v.normal.y * v.normal.y + v.normal.z * v.normal.z);
-    if (std::abs(length - 1.0f) > 1e-3f) broken("a normal is not unit length: " + std::to_string(length));
+    if (std::abs(length - 1.0f) > 1e-3f && length != 0.0f) broken("a normal is neither unit nor zero: " + std::to_string(length));
   }
-  for (const glm::uvec4& t : data.triangles) {
-    if (t.x >= data.vertices.size() || t.y >= data.vertices.size() || t.z >= data.vertices.size()) {
+  const size_t vertices = data.vertices.size();
+  for (uint32_t id = 0; id < data.triangles.size(); ++id) {
+    const glm::uvec4& t = data.triangles[id];
+    if (t.x >= vertices || t.y >= vertices || (!isQuadRecord(data, id) && t.z >= vertices)) {
       broken("a triangle index is out of range");
     }
+    const uint32_t width = t.z >> gpu::QUAD_WIDTH_SHIFT;
+    if (isQuadRecord(data, id) && (width == 0 || width > uint32_t(gpu::QUAD_MAX_WIDTH * 256))) broken("a quad's width is out of range");
   }
 }
 
