@@ -352,10 +352,12 @@ SceneTriangles Scene::triangles() const {
     if (!isQuadRecord(data, id)) {
       out.mesh.triangles.insert(out.mesh.triangles.end(), {int64_t(t.x), int64_t(t.y), int64_t(t.z)});
       out.objects.push_back(int32_t(t.w));
-    } else if ((t.z & 1u) == 0u && (t.z & gpu::QUAD_POINT) != 0u) {  // a quad's first half stands for it
+    } else if (gpu::quadIsSecondHalf(t.z)) {
+      continue;  // a quad's first half stands for it
+    } else if (gpu::quadIsPoint(t.z)) {
       out.mesh.points.push_back(int64_t(t.x));
       out.pointObjects.push_back(int32_t(t.w));
-    } else if ((t.z & 1u) == 0u) {
+    } else {
       out.mesh.lines.insert(out.mesh.lines.end(), {int64_t(t.x), int64_t(t.y)});
       out.lineObjects.push_back(int32_t(t.w));
     }

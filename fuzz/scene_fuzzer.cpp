@@ -50,7 +50,7 @@ void checkMeshes(const SceneData& data) {
     if (t.x >= vertices || t.y >= vertices || (!isQuadRecord(data, id) && t.z >= vertices)) {
       broken("a triangle index is out of range");
     }
-    const uint32_t width = t.z >> gpu::QUAD_WIDTH_SHIFT;
+    const uint32_t width = gpu::quadWidth256(t.z);
     if (isQuadRecord(data, id) && (width == 0 || width > uint32_t(gpu::QUAD_MAX_WIDTH * 256))) broken("a quad's width is out of range");
   }
 }

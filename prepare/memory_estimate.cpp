@@ -13,10 +13,10 @@ namespace phongvk {
 uint64_t estimatedTriangles(const Object& object) {
   uint64_t base = baseTriangles(object);
   if (object.shape == Shape::Polyhedron) base = 2 * object.points.size();
-  if (object.shape == Shape::Mesh && object.arrays) {  // a point's or a line's quad is two records
-    base = object.arrays->triangles.size() + 2 * (object.arrays->points.size() + object.arrays->lines.size());
+  if (object.shape == Shape::Mesh) {  // a point's or a line's quad is two records
+    base = object.arrays ? object.arrays->triangles.size() + 2 * (object.arrays->points.size() + object.arrays->lines.size())
+                         : object.fileTriangles;
   }
-  if (object.shape == Shape::Mesh && !object.arrays) base = object.fileTriangles;
   for (int level = 0; level < object.subdivide && base < (uint64_t(1) << 50); ++level) base *= 4;
   return base;
 }

@@ -77,8 +77,8 @@ std::vector<ObjectMesh> buildMeshes(const SceneSpec& scene, size_t& vertices, si
 }
 
 // A point's or a line's quad width in 1/256 pixel (screen_quads.h), from the object's pixels
-// (checked to be in (0, QUAD_MAX_WIDTH] where the scene was read): at least 1.
-uint32_t quadWidthUnits(double pixels) { return std::max(uint32_t(std::lround(pixels * 256.0)), 1u); }
+// (checked to be at least 1/256 and at most QUAD_MAX_WIDTH where the scene was read).
+uint32_t quadWidthUnits(double pixels) { return uint32_t(std::lround(pixels * 256.0)); }
 
 // The quads of an object's lines and points (two records each, screen_quads.h), kept apart until
 // every object's triangles are in: the triangle array holds triangles, then lines, then points.
@@ -89,13 +89,15 @@ struct QuadRecords {
 
 void appendQuads(QuadRecords& quads, const Mesh& mesh, const SceneSpec& scene, const Object& object, uint32_t base,
                  uint32_t objectIndex) {
-  const uint32_t lineCode = quadWidthUnits(object.lineWidth.value_or(scene.lineWidth)) << gpu::QUAD_WIDTH_SHIFT;
-  const uint32_t pointCode = quadWidthUnits(object.pointSize.value_or(scene.pointSize)) << gpu::QUAD_WIDTH_SHIFT | gpu::QUAD_POINT;
+  const uint32_t lineWidth = quadWidthUnits(object.lineWidth.value_or(scene.lineWidth));
+  const uint32_t pointSize = quadWidthUnits(object.pointSize.value_or(scene.pointSize));
   for (const glm::uvec2& l : mesh.lines) {
-    for (uint32_t half = 0; half < 2; ++half) quads.lines.push_back({base + l.x, base + l.y, lineCode | half, objectIndex});
+    for (bool second : {false, true})
+      quads.lines.push_back({base + l.x, base + l.y, gpu::quadCode(lineWidth, false, second), objectIndex});
   }
   for (uint32_t p : mesh.points) {
-    for (uint32_t half = 0; half < 2; ++half) quads.points.push_back({base + p, base + p, pointCode | half, objectIndex});
+    for (bool second : {false, true})
+      quads.points.push_back({base + p, base + p, gpu::quadCode(pointSize, true, second), objectIndex});
   }
 }
 

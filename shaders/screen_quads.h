@@ -14,24 +14,33 @@
 SHARED_BEGIN
 
 // A quad half's record in the triangle array: (vertex a, vertex b, code, object), where a point has
-// a = b. The code: bit 0 the half (QUAD_HALF_*), bit 1 QUAD_POINT for a point, and from bit 2 the
-// quad's width (a point's side, a line's width) in 1/256 pixel of the rendered image.
+// a = b. The code (quadCode): bit 0 QUAD_SECOND_HALF for the second half, bit 1 QUAD_POINT for a
+// point, and from bit 2 the quad's width (a point's side, a line's width) in 1/256 pixel of the image.
+PHONGVK_CONST uint QUAD_SECOND_HALF = 1u;
 PHONGVK_CONST uint QUAD_POINT = 2u;
 PHONGVK_CONST uint QUAD_WIDTH_SHIFT = 2u;
 // The widest point or line, in pixels: a quad's width in 1/256 pixel takes 14 bits.
 PHONGVK_CONST float QUAD_MAX_WIDTH = 64.0f;
+
+// A quad half's code, from its width in 1/256 pixel, whether it is a point's, and which half it is.
+FN uint quadCode(uint width256, bool point, bool secondHalf) {
+  return (width256 << QUAD_WIDTH_SHIFT) | (point ? QUAD_POINT : 0u) | (secondHalf ? QUAD_SECOND_HALF : 0u);
+}
+FN bool quadIsPoint(uint code) { return (code & QUAD_POINT) != 0u; }
+FN bool quadIsSecondHalf(uint code) { return (code & QUAD_SECOND_HALF) != 0u; }
+FN uint quadWidth256(uint code) { return code >> QUAD_WIDTH_SHIFT; }
 
 // The vertices whose attributes (colour, normal, position for lighting, texture coordinate) a quad
 // half's three corners take: half 0 is (a-, b-, b+), half 1 (a-, b+, a+), the corners at b on the
 // quad's far side along it; a triangle's are its own. quad: the record is a quad half.
 FN uvec3 recordVertices(uvec4 record, bool quad) {
   if (!quad) return uvec3(record.x, record.y, record.z);
-  return uvec3(record.x, record.y, (record.z & 1u) == 0u ? record.y : record.x);
+  return uvec3(record.x, record.y, quadIsSecondHalf(record.z) ? record.x : record.y);
 }
 
 // Corner `corner` (0, 1, 2) of a quad half as (along, across) signs: -1 at a's end or side, +1 at b's.
 FN vec2 quadCornerSigns(uint code, int corner) {
-  bool second = (code & 1u) != 0u;
+  bool second = quadIsSecondHalf(code);
   if (corner == 0) return vec2(-1.0f, -1.0f);
   if (corner == 1) return second ? vec2(1.0f, 1.0f) : vec2(1.0f, -1.0f);
   return second ? vec2(-1.0f, 1.0f) : vec2(1.0f, 1.0f);
@@ -40,7 +49,7 @@ FN vec2 quadCornerSigns(uint code, int corner) {
 // Half the quad's width in pixels of the frame drawn (frame.pixelScale of the image's pixels: more
 // with samples per pixel): a multiple of 1/512 pixel times a small integer, exact in float.
 FN float quadHalfWidth(uint code, FrameData frame) {
-  PRECISE float w = float(code >> QUAD_WIDTH_SHIFT) * (1.0f / 512.0f) * frame.pixelScale;
+  PRECISE float w = float(quadWidth256(code)) * (1.0f / 512.0f) * frame.pixelScale;
   return w;
 }
 
@@ -51,7 +60,7 @@ FN float quadHalfWidth(uint code, FrameData frame) {
 // homogeneous positions without a division, so any W (a vertex behind the eye) gives the same axis
 // as the visible part: |X_b W_a - X_a W_b| against |Y_b W_a - Y_a W_b|, the same at both ends.
 FN vec4 quadAxes(vec3 ha, vec3 hb, uint code, uint projection) {
-  if ((code & QUAD_POINT) != 0u) return vec4(1.0f, 0.0f, 0.0f, 1.0f);
+  if (quadIsPoint(code)) return vec4(1.0f, 0.0f, 0.0f, 1.0f);
   float wa = homogeneousW(ha, projection);
   float wb = homogeneousW(hb, projection);
   PRECISE float dx = hb.x * wa - ha.x * wb;
