@@ -1,6 +1,8 @@
 // shadow_bvh.cpp — see shadow_bvh.h.
 #include "prepare/shadow_bvh.h"
 
+#include "base/huge_pages.h"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -19,41 +21,48 @@ uint32_t spread(uint32_t v) {
   return v;
 }
 
-// Each triangle's 30-bit Morton code: its centroid's place in the centroids' box, 1024 steps an axis.
-std::vector<uint32_t> mortonCodes(const std::vector<gpu::ShadowTriangle>& triangles) {
-  std::vector<glm::vec3> centroids(triangles.size());
+glm::vec3 centroid(const gpu::ShadowTriangle& t) { return (t.a + t.b + t.c) / 3.0f; }
+
+// Each triangle's 30-bit Morton code: its centroid's place in the centroids' box, 1024 steps an
+// axis; as a sort key, the code in the high word and the triangle's index in the low.
+std::vector<uint64_t> mortonKeys(const std::vector<gpu::ShadowTriangle>& triangles) {
   glm::vec3 low(HUGE_VALF), high(-HUGE_VALF);
-  for (size_t i = 0; i < triangles.size(); ++i) {
-    centroids[i] = (triangles[i].a + triangles[i].b + triangles[i].c) / 3.0f;
-    low = glm::min(low, centroids[i]);
-    high = glm::max(high, centroids[i]);
+  for (const gpu::ShadowTriangle& t : triangles) {
+    const glm::vec3 c = centroid(t);
+    low = glm::min(low, c);
+    high = glm::max(high, c);
   }
   const glm::dvec3 extent = glm::dvec3(high) - glm::dvec3(low);
-  std::vector<uint32_t> codes(triangles.size());
+  glm::dvec3 steps;  // per axis, steps a metre (0 where the centroids do not spread)
+  for (int k = 0; k < 3; ++k) steps[k] = extent[k] > 0 ? 1023.0 / extent[k] : 0.0;
+  std::vector<uint64_t> keys;
+  reserveLarge(keys, triangles.size());
   for (size_t i = 0; i < triangles.size(); ++i) {
+    const glm::vec3 c = centroid(triangles[i]);
     uint32_t q[3];
     for (int k = 0; k < 3; ++k) {
-      const double t = extent[k] > 0 ? (double(centroids[i][k]) - double(low[k])) / extent[k] : 0.0;
-      q[k] = uint32_t(std::clamp(t * 1023.0, 0.0, 1023.0));  // NaN-free: the centroids are finite
+      q[k] = uint32_t(std::clamp((double(c[k]) - double(low[k])) * steps[k], 0.0, 1023.0));  // NaN-free: finite centroids
     }
-    codes[i] = spread(q[0]) << 2 | spread(q[1]) << 1 | spread(q[2]);
+    const uint32_t code = spread(q[0]) << 2 | spread(q[1]) << 1 | spread(q[2]);
+    keys.push_back(uint64_t(code) << 32 | i);
   }
-  return codes;
+  return keys;
 }
 
-// The triangles' indices sorted by code, stably (equal codes keep the input's order): three
-// counting passes of 10 bits.
-std::vector<uint32_t> mortonOrder(const std::vector<uint32_t>& codes) {
-  std::vector<uint32_t> order(codes.size()), next(codes.size());
-  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  for (int shift = 0; shift < 30; shift += 10) {
+// The keys sorted by code, stably (equal codes keep the input's order, which the index in the low
+// word already is): three counting passes of 10 bits over the codes, each reading the keys in
+// order.
+void sortByCode(std::vector<uint64_t>& keys) {
+  std::vector<uint64_t> next;
+  reserveLarge(next, keys.size());
+  next.resize(keys.size());
+  for (int shift = 32; shift < 62; shift += 10) {
     std::array<size_t, 1025> start{};
-    for (uint32_t i : order) ++start[((codes[i] >> shift) & 1023u) + 1];
+    for (uint64_t key : keys) ++start[((key >> shift) & 1023u) + 1];
     for (size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-    for (uint32_t i : order) next[start[(codes[i] >> shift) & 1023u]++] = i;
-    order.swap(next);
+    for (uint64_t key : keys) next[start[(key >> shift) & 1023u]++] = key;
+    keys.swap(next);
   }
-  return order;
 }
 
 struct Builder {
@@ -104,17 +113,19 @@ gpu::ShadowGeometry buildShadowBvh(std::vector<gpu::ShadowTriangle> triangles) {
     triangles.push_back(none);
   }
   gpu::ShadowGeometry geometry;
-  const std::vector<uint32_t> codes = mortonCodes(triangles);
-  const std::vector<uint32_t> order = mortonOrder(codes);
+  std::vector<uint64_t> keys = mortonKeys(triangles);
+  sortByCode(keys);
+  // The triangles in leaf order on ordinary pages: asked for huge pages, this 64-byte-a-triangle
+  // array was at times many times slower to fill (the kernel compacting memory to find them).
   geometry.triangles.reserve(triangles.size());
-  std::vector<uint32_t> sorted;
-  sorted.reserve(triangles.size());
-  for (uint32_t i : order) {
-    geometry.triangles.push_back(triangles[i]);
-    sorted.push_back(codes[i]);
+  std::vector<uint32_t> sorted;  // each leaf-order place's code
+  reserveLarge(sorted, keys.size());
+  for (uint64_t key : keys) {
+    geometry.triangles.push_back(triangles[uint32_t(key)]);
+    sorted.push_back(uint32_t(key >> 32));
   }
   Builder builder{geometry.triangles, sorted, {}};
-  builder.nodes.reserve(2 * (triangles.size() / BVH_LEAF_TRIANGLES + 1));
+  reserveLarge(builder.nodes, 2 * (triangles.size() / BVH_LEAF_TRIANGLES + 1));
   builder.build(0, geometry.triangles.size());
   geometry.nodes = std::move(builder.nodes);
   return geometry;
