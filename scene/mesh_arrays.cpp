@@ -185,18 +185,24 @@ std::vector<T> rowsOf3(const Node& node, ElementReader element) {
 // Positions and normals: 32-bit floats.
 std::vector<float> floatRows(const Node& node) { return rowsOf3<float>(node, floatComponent); }
 
-// Texture coordinates: rows [u, v] of 32-bit floats, flattened.
-std::vector<float> uvRows(const Node& node) {
+// Rows of 2 numbers, each read by `element`, as one flat array of T; a row of another length
+// fails with "must be <shape>, got <its length><unit>".
+template <typename T>
+std::vector<T> rowsOf2(const Node& node, ElementReader element, const char* shape, const char* unit) {
   requireArray(node);
-  std::vector<float> values;
+  std::vector<T> values;
+  values.reserve(2 * node.json().size());
   for (size_t i = 0; i < node.json().size(); ++i) {
     const Node row = node.element(i);
     requireArray(row);
-    if (row.json().size() != 2) row.fail("must be [u, v], got " + std::to_string(row.json().size()) + " numbers");
-    for (size_t c = 0; c < 2; ++c) values.push_back(floatComponent(row.element(c)));
+    if (row.json().size() != 2) row.fail(std::string("must be ") + shape + ", got " + std::to_string(row.json().size()) + unit);
+    for (size_t c = 0; c < 2; ++c) values.push_back(T(element(row.element(c))));
   }
   return values;
 }
+
+// Texture coordinates: rows [u, v] of 32-bit floats, flattened.
+std::vector<float> uvRows(const Node& node) { return rowsOf2<float>(node, floatComponent, "[u, v]", " numbers"); }
 
 double index(const Node& node) {
   return integer(node, std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
@@ -206,17 +212,7 @@ double index(const Node& node) {
 std::vector<int64_t> indexRows(const Node& node) { return rowsOf3<int64_t>(node, index); }
 
 // Lines: rows [a, b] of vertex indices, flattened.
-std::vector<int64_t> pairRows(const Node& node) {
-  requireArray(node);
-  std::vector<int64_t> values;
-  for (size_t i = 0; i < node.json().size(); ++i) {
-    const Node row = node.element(i);
-    requireArray(row);
-    if (row.json().size() != 2) row.fail("must be [a, b], two vertex indices, got " + std::to_string(row.json().size()));
-    for (size_t c = 0; c < 2; ++c) values.push_back(int64_t(index(row.element(c))));
-  }
-  return values;
-}
+std::vector<int64_t> pairRows(const Node& node) { return rowsOf2<int64_t>(node, index, "[a, b], two vertex indices", ""); }
 
 // Points: vertex indices.
 std::vector<int64_t> indexList(const Node& node) {
