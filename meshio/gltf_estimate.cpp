@@ -97,6 +97,23 @@ std::vector<std::string> gltfRequiredExtensions(const std::string& path, bool bi
   return names;
 }
 
+std::string gltfVersionOneSign(const std::string& path, bool binary) {
+  if (binary) {
+    std::string why;
+    const std::optional<RegularFile> file = RegularFile::open(path, why);
+    const std::string header = file ? file->read(8) : "";
+    return header.size() == 8 && header.compare(0, 4, "glTF") == 0 && header.compare(4, 4, std::string("\x01\0\0\0", 4)) == 0
+               ? "a GLB of version 1 (glTF 1.0's binary form)"
+               : "";
+  }
+  const Json root = rootOf(path, binary);
+  if (!root.is_object()) return "";
+  for (const char* key : {"accessors", "bufferViews", "buffers", "meshes", "nodes", "materials"}) {
+    if (root.contains(key) && root[key].is_object()) return "'" + std::string(key) + "' is an object of named entries (glTF 1.0's form)";
+  }
+  return "";
+}
+
 std::optional<uint64_t> gltfTriangles(const std::string& path, bool binary) {
   const Json root = rootOf(path, binary);
   if (!root.is_object()) return std::nullopt;

@@ -372,12 +372,16 @@ std::string unimplementedRequirement(const std::vector<std::string>& required) {
   return "requires the extension" + std::string(missing.size() > 1 ? "s " : " ") + names + ", which phongvk does not implement";
 }
 
+// Why a glTF 1.0 file is refused, after what shows it to be one.
+[[noreturn]] void failVersionOne(const std::string& where, const std::string& path, const std::string& sign) {
+  fail(where, path, sign + "; phongvk reads glTF 2.0 files (convert a glTF 1.0 file to 2.0 first)");
+}
+
 // glTF 2.x (a later minor version is read as 2.0, as the specification allows), and no required
 // extension phongvk does not implement.
 void checkAsset(const tinygltf::Model& model, const std::string& path, const std::string& where) {
   const std::string& version = model.asset.version;
-  if (version.rfind("2.", 0) != 0)
-    fail(where, path, "asset.version is '" + version + "'; phongvk reads glTF 2.0 files (convert a glTF 1.0 file to 2.0 first)");
+  if (version.rfind("2.", 0) != 0) failVersionOne(where, path, "asset.version is '" + version + "'");
   const std::string unimplemented = unimplementedRequirement(model.extensionsRequired);
   if (!unimplemented.empty()) fail(where, path, unimplemented);
 }
@@ -447,6 +451,8 @@ Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std
   if (!loaded) {
     const std::string unimplemented = unimplementedRequirement(gltfRequiredExtensions(path, binary));
     if (!unimplemented.empty()) fail(where, path, unimplemented);
+    const std::string versionOne = gltfVersionOneSign(path, binary);
+    if (!versionOne.empty()) failVersionOne(where, path, versionOne);
     fail(where, path, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " + error.substr(0, error.find('\n')));
   }
   checkAsset(model, path, where);

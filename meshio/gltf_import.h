@@ -35,4 +35,10 @@ std::optional<uint64_t> gltfTriangles(const std::string& path, bool binary);
 // (EXT_meshopt_compression's buffers without a URI). Empty when the JSON cannot be read.
 std::vector<std::string> gltfRequiredExtensions(const std::string& path, bool binary);
 
+// What shows `path` to be a glTF 1.0 file that tinygltf could not load ("a GLB of version 1 (...)",
+// "'accessors' is an object of named entries (...)"), read without tinygltf (gltf_estimate.cpp), so that its refusal says so; "" when
+// nothing does. glTF 1.0's binary form has version 1 in its header, and its JSON keeps accessors,
+// meshes and the other lists as objects of named entries, where glTF 2.0 has arrays.
+std::string gltfVersionOneSign(const std::string& path, bool binary);
+
 }  // namespace phongvk

@@ -61,11 +61,11 @@ struct Gltf {
 };
 
 // What importing `path` throws ("(no error)" when it loads), and that it took under a second.
-std::string importError(const std::string& path) {
+std::string importError(const std::string& path, bool binary = false) {
   const auto start = std::chrono::steady_clock::now();
   std::string message = "(no error)";
   try {
-    importGltf(path, false, false, "objects[0].file");
+    importGltf(path, binary, false, "objects[0].file");
   } catch (const SceneError& error) {
     message = error.what();
   }
@@ -139,6 +139,24 @@ TEST(HostileGltf, IllegalFilesAreRefusedByName) {
     test::writeFile(path, json);
     EXPECT_EQ(importError(path), "objects[0].file: " + path +
                                      ": asset.version is '1.0'; phongvk reads glTF 2.0 files (convert a glTF 1.0 file to 2.0 first)");
+  }
+  {
+    // glTF 1.0 without an asset.version tinygltf reads: lists as objects of named entries (as
+    // assimp-testmodels' CesiumMilkTruck.gltf has them), and the binary form's version 1 header.
+    const std::string dir = test::makeTempDir();
+    const std::string named = dir + "/named.gltf";
+    test::writeFile(named, R"({"accessors": {"a": {"count": 3}}, "meshes": {"m": {"primitives": []}}})");
+    EXPECT_EQ(importError(named), "objects[0].file: " + named +
+                                      ": 'accessors' is an object of named entries (glTF 1.0's form); phongvk reads glTF 2.0 "
+                                      "files (convert a glTF 1.0 file to 2.0 first)");
+    const std::string binary = dir + "/one.glb";
+    const std::string json = R"({"accessors": {}})";
+    std::string glb = "glTF";
+    for (uint32_t word : {1u, uint32_t(20 + json.size()), uint32_t(json.size()), 0u}) glb.append(reinterpret_cast<const char*>(&word), 4);
+    test::writeFile(binary, glb + json);
+    EXPECT_EQ(importError(binary, true), "objects[0].file: " + binary +
+                                       ": a GLB of version 1 (glTF 1.0's binary form); phongvk reads glTF 2.0 files (convert a "
+                                       "glTF 1.0 file to 2.0 first)");
   }
   Gltf mode;
   mode.primitiveExtra = R"(, "mode": -5)";
