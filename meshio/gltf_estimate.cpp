@@ -19,6 +19,9 @@ constexpr uint64_t kSaturated = UINT64_MAX / 4;  // sums stop growing here (the 
 
 uint64_t saturatingAdd(uint64_t a, uint64_t b) { return a > kSaturated - std::min(b, kSaturated) ? kSaturated : a + b; }
 
+// The triangle-array records of `quads` points or line segments: two each.
+uint64_t quadRecords(uint64_t quads) { return saturatingAdd(quads, quads); }
+
 // The JSON of a .gltf (the whole file) or of a .glb (its first chunk).
 std::string jsonText(const RegularFile& file, bool binary) {
   if (!binary) return file.read();
@@ -44,7 +47,8 @@ const Json* element(const Json& root, const char* key, const Json& index) {
 }
 
 // The triangles a primitive makes, by its mode, from its indices' (or positions') count: a point or a
-// line segment counts as one (its vertex, index and drawing take no more than a triangle's).
+// line segment counts as two, the records of the triangle array its quad takes (screen_quads.h), as
+// the built scene counts them (memory_estimate.h).
 uint64_t primitiveTriangles(const Json& root, const Json& primitive) {
   const uint64_t mode = primitive.contains("mode") ? unsignedAt(primitive, "mode") : 4;
   const Json* accessor = nullptr;
@@ -56,10 +60,10 @@ uint64_t primitiveTriangles(const Json& root, const Json& primitive) {
   }
   const uint64_t count = accessor && accessor->is_object() ? unsignedAt(*accessor, "count") : 0;
   switch (mode) {
-    case 0: return count;                          // points
-    case 1: return count / 2;                      // lines
-    case 2: return count > 2 ? count : count / 2;  // a line loop, closed from 3 vertices
-    case 3: return count > 1 ? count - 1 : 0;      // a line strip
+    case 0: return quadRecords(count);                          // points
+    case 1: return quadRecords(count / 2);                      // lines
+    case 2: return quadRecords(count > 2 ? count : count / 2);  // a line loop, closed from 3 vertices
+    case 3: return quadRecords(count > 1 ? count - 1 : 0);      // a line strip
     case 4: return count / 3;
     case 5: case 6: return count > 2 ? count - 2 : 0;
     default: return 0;

@@ -25,7 +25,7 @@ Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std
 
 // The triangles importGltf will build from `path`, counted from the JSON alone (gltf_estimate.cpp):
 // every primitive's index (or position) count, as often as the node tree places its mesh, whatever
-// the size of the buffers; each point and line segment counts as a triangle. A compressed
+// the size of the buffers; each point and line segment counts as two (its quad's two records). A compressed
 // primitive's accessors give its decoded counts (gltf_draco.h refuses data that decodes to others).
 // Nothing when the JSON cannot be read (importGltf then says why).
 std::optional<uint64_t> gltfTriangles(const std::string& path, bool binary);
