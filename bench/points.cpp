@@ -2,8 +2,8 @@
 #include "points.h"
 
 #include "grids.h"
+#include "interleave.h"
 
-#include "api/timing.h"
 #include "phongvk/phongvk.h"
 #include "tools/statistics.h"
 
@@ -55,18 +55,14 @@ PointsRun measure(Backend backend, size_t count, bool quick) {
   gridRenderer.render(grid);  // warm-ups: the builds and every pipeline
   cloudRenderer.render(cloud);
   std::vector<double> gridMs, pointsMs;
-  int k = 1;
-  for (int round = 0; round < (quick ? 1 : POINTS_ROUNDS); ++round) {
-    for (auto [renderer, scene, times] : {std::tuple{&gridRenderer, &grid, &gridMs}, std::tuple{&cloudRenderer, &cloud, &pointsMs}}) {
-      for (int f = 0; f < POINTS_FRAMES; ++f) {
-        scene->setCamera(cameraAt(k + f));  // before the clock starts
-        const auto start = Clock::now();
-        renderer->render(*scene);
-        times->push_back(msSince(start));
-      }
-    }
-    k += POINTS_FRAMES;
-  }
+  const auto moved = [](Scene& scene) {
+    return [&scene](int k) -> const Scene& {
+      scene.setCamera(cameraAt(k));
+      return scene;
+    };
+  };
+  timeInterleaved({{gridRenderer, moved(grid), gridMs}, {cloudRenderer, moved(cloud), pointsMs}}, quick ? 1 : POINTS_ROUNDS,
+                  POINTS_FRAMES);
   run.count = size_t(cloudSide) * size_t(cloudSide);
   run.name = run.backend + ", " + std::to_string(run.count) + " points";
   run.triangles = gridRenderer.stats().triangles;

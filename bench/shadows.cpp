@@ -2,6 +2,7 @@
 #include "shadows.h"
 
 #include "grids.h"
+#include "interleave.h"
 
 #include "api/timing.h"
 #include "phongvk/phongvk.h"
@@ -50,18 +51,11 @@ ShadowRun measure(Backend backend, const std::string& name, const Scene& base, c
   plain.render(withLights(base, lights, 0, false));  // warm-ups: the builds and every pipeline
   shadowed.render(withLights(base, lights, 0, true));
   std::vector<double> plainMs, shadowedMs;
-  int k = 1;
-  for (int round = 0; round < rounds; ++round) {
-    for (auto [renderer, shadows, times] : {std::tuple{&plain, false, &plainMs}, std::tuple{&shadowed, true, &shadowedMs}}) {
-      for (int f = 0; f < SHADOW_FRAMES; ++f) {
-        const Scene frame = withLights(base, lights, k + f, shadows);  // before the clock starts
-        const auto start = Clock::now();
-        renderer->render(frame);
-        times->push_back(msSince(start));
-      }
-    }
-    k += SHADOW_FRAMES;
-  }
+  Scene frame = base;  // the frame being rendered, on either side
+  const auto lit = [&](bool shadows) {
+    return [&, shadows](int k) -> const Scene& { return frame = withLights(base, lights, k, shadows); };
+  };
+  timeInterleaved({{plain, lit(false), plainMs}, {shadowed, lit(true), shadowedMs}}, rounds, SHADOW_FRAMES);
   run.plainMs = median(plainMs);
   run.shadowedMs = median(shadowedMs);
   run.triangles = shadowed.stats().triangles;
