@@ -47,11 +47,10 @@ void checkMeshes(const SceneData& data) {
   const size_t vertices = data.vertices.size();
   for (uint32_t id = 0; id < data.triangles.size(); ++id) {
     const glm::uvec4& t = data.triangles[id];
-    if (t.x >= vertices || t.y >= vertices || (!isQuadRecord(data, id) && t.z >= vertices)) {
-      broken("a triangle index is out of range");
-    }
+    const bool quad = isQuadRecord(data, id);
+    if (t.x >= vertices || t.y >= vertices || (!quad && t.z >= vertices)) broken("a triangle index is out of range");
     const uint32_t width = gpu::quadWidth256(t.z);
-    if (isQuadRecord(data, id) && (width == 0 || width > uint32_t(gpu::QUAD_MAX_WIDTH * 256))) broken("a quad's width is out of range");
+    if (quad && (width == 0 || width > uint32_t(gpu::QUAD_MAX_WIDTH * 256))) broken("a quad's width is out of range");
   }
 }
 
