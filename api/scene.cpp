@@ -415,6 +415,7 @@ Scene loadScene(const std::string& path, const LoadOptions& options) {
   if (options.up != ModelUp::Usual) view.up = options.up == ModelUp::Y ? UpAxis::Y : UpAxis::Z;
   view.orthographic = options.orthographic;
   view.fileLights = options.fileLights;
+  view.fileLightShadows = options.fileLightShadows;
   return firstFrame(std::make_shared<const SceneSequence>(SceneSequence::load(path, view)));
 }
 

@@ -69,7 +69,7 @@ LoadOptions loadOptions(const ViewOptions& options) {
   if (!options.maxMemoryGb.empty()) setMemoryLimit(memoryLimitBytes(options.maxMemoryGb, "--max-memory-gb"));
   return {options.up.empty() ? ModelUp::Usual : parseModelUp(options.up),
           options.projection.empty() ? std::nullopt : std::optional<bool>(parseOrthographic(options.projection)),
-          !options.noFileLights};
+          !options.noFileLights, options.fileLightShadows};
 }
 
 Scene loadEveryFrameValidated(const ViewOptions& options) {

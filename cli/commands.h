@@ -32,6 +32,7 @@ struct ViewOptions {
   std::string up;       // --up y|z: a model file alone stood up along this axis ("": its format's usual one)
   std::string projection;  // --projection perspective|orthographic: a model file alone's fitted camera ("": perspective)
   bool noFileLights = false;  // --no-file-lights: a glTF file alone lit from the camera, not by its own lights
+  bool fileLightShadows = false;  // --file-light-shadows: a glTF file alone: its own lights cast shadows
 };
 
 // --up and --projection as the library takes them.

@@ -61,6 +61,9 @@ void addViewOptions(CLI::App* command, ViewOptions& options) {
   command->add_flag("--no-file-lights", options.noFileLights,
                     "Light a glTF model file rendered alone from the camera, leaving out the lights it places "
                     "(KHR_lights_punctual); a scene file says it per object (\"file_lights\")");
+  command->add_flag("--file-light-shadows", options.fileLightShadows,
+                    "The lights a glTF model file rendered alone places cast shadows (as a light's \"shadows\"); "
+                    "a scene file says it per object (\"file_light_shadows\")");
   command->add_option("--png-level", options.pngLevel,
                       "PNG deflate level: 0 (stored, largest) to 12 (smallest, slowest); the same pixels at every "
                       "level (default " + std::to_string(phongvk::PNG_LEVEL_DEFAULT) + ", the fastest)")

@@ -5,7 +5,8 @@
 
 namespace phongvk {
 
-LightSpec fileLightSpec(const MeshLight& light, const glm::dvec3& origin, const std::optional<glm::dmat3>& pose) {
+LightSpec fileLightSpec(const MeshLight& light, const glm::dvec3& origin, const std::optional<glm::dmat3>& pose,
+                        bool shadows) {
   LightSpec spec;
   const glm::dmat3 linear = pose ? *pose : glm::dmat3(1.0);
   spec.position = origin + linear * light.position;
@@ -18,6 +19,7 @@ LightSpec fileLightSpec(const MeshLight& light, const glm::dvec3& origin, const 
   spec.range = light.range;
   spec.intensity = float(light.intensity / std::numbers::pi);
   spec.color = glm::vec3(light.color);
+  spec.shadows = shadows;
   return spec;
 }
 

@@ -23,7 +23,9 @@ struct ObjectLight {
 // The light where the object stands (`origin`, and its pose's linear part where posed), as a scene
 // light: a point or spot light falls off with the inverse square of the distance (glTF's, windowed
 // at its range), the intensity is glTF's candela or lux divided by pi (glTF's Lambert term is
-// albedo / pi, this contract's kd C), the cones in degrees.
-LightSpec fileLightSpec(const MeshLight& light, const glm::dvec3& origin, const std::optional<glm::dmat3>& pose);
+// albedo / pi, this contract's kd C), the cones in degrees. `shadows`: it casts them (the object's
+// "file_light_shadows").
+LightSpec fileLightSpec(const MeshLight& light, const glm::dvec3& origin, const std::optional<glm::dmat3>& pose,
+                        bool shadows);
 
 }  // namespace phongvk

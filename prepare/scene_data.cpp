@@ -353,7 +353,10 @@ bool sameLightingPlaces(const std::vector<gpu::ObjectData>& a, const std::vector
 }
 
 bool hasShadowedLights(const SceneSpec& scene) {
-  return std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightSpec& l) { return l.shadows; });
+  return std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightSpec& l) { return l.shadows; }) ||
+         std::any_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) {
+           return o.shape == Shape::Mesh && !o.arrays && o.fileLights && o.fileLightShadows;
+         });
 }
 
 uint64_t textureBytes(const SceneData& data) {
@@ -404,7 +407,8 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
   for (const ObjectLight& f : data.fileLights) {
     const Object& object = scene.objects[f.object];
     const std::optional<glm::dmat3> pose = object.poseLinear;
-    data.lights.push_back(gpuLight(fileLightSpec(f.light, data.objectOrigins[f.object], pose), data.lightingOrigin));
+    data.lights.push_back(
+        gpuLight(fileLightSpec(f.light, data.objectOrigins[f.object], pose, object.fileLightShadows), data.lightingOrigin));
   }
   for (size_t i = 0; i < data.objects.size() && i < scene.objects.size(); ++i) {
     data.objects[i].material = static_cast<uint32_t>(scene.objects[i].material);
@@ -424,7 +428,7 @@ void refreshShading(SceneData& data, const SceneSpec& scene) {
 namespace {
 
 bool sameObjectGeometry(const Object& a, const Object& b) {
-  return a.shape == b.shape && a.fileLights == b.fileLights && a.castShadows == b.castShadows && a.pointSize == b.pointSize && a.lineWidth == b.lineWidth && a.center == b.center && a.radius == b.radius && a.size == b.size &&
+  return a.shape == b.shape && a.fileLights == b.fileLights && a.fileLightShadows == b.fileLightShadows && a.castShadows == b.castShadows && a.pointSize == b.pointSize && a.lineWidth == b.lineWidth && a.center == b.center && a.radius == b.radius && a.size == b.size &&
          a.height == b.height && a.segments == b.segments && a.rings == b.rings && a.subdivide == b.subdivide &&
          a.points == b.points && a.file == b.file && a.fileVersion == b.fileVersion && a.arrays == b.arrays &&
          a.scale == b.scale && a.rotation == b.rotation && a.up == b.up && a.baseColors == b.baseColors &&

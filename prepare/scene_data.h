@@ -139,7 +139,8 @@ bool sameGeometry(const SceneSpec& a, const SceneSpec& b);
 // changed (SceneData::shadows).
 void placeObjects(SceneData& data, const SceneSpec& scene);
 
-// Whether some light of the scene casts shadows (LightSpec::shadows).
+// Whether some light of the scene casts shadows (LightSpec::shadows), or may: a mesh file's lights
+// with the object's "file_light_shadows" (whether the file places any is known once it is read).
 bool hasShadowedLights(const SceneSpec& scene);
 
 // Replaces what a frame of a sequence may change without touching geometry: materials, lights,

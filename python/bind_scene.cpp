@@ -176,12 +176,14 @@ phongvk.scene_from_dict(scene.to_dict()) renders the same bytes.)")
 
   m.def(
       "load_scene",
-      [](const FsPath& path, std::optional<std::string> up, std::optional<std::string> projection, bool fileLights) {
+      [](const FsPath& path, std::optional<std::string> up, std::optional<std::string> projection, bool fileLights,
+         bool fileLightShadows) {
         return loadScene(path.text, LoadOptions{up ? parseModelUp(*up) : ModelUp::Usual,
                                                 projection ? std::optional<bool>(parseOrthographic(*projection)) : std::nullopt,
-                                                fileLights});
+                                                fileLights, fileLightShadows});
       },
       py::arg("path"), py::arg("up") = py::none(), py::arg("projection") = py::none(), py::arg("file_lights") = true,
+      py::arg("file_light_shadows") = false,
       R"(Reads and validates a scene file (the CLI's schema), or a model file (.obj .ply .stl .gltf
 .glb) as a scene of its own: the model in full view, lit from the camera. Raises SceneError naming
 the file and the JSON path.
@@ -192,7 +194,9 @@ projection: None, "perspective" or "orthographic": the fitted camera of a model 
     (None: perspective); a scene file's camera says its own, and either given with one is an
     error.
 file_lights: False lights a glTF model file loaded alone from the camera, leaving out the lights it
-    places (KHR_lights_punctual); a scene file says it per object ("file_lights").)");
+    places (KHR_lights_punctual); a scene file says it per object ("file_lights").
+file_light_shadows: True makes the lights a glTF model file loaded alone places cast shadows (as a
+    light's "shadows"); a scene file says it per object ("file_light_shadows").)");
   m.def("scene_from_dict", &sceneFromDict, py::arg("d"), py::arg("base_dir") = py::none(),
         R"(A scene from a dict with the scene file's schema, validated the same way.
 

@@ -173,6 +173,9 @@ std::vector<PathStep> parseTrackPath(const Node& node) {
 
 SceneSequence SceneSequence::load(const std::string& path, const ModelView& modelView) {
   if (isModelFile(path)) {
+    if (modelView.fileLightShadows && !modelView.fileLights) {
+      throw ArgumentError(path + ": shadows from a file's lights need its lights, which are left out");
+    }
     SceneSequence model(modelScene(path, modelView), path, "");
     model.modelAlone_ = true;
     return model;
@@ -184,6 +187,10 @@ SceneSequence SceneSequence::load(const std::string& path, const ModelView& mode
   if (!modelView.fileLights) {
     throw ArgumentError(path + ": leaving out a file's lights applies to a model file rendered alone (.gltf .glb); "
                         "in a scene file each mesh object says \"file_lights\"");
+  }
+  if (modelView.fileLightShadows) {
+    throw ArgumentError(path + ": shadows from a file's lights apply to a model file rendered alone (.gltf .glb); "
+                        "in a scene file each mesh object says \"file_light_shadows\"");
   }
   if (modelView.orthographic.has_value()) {
     throw ArgumentError(path + ": a projection applies to a model file rendered alone (.obj .ply .stl .gltf .glb); "

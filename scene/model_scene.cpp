@@ -31,6 +31,7 @@ scenejson::Json modelScene(const std::string& path, const ModelView& view) {
       {"up", view.up ? (*view.up == UpAxis::Y ? "y" : "z") : usuallyYUp(format) ? "y" : "z"},
       {"material", {{"attenuation", {noFallOff.x, noFallOff.y, noFallOff.z}}}}};
   if (!view.fileLights) object["file_lights"] = false;
+  if (view.fileLightShadows) object["file_light_shadows"] = true;
   return scenejson::Json{
       {"camera", camera},
       {"background", {0.12, 0.12, 0.14}},

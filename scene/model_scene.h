@@ -19,6 +19,7 @@ struct ModelView {
   std::optional<UpAxis> up;
   std::optional<bool> orthographic;  // given: whether the fitted camera is orthographic (else perspective)
   bool fileLights = true;            // false: a glTF file's own lights left out
+  bool fileLightShadows = false;     // true: those lights cast shadows
 };
 
 // The scene for a model alone: the mesh (standing up along view.up; back faces drawn), a camera

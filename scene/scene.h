@@ -138,6 +138,7 @@ struct Object {
   std::shared_ptr<const Mesh> arrays;  // mesh: given as arrays (mesh_arrays.h) instead of a file
   bool baseColors = false;           // mesh: a glTF file's base colours apply (it names no material)
   bool fileLights = true;            // mesh: a glTF file's own lights (KHR_lights_punctual) light the scene
+  bool fileLightShadows = false;     // mesh: "file_light_shadows": those lights cast shadows
   bool castShadows = true;           // "cast_shadows": its triangles block shadow rays
   std::optional<double> pointSize;   // "point_size": its points' side in pixels, over the scene's render.point_size
   std::optional<double> lineWidth;   // "line_width": its lines' width in pixels, likewise

@@ -31,7 +31,7 @@ const std::vector<ShapeInfo> kShapes = {
     {Shape::Icosphere, "icosphere", {"center", "radius"}},
     {Shape::Polyhedron, "polyhedron", {"points"}},
     {Shape::Mesh, "mesh", {"file", "vertices", "faces", "lines", "point_indices", "normals", "colors", "uvs", "textures",
-                           "texture_ids", "translate", "up", "pose", "file_lights", "point_size", "line_width"}},
+                           "texture_ids", "translate", "up", "pose", "file_lights", "file_light_shadows", "point_size", "line_width"}},
 };
 
 
@@ -92,10 +92,15 @@ void readMeshSource(const Node& node, const std::string& baseDir, Object& object
     }
     resolveMeshFile(node.require("file"), baseDir, object);
     if (auto lights = node.find("file_lights")) object.fileLights = boolean(*lights);
+    if (auto shadows = node.find("file_light_shadows")) object.fileLightShadows = boolean(*shadows);
+    if (object.fileLightShadows && !object.fileLights)
+      node.failAt("file_light_shadows", "needs the file's lights, which \"file_lights\": false leaves out");
     return;
   }
   if (file) file->fail("cannot be given with 'vertices': a mesh is a file or arrays");
-  if (node.find("file_lights")) node.failAt("file_lights", "needs 'file' (the lights of a mesh file)");
+  for (std::string_view key : {"file_lights", "file_light_shadows"}) {
+    if (node.find(key)) node.failAt(key, "needs 'file' (the lights of a mesh file)");
+  }
   object.arrays = readMeshArrays(node, baseDir);
 }
 

@@ -164,6 +164,7 @@ void writeGeometry(const Object& object, Json& json) {
   } else {
     json["file"] = std::filesystem::absolute(object.file).lexically_normal().string();
     if (!object.fileLights) json["file_lights"] = false;
+    if (object.fileLightShadows) json["file_light_shadows"] = true;
   }
   json["translate"] = vec3Json(object.translate);
   json["up"] = object.up == UpAxis::Y ? "y" : "z";

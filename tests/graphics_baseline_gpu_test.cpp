@@ -27,10 +27,11 @@ namespace {
 // (lower triangle id) needs exactly equal depths, the hardware interpolates depth per triangle
 // and each rounding picks a winner (about 7% of its pixels differ, as speckle on both sides).
 // textured.json: the baseline draws no textures (docs/DESIGN.md "Textures"), only the lit colours.
-// shadows.json: the baseline casts no shadows (docs/DESIGN.md "Shadows") and shades per vertex.
+// shadows.json, file_lights.json: the baseline casts no shadows (docs/DESIGN.md "Shadows") and
+// shades per vertex.
 // points_lines.json: the baseline draws triangles only (docs/DESIGN.md "Points and lines").
 const char* const EXCLUDED[] = {"scenes/stress/z_fighting.json", "scenes/textured.json", "scenes/shadows.json",
-                                "scenes/points_lines.json"};
+                                "scenes/file_lights.json", "scenes/points_lines.json"};
 
 std::vector<std::string> diffedScenes() {
   std::vector<std::string> scenes;

@@ -138,6 +138,9 @@ TEST(SceneErrors, LightFalloff) {
   EXPECT_EQ(objectError(R"({"shape": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "faces": [[0, 1, 2]],
                            "file_lights": false})"),
             "a.json: objects[0].file_lights: needs 'file' (the lights of a mesh file)");
+  EXPECT_EQ(objectError(R"({"shape": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "faces": [[0, 1, 2]],
+                           "file_light_shadows": true})"),
+            "a.json: objects[0].file_light_shadows: needs 'file' (the lights of a mesh file)");
 }
 
 TEST(SceneErrors, UnknownKeyNested) {

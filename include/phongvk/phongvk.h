@@ -198,6 +198,10 @@ struct LoadOptions {
   // (KHR_lights_punctual), lighting it from the camera as other files are. A scene file says it
   // per object ("file_lights"), and false given with one is an error.
   bool fileLights = true;
+  // Only for a model file alone: true, the lights a glTF file places cast shadows (as a light's
+  // "shadows"). A scene file says it per object ("file_light_shadows"), and true given with one is
+  // an error, as it is with fileLights false.
+  bool fileLightShadows = false;
 };
 
 // Reads and validates a scene file, or a model file (.obj .ply .stl .gltf .glb) as a scene of its

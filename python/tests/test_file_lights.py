@@ -142,3 +142,33 @@ def test_the_scene_and_its_files_together_have_at_most_1024_lights(tmp_path):
     with pytest.raises(phongvk.SceneError, match=r"the scene's 1024 lights and the 1 its model files place are more than "
                                                  r"the 1024 a scene may have"):
         phongvk.Renderer("cpu").render(placed(file, lights=lights))
+
+
+def test_a_files_lights_cast_shadows_when_the_object_says_so(tmp_path):
+    # A ball 1 m above the floor's centre, under the file's spot light 2 m up: its shadow on the
+    # floor reaches about twice its 0.3 m radius, so the floor 0.45 m from the centre (7 pixels) is
+    # seen past the ball and, with "file_light_shadows", in its shadow.
+    file = lamp(tmp_path)
+
+    def scene(**object_keys):
+        d = placed(file, **object_keys).to_dict()
+        d["objects"].append({"shape": "sphere", "center": [0, 0, 1], "radius": 0.3, "material": "white"})
+        return phongvk.scene_from_dict(d)
+
+    lit, shadowed = both(scene()), both(scene(file_light_shadows=True))
+    bright = lit.astype(int).sum(axis=2)
+    dark = shadowed.astype(int).sum(axis=2)
+    assert bright[32, 39] > 0 and dark[32, 39] < bright[32, 39] / 4
+    assert dark[32, 32 + 20] == bright[32, 32 + 20]  # the lit floor beyond the shadow, unchanged
+    assert scene(file_light_shadows=True).to_dict()["objects"][0]["file_light_shadows"] is True
+    assert "file_light_shadows" not in scene().to_dict()["objects"][0]
+    # A model alone, likewise; the option is a model's alone, and needs the file's lights.
+    gpu = phongvk.Renderer("gpu")
+    gpu.render(phongvk.load_scene(file, file_light_shadows=True))
+    assert gpu.stats.lights == 2
+    with pytest.raises(phongvk.ArgumentError, match="need its lights"):
+        phongvk.load_scene(file, file_lights=False, file_light_shadows=True)
+    with pytest.raises(phongvk.ArgumentError, match="file_light_shadows"):
+        phongvk.load_scene(pathlib.Path(__file__).parents[2] / "scenes" / "basic.json", file_light_shadows=True)
+    with pytest.raises(phongvk.SceneError, match=r"objects\[0\].file_light_shadows: needs the file's lights"):
+        scene(file_lights=False, file_light_shadows=True)
