@@ -126,6 +126,7 @@ class Reader {
     if (n.mesh >= 0) {
       if (size_t(n.mesh) >= model_.meshes.size()) fail(where_, path_, "node " + std::to_string(index) + " names a mesh that does not exist");
       const std::vector<tinygltf::Primitive>& primitives = model_.meshes[size_t(n.mesh)].primitives;
+      if (primitives.empty() && emptyMesh_.empty()) emptyMesh_ = "meshes[" + std::to_string(n.mesh) + "]";
       for (size_t p = 0; p < primitives.size(); ++p)
         primitive(primitives[p], transform, "meshes[" + std::to_string(n.mesh) + "].primitives[" + std::to_string(p) + "]");
     }
@@ -133,6 +134,9 @@ class Reader {
   }
 
   std::vector<MeshPart>& parts() { return parts_; }
+  // The first mesh the nodes reach that has no primitives ("meshes[0]"; tinygltf leaves a
+  // "primitives" that is not a list empty), or "": why a file that draws nothing does not.
+  const std::string& emptyMesh() const { return emptyMesh_; }
   std::vector<MeshLight>& lights() { return lights_; }
 
  private:
@@ -348,6 +352,7 @@ class Reader {
   std::optional<DracoPrimitive> draco_;  // the primitive being read, decoded, where it is compressed
   std::vector<MeshLight> lights_;  // in the order the node tree reaches them
   std::vector<bool> visited_;  // nodes reached so far
+  std::string emptyMesh_;
   std::map<int, std::shared_ptr<const TextureImage>> textures_;  // by texture index, once decoded
   std::map<int, std::shared_ptr<const TextureImage>> images_;    // by image index, once decoded
   std::vector<std::string> ignoredMaps_;  // the kinds of map seen that are not rendered
@@ -456,11 +461,13 @@ Mesh importGltf(const std::string& path, bool binary, bool baseColors, const std
     fail(where, path, std::string("not a valid ") + (binary ? "GLB" : "glTF") + " file: " + error.substr(0, error.find('\n')));
   }
   checkAsset(model, path, where);
-  if (model.scenes.empty()) fail(where, path, "no scene");
+  if (model.scenes.empty()) fail(where, path, "no scene (its 'scenes' is missing or empty)");
   const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : 0;
   if (size_t(sceneIndex) >= model.scenes.size()) fail(where, path, "the default scene does not exist");
   Reader reader(model, baseColors, path, where);
   for (int n : model.scenes[size_t(sceneIndex)].nodes) reader.node(n, glm::dmat4(1.0), 0);
+  if (reader.parts().empty() && !reader.emptyMesh().empty())
+    fail(where, path, std::string(NOTHING_TO_DRAW) + ": " + reader.emptyMesh() + " has no primitives (glTF 2.0 asks for a list of one or more)");
   Mesh mesh = joinParts(reader.parts(), true, where + ": " + path);
   mesh.notice = reader.notice();
   mesh.lights = std::move(reader.lights());

@@ -158,6 +158,20 @@ TEST(HostileGltf, IllegalFilesAreRefusedByName) {
                                        ": a GLB of version 1 (glTF 1.0's binary form); phongvk reads glTF 2.0 files (convert a "
                                        "glTF 1.0 file to 2.0 first)");
   }
+  {
+    // A mesh whose "primitives" is not a list (assimp-testmodels' wrongTypes/badArray.gltf) and a
+    // default scene of a file without scenes (TestNoRootNode/NoScene.gltf): refused by what is wrong.
+    const std::string dir = test::makeTempDir();
+    const std::string notList = dir + "/not_list.gltf";
+    test::writeFile(notList, R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+                                 "nodes": [{"mesh": 0}], "meshes": [{"primitives": {"not a list": {}}}]})");
+    EXPECT_EQ(importError(notList), "objects[0].file: " + notList +
+                                        ": nothing to draw (no triangles, lines or points): meshes[0] has no primitives "
+                                        "(glTF 2.0 asks for a list of one or more)");
+    const std::string noScenes = dir + "/no_scenes.gltf";
+    test::writeFile(noScenes, R"({"asset": {"version": "2.0"}, "scene": 0})");
+    EXPECT_EQ(importError(noScenes), "objects[0].file: " + noScenes + ": no scene (its 'scenes' is missing or empty)");
+  }
   Gltf mode;
   mode.primitiveExtra = R"(, "mode": -5)";
   EXPECT_EQ(gltfError(mode), "a primitive's mode is -5, not a glTF primitive mode (0 to 6)");
