@@ -84,14 +84,13 @@ TEXELS(BINDING_SHADOW_TRIANGLES, shadowTriangleTexels)  // ShadowTriangle[], lik
 layout(std430, binding = BINDING_SHADED) writeonly buffer ShadedPositions { vec4 shadedPositions[]; };
 layout(std430, binding = BINDING_SHADED_COLORS) writeonly buffer ShadedColors { vec4 shadedColors[]; };
 // The key buffer: a 64-bit key per pixel (depth.h), or on the 32-bit key path the same key as its
-// two words, low (the triangle id) first: the same bytes either way.
+// two words, low (the triangle id) first: the same bytes either way. A pair, not two uints: one
+// 8-byte load or store a pixel, where lavapipe makes a loop over the lanes of each (the atomics
+// take the pair's words: raster_loops.glsl offerKey).
 #ifdef PHONGVK_KEYS32
-layout(std430, binding = BINDING_KEYS) buffer Keys { uint keyWords[]; };
-uvec2 loadKey(uint i) { return uvec2(keyWords[2u * i], keyWords[2u * i + 1u]); }
-void storeKey(uint i, uvec2 key) {
-  keyWords[2u * i] = key.x;
-  keyWords[2u * i + 1u] = key.y;
-}
+layout(std430, binding = BINDING_KEYS) buffer Keys { uvec2 keyPairs[]; };
+uvec2 loadKey(uint i) { return keyPairs[i]; }
+void storeKey(uint i, uvec2 key) { keyPairs[i] = key; }
 #else
 layout(std430, binding = BINDING_KEYS) buffer Keys { uint64_t keys[]; };
 uint64_t loadKey(uint i) { return keys[i]; }

@@ -23,9 +23,9 @@ const bool IDS_PASS = KEY_PASS == KEY_PASS_IDS;
 void offerKey(uint i, VisibilityKey key) {
 #ifdef PHONGVK_KEYS32
   if (!IDS_PASS) {
-    atomicMin(keyWords[2u * i + 1u], keyHigh(key));
-  } else if (keyWords[2u * i + 1u] == keyHigh(key)) {
-    atomicMin(keyWords[2u * i], keyLow(key));
+    atomicMin(keyPairs[i].y, keyHigh(key));
+  } else if (keyPairs[i].y == keyHigh(key)) {
+    atomicMin(keyPairs[i].x, keyLow(key));
   }
 #else
   atomicMin(keys[i], key);
