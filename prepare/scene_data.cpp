@@ -193,6 +193,18 @@ void keepShadowCasters(SceneData& data, const SceneSpec& scene) {
   }
 }
 
+bool sceneLightsCastShadows(const SceneSpec& scene) {
+  return std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightSpec& l) { return l.shadows; });
+}
+
+// Whether the built scene traces shadow rays: a scene light casts shadows, or a light a mesh file
+// placed whose object says "file_light_shadows" (known once the files are read).
+bool tracesShadows(const SceneData& data, const SceneSpec& scene) {
+  return sceneLightsCastShadows(scene) || std::any_of(data.fileLights.begin(), data.fileLights.end(), [&](const ObjectLight& f) {
+           return scene.objects[f.object].fileLightShadows;
+         });
+}
+
 // The shadow rays' tree for the objects where they now stand, unless it was built for these places.
 // Each caster's vertices as the shade pass lights them: posed, in the lighting frame.
 void placeShadowCasters(SceneData& data) {
@@ -270,7 +282,7 @@ SceneData buildSceneData(const SceneSpec& scene) {
     if (const auto& texture = scene.materials[size_t(object.material)].textureImage) pooledTexture(data, texture);
   }
   checkFileLightCount(data, scene);
-  if (hasShadowedLights(scene)) keepShadowCasters(data, scene);
+  if (tracesShadows(data, scene)) keepShadowCasters(data, scene);
   keepShare(data, scene);
   placeObjects(data, scene);
   refreshShading(data, scene);
@@ -353,8 +365,7 @@ bool sameLightingPlaces(const std::vector<gpu::ObjectData>& a, const std::vector
 }
 
 bool hasShadowedLights(const SceneSpec& scene) {
-  return std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightSpec& l) { return l.shadows; }) ||
-         std::any_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) {
+  return sceneLightsCastShadows(scene) || std::any_of(scene.objects.begin(), scene.objects.end(), [](const Object& o) {
            return o.shape == Shape::Mesh && !o.arrays && o.fileLights && o.fileLightShadows;
          });
 }

@@ -140,7 +140,8 @@ bool sameGeometry(const SceneSpec& a, const SceneSpec& b);
 void placeObjects(SceneData& data, const SceneSpec& scene);
 
 // Whether some light of the scene casts shadows (LightSpec::shadows), or may: a mesh file's lights
-// with the object's "file_light_shadows" (whether the file places any is known once it is read).
+// with the object's "file_light_shadows", before the file is read (the memory estimate counts the
+// tree for it; the build makes one only where the file places lights).
 bool hasShadowedLights(const SceneSpec& scene);
 
 // Replaces what a frame of a sequence may change without touching geometry: materials, lights,

@@ -290,6 +290,15 @@ TEST(Shadows, TheTreeIsBuiltOncePerPlacementAndOnlyForShadowedLights) {
   spec.lights[0].shadows = true;
   spec.objects[1].castShadows = false;  // the sphere casts none: only the floor's 12 triangles
   EXPECT_EQ(buildSceneData(spec).shadows->triangles.size(), 12u);
+  // A mesh file's own lights with "file_light_shadows": a tree where the file places lights, none
+  // where it places none (an OBJ).
+  const auto fileScene = [](const std::string& file) {
+    return parseSceneSpec(R"({"camera": {"position": [0, -4, 2], "look_at": [0, 0, 0]}, "objects": [
+                               {"shape": "mesh", "file": ")" + file + R"(", "file_light_shadows": true}]})",
+                          "a.json", PHONGVK_SOURCE_DIR "/scenes");
+  };
+  EXPECT_TRUE(buildSceneData(fileScene("meshes/lamp.gltf")).shadows);
+  EXPECT_FALSE(buildSceneData(fileScene("meshes/torus.obj")).shadows) << "no tree for a file without lights";
 }
 
 TEST(Shadows, AThousandShadowedLightsOnASmallSceneRenderInBoundedTimeOrSayWhyNot) {
