@@ -24,6 +24,8 @@ FN bool edgeLess(Wide a, Wide b) { return wideLess(a, b); }
 FN bool edgeEqual(Wide a, Wide b) { return a.lo == b.lo && a.hi == b.hi; }
 FN float edgeEstimate(Wide a) { return wideEstimate(a); }
 FN int edgeQuotient(Wide n, int d) { return wideQuotient(n, d); }
+FN Wide edgeFloorDiv256(Wide a) { return wideFloorDiv256(a); }
+FN uint edgeClampToUint(Wide a) { return wideClampToUint(a); }
 // (b.x - a.x) (p.y - a.y) - (b.y - a.y) (p.x - a.x): the differences fit an int (snapped
 // coordinates and pixel centres stay below 2^28 and 2^31 subpixels).
 FN Wide edgeAt(ivec2 a, ivec2 b, ivec2 p) { return wideEdgeFunction(a, b, p); }
@@ -39,6 +41,8 @@ FN bool edgeLess(int64_t a, int64_t b) { return a < b; }
 FN bool edgeEqual(int64_t a, int64_t b) { return a == b; }
 FN float edgeEstimate(int64_t a) { return float(a); }
 FN int edgeQuotient(int64_t n, int d) { return int(n / int64_t(d)); }
+FN int64_t edgeFloorDiv256(int64_t a) { return a >> 8; }  // arithmetic: toward minus infinity
+FN uint edgeClampToUint(int64_t a) { return a < int64_t(0) ? 0u : (a > int64_t(0xFFFFFFFFu) ? 0xFFFFFFFFu : uint(a)); }
 // The edge function with every coordinate taken to 64 bits first.
 FN int64_t edgeAt(ivec2 a, ivec2 b, ivec2 p) {
   return (int64_t(b.x) - int64_t(a.x)) * (int64_t(p.y) - int64_t(a.y)) -

@@ -88,27 +88,67 @@ FN int classifyEdge(ivec2 a, ivec2 b, EdgeInt e, int size) {
   return !edgeNegative(lo) ? BLOCK_INSIDE : BLOCK_PARTIAL;
 }
 
+// Whether the size x size block at pixel `origin` overlaps the triangle's box.
+FN bool blockInBox(LargeTriangle t, ivec2 origin, int size) {
+  return origin.x <= t.bbox.z && origin.x + size - 1 >= t.bbox.x && origin.y <= t.bbox.w && origin.y + size - 1 >= t.bbox.y;
+}
+
 // BLOCK_INSIDE: covers() holds at every pixel centre of the size x size block at `origin` (which
 // may reach past the image); BLOCK_OUTSIDE: at none (within the image); else test each pixel.
 FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
-  if (origin.x > t.bbox.z || origin.x + size - 1 < t.bbox.x || origin.y > t.bbox.w || origin.y + size - 1 < t.bbox.y) {
-    return BLOCK_OUTSIDE;
-  }
+  if (!blockInBox(t, origin, size)) return BLOCK_OUTSIDE;
   int c0 = classifyEdge(t.v1, t.v2, e.e0, size);
   int c1 = classifyEdge(t.v2, t.v0, e.e1, size);
   int c2 = classifyEdge(t.v0, t.v1, e.e2, size);
   return min(c0, min(c1, c2));
 }
 
+// One edge's function across a bin in float: its value at the bin's first pixel centre (exact,
+// then estimated), what one pixel right and one down add, and a bound on how far any value of the
+// bin computed from them (tileEstimate) may stray from the exact one. The bound holds for any
+// faithful rounding (an error under one unit in the last place per operation, with or without
+// fused multiply-adds: SwiftShader does not promise round-to-nearest): edgeEstimate is within
+// 2^9 + 2^-22 |e|, each of tileEstimate's few operations within 2^-23 of the largest magnitude
+// involved, M = |e| + BIN_SIZE (|dx| + |dy|); the margin, 1024 + M / 65536, is several times that.
+// Values stay integers below 2^63 or zero: no denormal, overflow or NaN.
+struct EdgeEstimate {
+  float at;
+  float dx;
+  float dy;
+  float margin;
+};
+
+FN EdgeEstimate edgeEstimateOf(ivec2 a, ivec2 b, EdgeInt e) {
+  EdgeEstimate r;
+  r.at = edgeEstimate(e);
+  r.dx = float(a.y - b.y) * float(SUBPIXEL_ONE);
+  r.dy = float(b.x - a.x) * float(SUBPIXEL_ONE);
+  r.margin = (abs(r.at) + float(BIN_SIZE) * (abs(r.dx) + abs(r.dy))) * (1.0f / 65536.0f) + 1024.0f;
+  return r;
+}
+
+// How tile (i, j) of the bin relates to one edge, from its estimate: BLOCK_OUTSIDE only where the
+// largest value at its pixel centres is negative beyond the margin, BLOCK_INSIDE only where the
+// smallest is at least the margin, else BLOCK_PARTIAL. So it never calls a tile outside or inside
+// that classifyEdge would not, and differs from it only within the margin of 0.
+FN int classifyEdgeEstimate(EdgeEstimate e, int i, int j) {
+  float corner = float(TILE_SIZE - 1u);
+  float base = e.at + e.dx * float(i * int(TILE_SIZE)) + e.dy * float(j * int(TILE_SIZE));
+  float hi = base + max(e.dx * corner, 0.0f) + max(e.dy * corner, 0.0f);
+  float lo = base + min(e.dx * corner, 0.0f) + min(e.dy * corner, 0.0f);
+  if (hi + e.margin < 0.0f) return BLOCK_OUTSIDE;
+  return lo - e.margin >= 0.0f ? BLOCK_INSIDE : BLOCK_PARTIAL;
+}
+
 // The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre (x): bit
 // j * BIN_TILES + i for tile (i, j) unless classifyBlock calls it outside, 0 for none; and those
 // it owns (y): every pixel centre of the tile covered (BLOCK_INSIDE) and no depth of the triangle
 // past the far plane, so wherever nothing else reaches such a tile the triangle wins each of its
-// pixels without a depth test (resolve_large.comp). Unrolled: lavapipe counts every loop
+// pixels without a depth test (resolve_large.comp). Both forms unrolled: lavapipe counts every loop
 // iteration against one invocation's budget (bindings.glsl checkLoopBudget), and 16 of them per
 // bin of a triangle across a 4K image's 8160 bins pass it (a loop on the 32-bit key path: glsl_cpp.h
 // UNROLL_KEYS64; a frame that runs out of the budget is rendered again with more workgroups).
-FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) {
+FN uvec2 binTileMasksExact(LargeTriangle t, ivec2 origin, float farPlane) {
   BlockEdges e = blockEdges(t, origin);
   uvec2 masks = uvec2(0u);
   UNROLL_KEYS64 for (int j = 0; j < int(BIN_TILES); ++j) {
@@ -127,6 +167,37 @@ FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) {
   if (!(t.zMax <= farPlane)) masks.y = 0u;
   return masks;
 }
+
+// binTileMasksExact's masks from the edges' float estimates (classifyEdgeEstimate): every tile
+// the exact masks keep is kept, and every tile owned here the exact masks own; a tile within the
+// margin of an edge may be kept or left unowned where the exact masks would not, which costs
+// resolve a tile's pixel tests and changes no pixel. The 32-bit key path's masks: with the edge
+// values in pairs of words, the exact tile steps cost several times the float ones (docs/DECISIONS.md,
+// "The 32-bit key path").
+FN uvec2 binTileMasksEstimated(LargeTriangle t, ivec2 origin, float farPlane) {
+  BlockEdges e = blockEdges(t, origin);
+  EdgeEstimate e0 = edgeEstimateOf(t.v1, t.v2, e.e0);
+  EdgeEstimate e1 = edgeEstimateOf(t.v2, t.v0, e.e1);
+  EdgeEstimate e2 = edgeEstimateOf(t.v0, t.v1, e.e2);
+  uvec2 masks = uvec2(0u);
+  UNROLL_KEYS64 for (int j = 0; j < int(BIN_TILES); ++j) {
+    UNROLL_KEYS64 for (int i = 0; i < int(BIN_TILES); ++i) {
+      int block = blockInBox(t, origin + ivec2(i, j) * int(TILE_SIZE), int(TILE_SIZE)) ? BLOCK_INSIDE : BLOCK_OUTSIDE;
+      block = min(block, min(classifyEdgeEstimate(e0, i, j), min(classifyEdgeEstimate(e1, i, j), classifyEdgeEstimate(e2, i, j))));
+      uint bit = 1u << uint(j * int(BIN_TILES) + i);
+      if (block != BLOCK_OUTSIDE) masks.x |= bit;
+      if (block == BLOCK_INSIDE) masks.y |= bit;
+    }
+  }
+  if (!(t.zMax <= farPlane)) masks.y = 0u;
+  return masks;
+}
+
+#ifdef PHONGVK_KEYS32
+FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) { return binTileMasksEstimated(t, origin, farPlane); }
+#else
+FN uvec2 binTileMasks(LargeTriangle t, ivec2 origin, float farPlane) { return binTileMasksExact(t, origin, farPlane); }
+#endif
 
 // x on edge a -> b at height y (subpixels), to within a subpixel (the quotient is truncated);
 // a.y != b.y, and y between them. The product stays within 64 bits for snapped coordinates.
@@ -165,35 +236,59 @@ FN ivec2 binRowRange(LargeTriangle t, int by, ivec4 bins) {
   return ivec2(first, last) / int(BIN_SIZE);
 }
 
-// The edge values walking down column i of a block: at the current row (starting at row 0), and
-// what one row down adds. Integer steps, so each row's values are exactly edgeFunction's there.
+// One edge down column i of a tile (TILE_SIZE pixels square) in 32-bit words, exactly. With e the
+// edge function (plus bias) at the tile's first pixel centre, dy = a.y - b.y and dx = b.x - a.x,
+// pixel (i, j) of the tile has e + 256 s, s = i dy + j dx, and is covered where that is >= 0, that
+// is where s >= ceil(-e / 256), s being an integer. s less its smallest value in the tile,
+// s' = s - 7 (min(dy, 0) + min(dx, 0)), lies in [0, 7 (|dx| + |dy|)]: below 2^32, because the guard
+// band keeps every snapped coordinate within 2^27 subpixels of the principal point's (shared.h
+// GUARD_BAND), so |dx|, |dy| <= 2^28 and 7 (|dx| + |dy|) <= 0.875 * 2^32. So s' is a uint, stepped
+// down the column by adding dx modulo 2^32 (exact, as every true value lies in the uint's range),
+// and the pixel is covered where s' >= least = ceil(-e / 256) - 7 (min(dy, 0) + min(dx, 0)) held to
+// [0, 2^32 - 1] (0: the whole column is covered; 2^32 - 1: none of it is, s' never reaching it).
+// Only `least` needs the edge's 64-bit value, once per tile; the rows need one 32-bit add and
+// compare per edge, where 64-bit values (emulated in two words on the 32-bit key path) need several.
+struct ColumnEdge {
+  uint at;     // s' at the current row
+  uint down;   // dx: what one row down adds, modulo 2^32
+  uint least;  // covered where at >= least
+};
+
+FN ColumnEdge columnEdge(ivec2 a, ivec2 b, EdgeInt e, int i) {
+  int dy = a.y - b.y;
+  int dx = b.x - a.x;
+  int last = int(TILE_SIZE) - 1;
+  ColumnEdge c;
+  c.at = uint((dy < 0 ? last - i : i) * abs(dy)) + uint(last * max(-dx, 0));  // each term < 2^31
+  c.down = uint(dx);
+  EdgeInt lowest = edgeAdd(edgeInt(last * min(dy, 0)), edgeInt(last * min(dx, 0)));  // 7 min(...), in 64 bits
+  c.least = edgeClampToUint(edgeSub(edgeSub(edgeInt(0), edgeFloorDiv256(e)), lowest));
+  return c;
+}
+
+// The three edges down column i of a tile (columnEdge), from their values at its first pixel (e).
 struct ColumnEdges {
-  BlockEdges at;
-  BlockEdges down;
+  ColumnEdge e0;
+  ColumnEdge e1;
+  ColumnEdge e2;
 };
 
 FN ColumnEdges columnEdges(LargeTriangle t, BlockEdges e, int i) {
   ColumnEdges c;
-  c.at.e0 = edgeStep(t.v1, t.v2, e.e0, i, 0);
-  c.at.e1 = edgeStep(t.v2, t.v0, e.e1, i, 0);
-  c.at.e2 = edgeStep(t.v0, t.v1, e.e2, i, 0);
-  c.down.e0 = edgeStep(t.v1, t.v2, edgeInt(0), 0, 1);
-  c.down.e1 = edgeStep(t.v2, t.v0, edgeInt(0), 0, 1);
-  c.down.e2 = edgeStep(t.v0, t.v1, edgeInt(0), 0, 1);
+  c.e0 = columnEdge(t.v1, t.v2, e.e0, i);
+  c.e1 = columnEdge(t.v2, t.v0, e.e1, i);
+  c.e2 = columnEdge(t.v0, t.v1, e.e2, i);
   return c;
 }
 
-FN bool columnCovers(ColumnEdges c) {
-  return !edgeNegative(c.at.e0) && !edgeNegative(c.at.e1) && !edgeNegative(c.at.e2);
-}
+FN bool columnCovers(ColumnEdges c) { return c.e0.at >= c.e0.least && c.e1.at >= c.e1.least && c.e2.at >= c.e2.least; }
 
 FN ColumnEdges nextRow(ColumnEdges c) {
-  c.at.e0 = edgeAdd(c.at.e0, c.down.e0);
-  c.at.e1 = edgeAdd(c.at.e1, c.down.e1);
-  c.at.e2 = edgeAdd(c.at.e2, c.down.e2);
+  c.e0.at += c.e0.down;
+  c.e1.at += c.e1.down;
+  c.e2.at += c.e2.down;
   return c;
 }
-
 
 // A large triangle's GouraudTriangle as resolve reads it for each tile the triangle may cover:
 // stored with its set-up by the clip pass (LargeSetup) instead of the triangle's index, its three

@@ -65,6 +65,17 @@ FN bool wideLess(Wide a, Wide b) { return int(a.hi) < int(b.hi) || (a.hi == b.hi
 
 FN Wide wideNegate(Wide a) { return wideSub(wideOf(0), a); }
 
+// floor(a / 256): an arithmetic shift right by 8 across the words.
+FN Wide wideFloorDiv256(Wide a) {
+  Wide r;
+  r.lo = (a.lo >> 8) | (a.hi << 24);
+  r.hi = uint(int(a.hi) >> 8);
+  return r;
+}
+
+// The value held to [0, 2^32 - 1], as a uint.
+FN uint wideClampToUint(Wide a) { return wideNegative(a) ? 0u : (a.hi != 0u ? 0xFFFFFFFFu : a.lo); }
+
 // The value as a float, near enough for an estimate that exact integer steps then correct (not
 // rounded as a conversion of the 64-bit integer would be).
 FN float wideEstimate(Wide a) { return float(int(a.hi)) * 4294967296.0f + float(a.lo); }

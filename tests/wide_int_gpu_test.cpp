@@ -1,6 +1,6 @@
 // The GLSL side of shaders/wide_int.h on the device the tests run on (selftest_wide_int.comp, which
-// uses no 64-bit type): the edge functions and sums it gives in two words are int64_t's, over the
-// whole range of snapped coordinates. Its module declares no Int64 capability, and its context asks
+// uses no 64-bit type): the edge functions, sums, floors of a 256th and values held to a uint's
+// range it gives in two words are int64_t's, over the whole range of snapped coordinates. Its module declares no Int64 capability, and its context asks
 // for no 64-bit feature, so it runs on a device without shaderInt64: CTest runs it on SwiftShader
 // too (tests/CMakeLists.txt, label swiftshader).
 #include "shaders/edges.h"
@@ -46,7 +46,7 @@ TEST(WideIntGpu, EdgeFunctionsAndSumsAreInt64s) {
                                                      bindings, sizeof(uint32_t), {});
     Buffer inputs, results;
     createBuffer(inputs, context, points.size() * sizeof(glm::ivec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::DeviceLocal);
-    createBuffer(results, context, 2 * cases * sizeof(glm::uvec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::DeviceLocal);
+    createBuffer(results, context, 4 * cases * sizeof(glm::uvec2), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryKind::DeviceLocal);
     uploadToBuffer(context, inputs, points.data(), points.size() * sizeof(glm::ivec2));
     DescriptorArena arena;
     createDescriptorArena(arena, context, 1);
@@ -59,14 +59,18 @@ TEST(WideIntGpu, EdgeFunctionsAndSumsAreInt64s) {
     vkCmdPushConstants(cmd, pipeline.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(uint32_t), &cases);
     vkCmdDispatch(cmd, (cases + 63) / 64, 1, 1);
     submitAndWait(context, cmd);
-    std::vector<glm::uvec2> words(2 * cases);
+    std::vector<glm::uvec2> words(4 * cases);
     readFromBuffer(context, results, words.data(), words.size() * sizeof(glm::uvec2));
     const auto value = [](glm::uvec2 w) { return int64_t((uint64_t(w.y) << 32) | w.x); };
+    const auto clamped = [](int64_t v) { return uint32_t(std::clamp<int64_t>(v, 0, 0xFFFFFFFFll)); };
     for (uint32_t i = 0; i < cases; ++i) {
       const glm::ivec2 a = points[3 * i], b = points[3 * i + 1], p = points[3 * i + 2];
       const int64_t want = gpu::edgeFunction(glm::i64vec2(a), glm::i64vec2(b), glm::i64vec2(p));
-      ASSERT_EQ(value(words[2 * i]), want) << "case " << i;
-      ASSERT_EQ(value(words[2 * i + 1]), want + a.x) << "case " << i;
+      ASSERT_EQ(value(words[4 * i]), want) << "case " << i;
+      ASSERT_EQ(value(words[4 * i + 1]), want + a.x) << "case " << i;
+      ASSERT_EQ(value(words[4 * i + 2]), want >> 8) << "case " << i;  // arithmetic: toward minus infinity
+      ASSERT_EQ(words[4 * i + 3].x, clamped(want >> 8)) << "case " << i;
+      ASSERT_EQ(words[4 * i + 3].y, clamped(int64_t(a.x) + b.y)) << "case " << i;
     }
     destroyDescriptorArena(arena, context);
     destroyBuffer(inputs, context);

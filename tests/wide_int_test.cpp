@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -58,6 +60,20 @@ TEST(WideInt, SumsDifferencesAndComparisonsCarryAcrossTheWords) {
   }
   for (int v : {0, 1, -1, std::numeric_limits<int>::max(), std::numeric_limits<int>::min()}) {
     EXPECT_EQ(valueOf(wideOf(v)), int64_t(v));
+  }
+}
+
+TEST(WideInt, FloorsOfA256thClampsAndEstimates) {
+  std::vector<int64_t> values = {0, 1, -1, 255, 256, -255, -256, -257, 0xFFFFFFFFll, 0x100000000ll, -0x100000000ll,
+                                 int64_t(1) << 58, -(int64_t(1) << 58), (int64_t(1) << 58) - 1};
+  std::mt19937_64 random(47);
+  for (int i = 0; i < 2000; ++i) values.push_back(int64_t(random()) >> (5 + i % 30));
+  for (int64_t v : values) {
+    ASSERT_EQ(valueOf(wideFloorDiv256(wideOf64(v))), v >> 8) << v;  // toward minus infinity
+    ASSERT_EQ(wideClampToUint(wideOf64(v)), uint32_t(std::clamp<int64_t>(v, 0, 0xFFFFFFFFll))) << v;
+    // large_triangles.h EdgeEstimate counts on the estimate being within 2^9 + 2^-22 |v|.
+    const double error = std::abs(double(wideEstimate(wideOf64(v))) - double(v));
+    ASSERT_LE(error, 512.0 + std::ldexp(std::abs(double(v)), -22)) << v;
   }
 }
 
