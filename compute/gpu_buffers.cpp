@@ -50,7 +50,7 @@ void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   texels(data.lights.size() * sizeof(LightData), "the lights");
   checkFits(context, data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");  // and colours
   texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");
-  checkFits(context, sizeof(IdList) + data.triangles.size() * sizeof(uint32_t), "the clip list");
+  checkFits(context, clipListBytes(uint32_t(data.triangles.size()), context.info.keys32), "the clip list");
   texels(data.uvs.size() * sizeof(VertexUv), "the texture coordinates");
   if (data.shadows) {
     texels(shadowBvhNodeCapacity(data.shadows->triangles.size()) * sizeof(BvhNode), "the shadow rays' tree");
@@ -110,8 +110,7 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   createTexelBuffer(scene_.shadowTriangles, context_, shadows.triangles, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.textures, context_, data.textures, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelPool(scene_.texelPool, context_, data);
-  const VkDeviceSize clipBytes = sizeof(IdList) + VkDeviceSize(triangleCount_) * sizeof(uint32_t);
-  createBuffer(scene_.clipList, context_, clipBytes, STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
+  createBuffer(scene_.clipList, context_, clipListBytes(triangleCount_, context_.info.keys32), STORAGE | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, MemoryKind::DeviceLocal);
 }
 
 // New keys are cleared by the first frame (keysDirty_). Where the host reads the colours from the

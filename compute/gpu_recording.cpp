@@ -33,6 +33,9 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, image_.large.buffer.buffer, 0, sizeof emptyList, &emptyList);
   const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, scene_.clipList.buffer, 0, sizeof noClipping, &noClipping);
+  if (context_.info.keys32) {  // no triangle kept yet (gpu_layout.h keptWords)
+    vkCmdFillBuffer(cmd, scene_.clipList.buffer, keptWordsOffset(triangleCount_), keptWords(triangleCount_) * sizeof(uint32_t), 0u);
+  }
   transferToComputeBarrier(cmd);
 
   auto bind = [&](Pass pass) { bindPass(cmd, pass); };
@@ -51,9 +54,11 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   writeTimestamp(cmd, timestamps_, 1);
   // The triangle and clip passes; on the 32-bit key path twice, the keys' high words and then their
   // low words among the fragments at each pixel's depth (shaders/raster_loops.glsl).
+  // The ids pass of the triangles takes a word of kept triangles an invocation (raster_triangles.comp).
   auto raster = [&](Pass triangles, Pass clip) {
     bind(triangles);
-    vkCmdDispatch(cmd, std::min(groupCount(triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
+    const uint32_t items = triangles == RASTER_IDS ? keptWords(triangleCount_) : triangleCount_;
+    vkCmdDispatch(cmd, std::min(groupCount(items, SETUP_GROUP_SIZE), cap), 1, 1);
     computeBarrier(cmd);
     bind(clip);
     vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));

@@ -4,6 +4,7 @@
 #ifndef PHONGVK_GPU_LAYOUT_H
 #define PHONGVK_GPU_LAYOUT_H
 
+#include "glsl_cpp.h"
 #include "shared.h"
 
 #ifdef __cplusplus
@@ -141,7 +142,12 @@ struct BinList {
   uint groupsZ;
 };
 
-// Header of a list of triangle ids that an indirect dispatch then walks (the clip list).
+// Header of a list of triangle ids that an indirect dispatch then walks (the clip list). Its buffer
+// holds the header, room for every triangle's id, and then keptWords(triangles) words of the
+// 32-bit key path's kept triangles: bit t % 32 of word t / 32 set where the depth dispatch found
+// that small triangle t has a fragment that may still win a pixel (raster_triangles.comp).
+FN uint keptWords(uint triangles) { return (triangles + 31u) / 32u; }
+
 struct IdList {
   uint count;
   uint groupsX;      // indirect dispatch (min(count / CLIP_GROUP_SIZE rounded up, groupCap), 1, 1)
@@ -178,6 +184,13 @@ struct LargeEntry {
 static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) == 32);
 static_assert(sizeof(FrameStatus) == 16);
 static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 32);
+
+// Where the clip list's buffer keeps the kept words (IdList), and its whole size, with the kept
+// words on the 32-bit key path (`keptBits`) and without them elsewhere.
+inline uint64_t keptWordsOffset(uint32_t triangles) { return sizeof(IdList) + uint64_t(triangles) * sizeof(uint32_t); }
+inline uint64_t clipListBytes(uint32_t triangles, bool keptBits) {
+  return keptWordsOffset(triangles) + (keptBits ? uint64_t(keptWords(triangles)) * sizeof(uint32_t) : 0u);
+}
 }  // namespace phongvk::gpu
 #endif
 

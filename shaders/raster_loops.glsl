@@ -11,7 +11,8 @@
 // word). That is the smallest 64-bit key's pair of words: its high word is the least high word,
 // and among keys with that high word the least low word (docs/DESIGN.md "Visibility"). Only the
 // depth pass lists triangles for the clip pass, marks bins and defers large triangles to resolve;
-// the ids pass redraws exactly the pixels the depth pass drew.
+// the ids pass redraws the pixels the depth pass drew, of the triangle pass's small triangles only
+// those it kept (raster_triangles.comp redrawKept).
 #ifdef PHONGVK_KEYS32
 layout(constant_id = SPEC_KEY_PASS) const uint KEY_PASS = KEY_PASS_DEPTH;
 #else
@@ -19,17 +20,18 @@ const uint KEY_PASS = KEY_PASS_WHOLE;
 #endif
 const bool IDS_PASS = KEY_PASS == KEY_PASS_IDS;
 
-// A fragment's key offered to pixel i: the pixel keeps the smallest.
-void offerKey(uint i, VisibilityKey key) {
+// A fragment's key offered to pixel i: the pixel keeps the smallest. True where the fragment may
+// still win the pixel: on the 32-bit key path's depth pass, where its depth word is at most the one
+// the pixel held before it (a larger word can never equal the least the pixel ends with); true
+// wherever else.
+bool offerKey(uint i, VisibilityKey key) {
 #ifdef PHONGVK_KEYS32
-  if (!IDS_PASS) {
-    atomicMin(keyPairs[i].y, keyHigh(key));
-  } else if (keyPairs[i].y == keyHigh(key)) {
-    atomicMin(keyPairs[i].x, keyLow(key));
-  }
+  if (!IDS_PASS) return keyHigh(key) <= atomicMin(keyPairs[i].y, keyHigh(key));
+  if (keyPairs[i].y == keyHigh(key)) atomicMin(keyPairs[i].x, keyLow(key));
 #else
   atomicMin(keys[i], key);
 #endif
+  return true;
 }
 
 // The pixels of a box, (x1 - x0 + 1) (y1 - y0 + 1).
@@ -106,13 +108,15 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s) {
 
 // A small sub-triangle's pixels (small_triangles.h setupSmallEdges), one invocation: every pixel of
 // its box tested (coversSmall), as the reference does, which on lavapipe is faster than row spans
-// (docs/PERFORMANCE.md, "History").
-void rasterizeSmall(TriangleSetup t, EdgeSetup s) {
+// (docs/PERFORMANCE.md, "History"). True where one of its fragments may still win (offerKey).
+bool rasterizeSmall(TriangleSetup t, EdgeSetup s) {
+  bool mayWin = false;
   for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     for (int x = s.bbox.x; x <= s.bbox.z; ++x) {
-      if (coversSmall(s, x, y)) offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame));
+      if (coversSmall(s, x, y)) mayWin = offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame)) || mayWin;
     }
   }
+  return mayWin;
 }
 
 // Reserves `count` of a list's slots unless that would pass `capacity`; LIST_END if not. The
