@@ -34,7 +34,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, scene_.clipList.buffer, 0, sizeof noClipping, &noClipping);
   if (context_.info.keys32) {  // no triangle kept yet (gpu_layout.h keptWords)
-    vkCmdFillBuffer(cmd, scene_.clipList.buffer, keptWordsOffset(triangleCount_), keptWords(triangleCount_) * sizeof(uint32_t), 0u);
+    vkCmdFillBuffer(cmd, scene_.clipList.buffer, keptWordsOffset(triangleCount_), keptWordsBytes(triangleCount_), 0u);
   }
   transferToComputeBarrier(cmd);
 
@@ -54,14 +54,18 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   writeTimestamp(cmd, timestamps_, 1);
   // The triangle and clip passes; on the 32-bit key path twice, the keys' high words and then their
   // low words among the fragments at each pixel's depth (shaders/raster_loops.glsl).
-  // The ids pass of the triangles takes a word of kept triangles an invocation (raster_triangles.comp).
+  // The ids passes take a chunk of kept triangles an invocation (gpu_layout.h keptSpan).
   auto raster = [&](Pass triangles, Pass clip) {
+    const bool ids = triangles == RASTER_IDS;
     bind(triangles);
-    const uint32_t items = triangles == RASTER_IDS ? keptWords(triangleCount_) : triangleCount_;
-    vkCmdDispatch(cmd, std::min(groupCount(items, SETUP_GROUP_SIZE), cap), 1, 1);
+    vkCmdDispatch(cmd, std::min(groupCount(ids ? keptChunks(triangleCount_) : triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
     computeBarrier(cmd);
     bind(clip);
-    vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
+    if (ids) {
+      vkCmdDispatch(cmd, std::min(groupCount(keptChunks(triangleCount_), CLIP_GROUP_SIZE), cap), 1, 1);
+    } else {
+      vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
+    }
     computeBarrier(cmd);
   };
   raster(RASTER, CLIP);

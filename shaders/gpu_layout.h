@@ -143,10 +143,22 @@ struct BinList {
 };
 
 // Header of a list of triangle ids that an indirect dispatch then walks (the clip list). Its buffer
-// holds the header, room for every triangle's id, and then keptWords(triangles) words of the
-// 32-bit key path's kept triangles: bit t % 32 of word t / 32 set where the depth dispatch found
-// that small triangle t has a fragment that may still win a pixel (raster_triangles.comp).
+// holds the header, room for every triangle's id, and on the 32-bit key path two sets of
+// keptWords(triangles) words, the triangle pass's kept triangles and then the clip pass's: bit
+// t % 32 of word t / 32 set where that pass's depth dispatch drew a fragment of triangle t that may
+// still win a pixel (raster_loops.glsl keepTriangle).
 FN uint keptWords(uint triangles) { return (triangles + 31u) / 32u; }
+PHONGVK_CONST uint KEPT_SETS = 2u;
+// The kept bits one invocation of an ids pass walks: a word (32) where that leaves at least 8192
+// invocations, else the largest power of two that does, down to 1. A word an invocation is what
+// spares a grid of a million triangles most of their set-ups; in a scene of a few thousand, 32
+// triangles one after another in one invocation took longer than the ids pass had before.
+FN uint keptSpan(uint triangles) {
+  uint span = 32u;
+  while (span > 1u && (triangles + span - 1u) / span < 8192u) span /= 2u;
+  return span;
+}
+FN uint keptChunks(uint triangles) { uint span = keptSpan(triangles); return (triangles + span - 1u) / span; }
 
 struct IdList {
   uint count;
@@ -185,11 +197,12 @@ static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) ==
 static_assert(sizeof(FrameStatus) == 16);
 static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 32);
 
-// Where the clip list's buffer keeps the kept words (IdList), and its whole size, with the kept
-// words on the 32-bit key path (`keptBits`) and without them elsewhere.
+// Where the clip list's buffer keeps the kept words (IdList), their bytes, and its whole size, with
+// the kept words on the 32-bit key path (`keptBits`) and without them elsewhere.
 inline uint64_t keptWordsOffset(uint32_t triangles) { return sizeof(IdList) + uint64_t(triangles) * sizeof(uint32_t); }
+inline uint64_t keptWordsBytes(uint32_t triangles) { return uint64_t(KEPT_SETS) * keptWords(triangles) * sizeof(uint32_t); }
 inline uint64_t clipListBytes(uint32_t triangles, bool keptBits) {
-  return keptWordsOffset(triangles) + (keptBits ? uint64_t(keptWords(triangles)) * sizeof(uint32_t) : 0u);
+  return keptWordsOffset(triangles) + (keptBits ? keptWordsBytes(triangles) : 0u);
 }
 }  // namespace phongvk::gpu
 #endif

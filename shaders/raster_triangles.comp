@@ -14,21 +14,19 @@
 
 layout(local_size_x = SETUP_GROUP_SIZE) in;
 
-// A small unclipped triangle, with 32-bit edges. On the 32-bit key path's depth pass, a triangle
-// with a fragment that may still win a pixel (offerKey) is marked kept, for the ids pass.
-void rasterizeSmallTriangle(TriangleSetup t) {
+// A small unclipped triangle, with 32-bit edges. True where it drew a fragment that may still win
+// a pixel (offerKey).
+bool rasterizeSmallTriangle(TriangleSetup t) {
   EdgeSetup small;
   if (!setupSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2], t.frontFacing != 0u, frame.width, frame.height, small)) {
-    return;
+    return false;
   }
   if (!IDS_PASS) markBins(small.bbox);
-  bool mayWin = rasterizeSmall(t, small);
-#ifdef PHONGVK_KEYS32
-  if (!IDS_PASS && mayWin) atomicOr(clipIds[control.triangleCount + t.triangle / 32u], 1u << (t.triangle % 32u));
-#endif
+  return rasterizeSmall(t, small);
 }
 
-// Triangle `id`: set up, then drawn here if small and unclipped, else listed for the clip pass.
+// Triangle `id`: set up, then drawn here if small and unclipped, else listed for the clip pass. On
+// the 32-bit key path's depth pass, kept (raster_loops.glsl keepTriangle) where it may win a pixel.
 void drawTriangle(uint id) {
   vec3 h0, h1, h2;
   bool cullBack;
@@ -38,7 +36,10 @@ void drawTriangle(uint id) {
   bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection);
   if (inside && !setupUnclipped(h0, h1, h2, frame, t)) return;
   if (inside && fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {
-    rasterizeSmallTriangle(t);
+    bool mayWin = rasterizeSmallTriangle(t);
+#ifdef PHONGVK_KEYS32
+    if (!IDS_PASS && mayWin) keepTriangle(KEPT_BY_TRIANGLE_PASS, id);
+#endif
   } else if (!IDS_PASS) {
     uint k = atomicAdd(clipList.count, 1u);
     clipIds[k] = id;
@@ -46,31 +47,21 @@ void drawTriangle(uint id) {
   }
 }
 
-// The ids pass of the 32-bit key path: only the triangles the depth pass kept, a word of 32 of
-// them an invocation (gpu_layout.h keptWords). A triangle none of whose fragments may win cannot
-// hold any pixel's least depth word, so leaving it out changes no pixel; on a grid of small
-// triangles most are left out (back faces, no pixel centre covered, or beaten where they drew).
-void redrawKept() {
-  uint words = keptWords(control.triangleCount);
-  for (uint w = gl_GlobalInvocationID.x; w < words; w += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
-    uint bits = clipIds[control.triangleCount + w];
-    while (bits != 0u) {
-      uint b = uint(findLSB(bits));
-      bits &= bits - 1u;
-      drawTriangle(w * 32u + b);
-    }
-  }
-}
-
 void main() {
   loadUniforms();
-  if (IDS_PASS) {
-    redrawKept();
-  } else {
-    // Grid-stride: the host caps the group count at control.groupCap.
-    for (uint id = gl_GlobalInvocationID.x; id < control.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
-      drawTriangle(id);
+#ifdef PHONGVK_KEYS32
+  if (IDS_PASS) {  // the kept triangles only, a chunk of them an invocation
+    uint span = keptSpan(control.triangleCount);
+    for (uint c = gl_GlobalInvocationID.x; c < keptChunks(control.triangleCount); c += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
+      for (uint bits = keptChunkBits(KEPT_BY_TRIANGLE_PASS, c, span); bits != 0u; bits &= bits - 1u) drawTriangle(c * span + uint(findLSB(bits)));
     }
+    checkLoopBudget();
+    return;
+  }
+#endif
+  // Grid-stride: the host caps the group count at control.groupCap.
+  for (uint id = gl_GlobalInvocationID.x; id < control.triangleCount; id += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
+    drawTriangle(id);
   }
   checkLoopBudget();
 }
