@@ -54,18 +54,14 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   writeTimestamp(cmd, timestamps_, 1);
   // The triangle and clip passes; on the 32-bit key path twice, the keys' high words and then their
   // low words among the fragments at each pixel's depth (shaders/raster_loops.glsl).
-  // The ids passes take a chunk of kept triangles an invocation (gpu_layout.h keptSpan).
+  // The triangle pass's ids dispatch takes a chunk of kept triangles an invocation (gpu_layout.h keptSpan).
   auto raster = [&](Pass triangles, Pass clip) {
-    const bool ids = triangles == RASTER_IDS;
     bind(triangles);
-    vkCmdDispatch(cmd, std::min(groupCount(ids ? keptChunks(triangleCount_) : triangleCount_, SETUP_GROUP_SIZE), cap), 1, 1);
+    const uint32_t items = triangles == RASTER_IDS ? keptChunks(triangleCount_) : triangleCount_;
+    vkCmdDispatch(cmd, std::min(groupCount(items, SETUP_GROUP_SIZE), cap), 1, 1);
     computeBarrier(cmd);
     bind(clip);
-    if (ids) {
-      vkCmdDispatch(cmd, std::min(groupCount(keptChunks(triangleCount_), CLIP_GROUP_SIZE), cap), 1, 1);
-    } else {
-      vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
-    }
+    vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
     computeBarrier(cmd);
   };
   raster(RASTER, CLIP);

@@ -21,56 +21,36 @@ layout(constant_id = SPEC_CLIP_POLYGONS) const uint CLIP_POLYGONS = CLIP_NONE;
 
 // The fan's sub-triangles of a set-up polygon, rasterized or deferred to resolve. Without the
 // clipper the polygon is the triangle itself.
-// The polygon's fan. True where a sub-triangle drew a fragment that may still win (offerKey).
-bool drawFan(TriangleSetup t) {
-  bool mayWin = false;
+void drawFan(TriangleSetup t) {
   for (int f = 0; f + 2 < t.count; ++f) {
     TriangleSetup sub = CLIP_POLYGONS == CLIP_ALL ? fanTriangle(t, f) : t;
     EdgeSetup s;
-    if (setupSingle(sub, s)) mayWin = drawOrDefer(sub, s) || mayWin;
+    if (setupSingle(sub, s)) drawOrDefer(sub, s);
   }
-  return mayWin;
-}
-
-// Triangle `id` of the clip list: set up, clipped where it must be, and its fan drawn. On the 32-bit
-// key path's depth pass, kept (raster_loops.glsl keepTriangle) where it may win a pixel here; its
-// large sub-triangles are resolve's.
-void clipAndDraw(uint id) {
-  vec3 h0, h1, h2;
-  bool cullBack;
-  loadForSetup(id, h0, h1, h2, cullBack);
-  TriangleSetup t;
-  if (!setupPlane(h0, h1, h2, cullBack, id, frame, t)) return;
-  // Inside the clip volume (most here: not small): set up as itself, as the reference does. The
-  // general clipper runs in a 0/1-trip loop (on lavapipe no cheaper than an if: a loop body runs
-  // once, masked, even when no lane enters it).
-  bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection);
-  if (!inside && CLIP_POLYGONS == CLIP_NONE) {
-    atomicOr(status.flags, STATUS_NEEDS_CLIPPING);
-    return;
-  }
-  bool drawn = inside && setupUnclipped(h0, h1, h2, frame, t);
-  if (CLIP_POLYGONS == CLIP_ALL) {
-    for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
-  }
-  bool mayWin = drawn && drawFan(t);
-#ifdef PHONGVK_KEYS32
-  if (!IDS_PASS && mayWin) keepTriangle(KEPT_BY_CLIP_PASS, id);
-#endif
 }
 
 void main() {
   loadUniforms();
-#ifdef PHONGVK_KEYS32
-  if (IDS_PASS) {  // the kept triangles only, a chunk of them an invocation
-    uint span = keptSpan(control.triangleCount);
-    for (uint c = gl_GlobalInvocationID.x; c < keptChunks(control.triangleCount); c += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
-      for (uint bits = keptChunkBits(KEPT_BY_CLIP_PASS, c, span); bits != 0u; bits &= bits - 1u) clipAndDraw(c * span + uint(findLSB(bits)));
+  for (uint k = gl_GlobalInvocationID.x; k < clipList.count; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
+    uint id = clipIds[k];
+    vec3 h0, h1, h2;
+    bool cullBack;
+    loadForSetup(id, h0, h1, h2, cullBack);
+    TriangleSetup t;
+    if (!setupPlane(h0, h1, h2, cullBack, id, frame, t)) continue;
+    // Inside the clip volume (most here: not small): set up as itself, as the reference does. The
+    // general clipper runs in a 0/1-trip loop (on lavapipe no cheaper than an if: a loop body runs
+    // once, masked, even when no lane enters it).
+    bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection);
+    if (!inside && CLIP_POLYGONS == CLIP_NONE) {
+      atomicOr(status.flags, STATUS_NEEDS_CLIPPING);
+      continue;
     }
-    checkLoopBudget();
-    return;
+    bool drawn = inside && setupUnclipped(h0, h1, h2, frame, t);
+    if (CLIP_POLYGONS == CLIP_ALL) {
+      for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
+    }
+    if (drawn) drawFan(t);
   }
-#endif
-  for (uint k = gl_GlobalInvocationID.x; k < clipList.count; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) clipAndDraw(clipIds[k]);
   checkLoopBudget();
 }

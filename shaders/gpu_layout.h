@@ -143,12 +143,12 @@ struct BinList {
 };
 
 // Header of a list of triangle ids that an indirect dispatch then walks (the clip list). Its buffer
-// holds the header, room for every triangle's id, and on the 32-bit key path two sets of
-// keptWords(triangles) words, the triangle pass's kept triangles and then the clip pass's: bit
-// t % 32 of word t / 32 set where that pass's depth dispatch drew a fragment of triangle t that may
-// still win a pixel (raster_loops.glsl keepTriangle).
+// holds the header, room for every triangle's id, and on the 32-bit key path keptWords(triangles)
+// words of the triangle pass's kept triangles: bit t % 32 of word t / 32 set where its depth
+// dispatch drew a fragment of small triangle t that may still win a pixel (raster_loops.glsl
+// keepTriangle). The clip pass keeps none: with that code in it, SwiftShader's compiler took
+// several times as long for the clip pass (docs/DECISIONS.md, "The 32-bit key path").
 FN uint keptWords(uint triangles) { return (triangles + 31u) / 32u; }
-PHONGVK_CONST uint KEPT_SETS = 2u;
 // The kept bits one invocation of an ids pass walks: a word (32) where that leaves at least 8192
 // invocations, else the largest power of two that does, down to 1. A word an invocation is what
 // spares a grid of a million triangles most of their set-ups; in a scene of a few thousand, 32
@@ -200,7 +200,7 @@ static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinL
 // Where the clip list's buffer keeps the kept words (IdList), their bytes, and its whole size, with
 // the kept words on the 32-bit key path (`keptBits`) and without them elsewhere.
 inline uint64_t keptWordsOffset(uint32_t triangles) { return sizeof(IdList) + uint64_t(triangles) * sizeof(uint32_t); }
-inline uint64_t keptWordsBytes(uint32_t triangles) { return uint64_t(KEPT_SETS) * keptWords(triangles) * sizeof(uint32_t); }
+inline uint64_t keptWordsBytes(uint32_t triangles) { return uint64_t(keptWords(triangles)) * sizeof(uint32_t); }
 inline uint64_t clipListBytes(uint32_t triangles, bool keptBits) {
   return keptWordsOffset(triangles) + (keptBits ? keptWordsBytes(triangles) : 0u);
 }

@@ -11,7 +11,8 @@
 // word). That is the smallest 64-bit key's pair of words: its high word is the least high word,
 // and among keys with that high word the least low word (docs/DESIGN.md "Visibility"). Only the
 // depth pass lists triangles for the clip pass, marks bins and defers large triangles to resolve;
-// the ids pass redraws the pixels the depth pass drew, of the triangles it kept only (keepTriangle).
+// the ids pass redraws the pixels the depth pass drew, of the triangle pass's small triangles only
+// those it kept (keepTriangle).
 #ifdef PHONGVK_KEYS32
 layout(constant_id = SPEC_KEY_PASS) const uint KEY_PASS = KEY_PASS_DEPTH;
 #else
@@ -95,36 +96,29 @@ void markBins(ivec4 box) {
   }
 }
 
-// Rasterizes sub-triangle s, row span by row span, one invocation. True where one of its
-// fragments may still win (offerKey).
-bool rasterizeRows(TriangleSetup t, EdgeSetup s) {
-  bool mayWin = false;
+// Rasterizes sub-triangle s, row span by row span, one invocation.
+void rasterizeRows(TriangleSetup t, EdgeSetup s) {
   for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     ivec2 span = rowSpan(s, y);
     for (int x = span.x; x <= span.y; ++x) {
-      mayWin = offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame)) || mayWin;
+      offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame));
     }
   }
-  return mayWin;
 }
 
 #ifdef PHONGVK_KEYS32
-// The kept triangles of the 32-bit key path (gpu_layout.h keptWords): set KEPT_BY_TRIANGLE_PASS
-// for the triangle pass's, KEPT_BY_CLIP_PASS for the clip pass's. The depth pass keeps each
-// triangle with a fragment that may still win a pixel; the ids pass draws only those, a chunk of
-// them an invocation (gpu_layout.h keptSpan): a triangle none of whose fragments may win cannot
-// hold any pixel's least depth word, so leaving it out changes no pixel.
-const uint KEPT_BY_TRIANGLE_PASS = 0u;
-const uint KEPT_BY_CLIP_PASS = 1u;
+// The triangle pass's kept triangles on the 32-bit key path (gpu_layout.h keptWords). Its depth
+// pass keeps each small triangle with a fragment that may still win a pixel; its ids pass draws
+// only those, a chunk of them an invocation (gpu_layout.h keptSpan): a triangle none of whose
+// fragments may win cannot hold any pixel's least depth word, so leaving it out changes no pixel.
+uint keptWordIndex(uint w) { return control.triangleCount + w; }
 
-uint keptWordIndex(uint set, uint w) { return control.triangleCount + set * keptWords(control.triangleCount) + w; }
-
-void keepTriangle(uint set, uint id) { atomicOr(clipIds[keptWordIndex(set, id / 32u)], 1u << (id % 32u)); }
+void keepTriangle(uint id) { atomicOr(clipIds[keptWordIndex(id / 32u)], 1u << (id % 32u)); }
 
 // Chunk c's kept bits (keptSpan of them, from triangle c * span on), in its word's low bits.
-uint keptChunkBits(uint set, uint c, uint span) {
+uint keptChunkBits(uint c, uint span) {
   uint first = c * span;
-  uint bits = clipIds[keptWordIndex(set, first / 32u)] >> (first % 32u);
+  uint bits = clipIds[keptWordIndex(first / 32u)] >> (first % 32u);
   return span < 32u ? bits & ((1u << span) - 1u) : bits;
 }
 #endif
@@ -207,12 +201,11 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
 // is never drawn here: one invocation looping over all its pixels could pass lavapipe's loop budget
 // (bindings.glsl checkLoopBudget; a screen-filling triangle did, at row 123 of 480). Without room
 // for it, the host grows the lists and renders the frame again (STATUS_LARGE_OVERFLOW).
-// True where it drew a fragment that may still win (offerKey).
-bool drawOrDefer(TriangleSetup t, EdgeSetup s) {
+void drawOrDefer(TriangleSetup t, EdgeSetup s) {
   if (uint(boxPixels(s.bbox)) > SMALL_TRIANGLE_MAX_PIXELS) {
     if (!IDS_PASS && !deferToLargePass(t, s)) atomicOr(status.flags, STATUS_LARGE_OVERFLOW);
-    return false;
+    return;
   }
   if (!IDS_PASS) markBins(s.bbox);
-  return rasterizeRows(t, s);
+  rasterizeRows(t, s);
 }

@@ -38,7 +38,7 @@ void drawTriangle(uint id) {
   if (inside && fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {
     bool mayWin = rasterizeSmallTriangle(t);
 #ifdef PHONGVK_KEYS32
-    if (!IDS_PASS && mayWin) keepTriangle(KEPT_BY_TRIANGLE_PASS, id);
+    if (!IDS_PASS && mayWin) keepTriangle(id);
 #endif
   } else if (!IDS_PASS) {
     uint k = atomicAdd(clipList.count, 1u);
@@ -53,7 +53,7 @@ void main() {
   if (IDS_PASS) {  // the kept triangles only, a chunk of them an invocation
     uint span = keptSpan(control.triangleCount);
     for (uint c = gl_GlobalInvocationID.x; c < keptChunks(control.triangleCount); c += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
-      for (uint bits = keptChunkBits(KEPT_BY_TRIANGLE_PASS, c, span); bits != 0u; bits &= bits - 1u) drawTriangle(c * span + uint(findLSB(bits)));
+      for (uint bits = keptChunkBits(c, span); bits != 0u; bits &= bits - 1u) drawTriangle(c * span + uint(findLSB(bits)));
     }
     checkLoopBudget();
     return;

@@ -150,14 +150,14 @@ TEST_F(StressTest, MoreGeometryThanTheDeviceHoldsIsAClearError) {
   };
   const uint32_t big = std::numeric_limits<uint32_t>::max();
   // VertexIn is two texels; a triangle one; a shaded position one texel and 16 bytes; the clip
-  // list a 32-byte header, 4 bytes per triangle and on the 32-bit key path two words of kept bits
-  // (the triangle pass's and the clip pass's) per 32 triangles.
+  // list a 32-byte header, 4 bytes per triangle and on the 32-bit key path a word of kept bits per
+  // 32 triangles.
   EXPECT_EQ(limited(2 * vertices - 1, big), message("the vertices", 2 * vertices, "texels", "maxTexelBufferElements", 2 * vertices - 1));
   EXPECT_EQ(limited(triangles - 1, big), message("the triangles", triangles, "texels", "maxTexelBufferElements", triangles - 1));
   EXPECT_EQ(limited(big, 16 * vertices - 1),
             message("the shaded vertex positions", 16 * vertices, "bytes", "maxStorageBufferRange", 16 * vertices - 1));
   const bool keys32 = context_.info.keys32;
-  const uint64_t clipBytes = sizeof(gpu::IdList) + 4 * triangles + (keys32 ? 2 * 4 * ((triangles + 31) / 32) : 0);
+  const uint64_t clipBytes = sizeof(gpu::IdList) + 4 * triangles + (keys32 ? 4 * ((triangles + 31) / 32) : 0);
   EXPECT_EQ(limited(big, clipBytes - 1), message("the clip list", clipBytes, "bytes", "maxStorageBufferRange", clipBytes - 1));
   EXPECT_EQ(limited(big, big), "(no error)");
 }
