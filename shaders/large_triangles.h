@@ -105,10 +105,10 @@ FN int classifyBlock(LargeTriangle t, BlockEdges e, ivec2 origin, int size) {
 
 // One edge's function across a bin in float: its value at the bin's first pixel centre (exact,
 // then estimated), what one pixel right and one down add, and a bound on how far any value of the
-// bin computed from them (tileEstimate) may stray from the exact one. The bound holds for any
+// bin computed from them (classifyEdgeEstimate) may stray from the exact one. The bound holds for any
 // faithful rounding (an error under one unit in the last place per operation, with or without
 // fused multiply-adds: SwiftShader does not promise round-to-nearest): edgeEstimate is within
-// 2^9 + 2^-22 |e|, each of tileEstimate's few operations within 2^-23 of the largest magnitude
+// 2^9 + 2^-22 |e|, each of classifyEdgeEstimate's few operations within 2^-23 of the largest magnitude
 // involved, M = |e| + BIN_SIZE (|dx| + |dy|); the margin, 1024 + M / 65536, is several times that.
 // Values stay integers below 2^63 or zero: no denormal, overflow or NaN.
 struct EdgeEstimate {

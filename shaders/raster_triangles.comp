@@ -52,7 +52,8 @@ void main() {
 #ifdef PHONGVK_KEYS32
   if (IDS_PASS) {  // the kept triangles only, a chunk of them an invocation
     uint span = keptSpan(control.triangleCount);
-    for (uint c = gl_GlobalInvocationID.x; c < keptChunks(control.triangleCount); c += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
+    uint chunks = keptChunks(control.triangleCount);
+    for (uint c = gl_GlobalInvocationID.x; c < chunks; c += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
       for (uint bits = keptChunkBits(c, span); bits != 0u; bits &= bits - 1u) drawTriangle(c * span + uint(findLSB(bits)));
     }
     checkLoopBudget();
