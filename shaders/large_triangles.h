@@ -127,17 +127,44 @@ FN EdgeEstimate edgeEstimateOf(ivec2 a, ivec2 b, EdgeInt e) {
   return r;
 }
 
-// How tile (i, j) of the bin relates to one edge, from its estimate: BLOCK_OUTSIDE only where the
-// largest value at its pixel centres is negative beyond the margin, BLOCK_INSIDE only where the
-// smallest is at least the margin, else BLOCK_PARTIAL. So it never calls a tile outside or inside
+// How a block of the bin relates to one edge, from its estimate: `base` the edge's estimate at
+// the block's first pixel centre, `corner` the block's size less one pixel. BLOCK_OUTSIDE only where
+// the largest value at its pixel centres is negative beyond the margin, BLOCK_INSIDE only where the
+// smallest is at least the margin, else BLOCK_PARTIAL. So it never calls a block outside or inside
 // that classifyEdge would not, and differs from it only within the margin of 0.
-FN int classifyEdgeEstimate(EdgeEstimate e, int i, int j) {
-  float corner = float(TILE_SIZE - 1u);
-  float base = e.at + e.dx * float(i * int(TILE_SIZE)) + e.dy * float(j * int(TILE_SIZE));
+FN int classifyEstimate(EdgeEstimate e, float base, float corner) {
   float hi = base + max(e.dx * corner, 0.0f) + max(e.dy * corner, 0.0f);
   float lo = base + min(e.dx * corner, 0.0f) + min(e.dy * corner, 0.0f);
   if (hi + e.margin < 0.0f) return BLOCK_OUTSIDE;
   return lo - e.margin >= 0.0f ? BLOCK_INSIDE : BLOCK_PARTIAL;
+}
+
+// Tile (i, j) of the bin against one edge (classifyEstimate).
+FN int classifyEdgeEstimate(EdgeEstimate e, int i, int j) {
+  float base = e.at + e.dx * float(i * int(TILE_SIZE)) + e.dy * float(j * int(TILE_SIZE));
+  return classifyEstimate(e, base, float(TILE_SIZE - 1u));
+}
+
+// The whole bin against the three edges (classifyEstimate), the least of the three.
+FN int classifyBinEstimate(EdgeEstimate e0, EdgeEstimate e1, EdgeEstimate e2) {
+  float corner = float(BIN_SIZE - 1u);
+  return min(classifyEstimate(e0, e0.at, corner), min(classifyEstimate(e1, e1.at, corner), classifyEstimate(e2, e2.at, corner)));
+}
+
+// The bin's tiles x0..x1 of rows y0..y1, r = (x0, y0, x1, y1) in tiles within the bin (x0 <= x1,
+// y0 <= y1, all below BIN_TILES): bit j * BIN_TILES + i for tile (i, j). One row's bits times a
+// bit at the start of each of the rows (no carries: a row's bits stay within its BIN_TILES).
+FN uint binTileRect(ivec4 r) {
+  uint row = ((2u << uint(r.z)) - 1u) & ~((1u << uint(r.x)) - 1u);
+  uint rowStarts = ((1u << (BIN_TILES * BIN_TILES)) - 1u) / ((1u << BIN_TILES) - 1u);  // bit 0 of every row
+  uint rows = ((2u << (uint(r.w) * BIN_TILES)) - 1u) & ~((1u << (uint(r.y) * BIN_TILES)) - 1u);
+  return row * (rowStarts & rows);
+}
+
+// The tiles of the bin at pixel `origin` that hold pixels of the triangle's box (as blockInBox
+// picks them; the bin overlaps the box).
+FN uint binTilesInBox(LargeTriangle t, ivec2 origin) {
+  return binTileRect(clamp(t.bbox - ivec4(origin, origin), 0, int(BIN_SIZE) - 1) / int(TILE_SIZE));
 }
 
 // The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre (x): bit
@@ -173,14 +200,21 @@ FN uvec2 binTileMasksExact(LargeTriangle t, ivec2 origin, float farPlane) {
 // margin of an edge may be kept or left unowned where the exact masks would not, which costs
 // resolve a tile's pixel tests and changes no pixel. The 32-bit key path's masks: with the edge
 // values in pairs of words, the exact tile steps cost several times the float ones (docs/DECISIONS.md,
-// "The 32-bit key path").
+// "The 32-bit key path"). The whole bin is classified first (classifyBinEstimate, which keeps the
+// same promises: the margin bounds every value of the bin): a bin outside an edge keeps no tile, one
+// inside all three keeps and owns the tiles of the box, and only a bin an edge crosses tests its
+// tiles. The tile loop's trip count says which, not a branch: lavapipe runs both sides of a branch,
+// but leaves a loop no lane enters after one masked trip (docs/PERFORMANCE.md, "Raster").
 FN uvec2 binTileMasksEstimated(LargeTriangle t, ivec2 origin, float farPlane) {
   BlockEdges e = blockEdges(t, origin);
   EdgeEstimate e0 = edgeEstimateOf(t.v1, t.v2, e.e0);
   EdgeEstimate e1 = edgeEstimateOf(t.v2, t.v0, e.e1);
   EdgeEstimate e2 = edgeEstimateOf(t.v0, t.v1, e.e2);
-  uvec2 masks = uvec2(0u);
-  UNROLL_KEYS64 for (int j = 0; j < int(BIN_TILES); ++j) {
+  int whole = classifyBinEstimate(e0, e1, e2);
+  uint inBox = whole == BLOCK_INSIDE ? binTilesInBox(t, origin) : 0u;
+  uvec2 masks = uvec2(inBox, inBox);
+  int rows = whole == BLOCK_PARTIAL ? int(BIN_TILES) : 0;  // else the bin's tiles are all alike
+  DONT_UNROLL for (int j = 0; j < rows; ++j) {
     UNROLL_KEYS64 for (int i = 0; i < int(BIN_TILES); ++i) {
       int block = blockInBox(t, origin + ivec2(i, j) * int(TILE_SIZE), int(TILE_SIZE)) ? BLOCK_INSIDE : BLOCK_OUTSIDE;
       block = min(block, min(classifyEdgeEstimate(e0, i, j), min(classifyEdgeEstimate(e1, i, j), classifyEdgeEstimate(e2, i, j))));

@@ -88,10 +88,7 @@ void markBins(ivec4 box) {
   for (int by = bins.y; by <= bins.w; ++by) {
     for (int bx = bins.x; bx <= bins.z; ++bx) {
       ivec4 inBin = clamp(tiles - ivec4(bx, by, bx, by) * int(BIN_TILES), 0, int(BIN_TILES) - 1);
-      uint row = ((2u << inBin.z) - 1u) & ~((1u << inBin.x) - 1u);  // tiles x0..x1 of one row
-      uint mask = 0u;
-      for (int ty = inBin.y; ty <= inBin.w; ++ty) mask |= row << (uint(ty) * BIN_TILES);
-      touchBin(uvec2(bx, by), mask << BIN_KEYS_SHIFT);
+      touchBin(uvec2(bx, by), binTileRect(inBin) << BIN_KEYS_SHIFT);
     }
   }
 }

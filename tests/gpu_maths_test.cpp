@@ -248,6 +248,20 @@ TEST(GpuMaths, RgbWordHoldsTheImagesBytes) {
   }
 }
 
+TEST(GpuMaths, BinTileRectIsTheTilesOfTheRectangle) {
+  // Every rectangle of a bin's tiles, against the bits set one tile at a time.
+  const int n = int(BIN_TILES);
+  for (int x0 = 0; x0 < n; ++x0)
+    for (int x1 = x0; x1 < n; ++x1)
+      for (int y0 = 0; y0 < n; ++y0)
+        for (int y1 = y0; y1 < n; ++y1) {
+          uint expected = 0;
+          for (int j = y0; j <= y1; ++j)
+            for (int i = x0; i <= x1; ++i) expected |= 1u << uint(j * n + i);
+          EXPECT_EQ(binTileRect(ivec4(x0, y0, x1, y1)), expected) << x0 << "," << y0 << " - " << x1 << "," << y1;
+        }
+}
+
 TEST(GpuMaths, BinTileMaskKeepsEveryTileWithACoveredPixel) {
   // The clip pass links a large triangle into a bin with the mask of the bin's tiles it may cover,
   // and resolve rasterizes it only in those. Huge triangles (randomBlockTriangle) in bins under
