@@ -163,10 +163,14 @@ void GpuRenderer::createLargeBuffersFor(VkDeviceSize pixels) {
 void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
   const VkDeviceSize largeBytes = sizeof(LargeList) + VkDeviceSize(entries) * sizeof(LargeEntry);
   const VkDeviceSize setupBytes = VkDeviceSize(setups) * sizeof(LargeSetup);
-  checkFits(context_, largeBytes, "the large triangles' bin entries");
-  checkFits(context_, setupBytes, "the large triangles' set-ups");
-  checkTexels(context_, largeBytes / TEXEL_BYTES, "the large triangles' bin entries");
-  checkTexels(context_, setupBytes / TEXEL_BYTES, "the large triangles' set-ups");
+  // A wide point or line is two large triangles, its quad's halves: the names say so, as a scene of
+  // nothing but points may meet these limits.
+  const char* entriesName = "the large triangles' bin entries (a point's or a line's quad is two triangles)";
+  const char* setupsName = "the large triangles' set-ups (a point's or a line's quad is two triangles)";
+  checkFits(context_, largeBytes, entriesName);
+  checkFits(context_, setupBytes, setupsName);
+  checkTexels(context_, largeBytes / TEXEL_BYTES, entriesName);
+  checkTexels(context_, setupBytes / TEXEL_BYTES, setupsName);
   destroyTexelBuffer(image_.large, context_);
   destroyTexelBuffer(image_.largeSetups, context_);
   createTexelBuffer(image_.large, context_, nullptr, largeBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));
