@@ -167,6 +167,14 @@ FN uint binTilesInBox(LargeTriangle t, ivec2 origin) {
   return binTileRect(clamp(t.bbox - ivec4(origin, origin), 0, int(BIN_SIZE) - 1) / int(TILE_SIZE));
 }
 
+// Tile `tile`'s bit in a bin's masks (binTileMasksExact): kept unless `block` is BLOCK_OUTSIDE,
+// owned where it is BLOCK_INSIDE.
+FN void addTile(INOUT(uvec2) masks, int tile, int block) {
+  uint bit = 1u << uint(tile);
+  if (block != BLOCK_OUTSIDE) masks.x |= bit;
+  if (block == BLOCK_INSIDE) masks.y |= bit;
+}
+
 // The tiles of the bin at pixel `origin` where the triangle may cover a pixel centre (x): bit
 // j * BIN_TILES + i for tile (i, j) unless classifyBlock calls it outside, 0 for none; and those
 // it owns (y): every pixel centre of the tile covered (BLOCK_INSIDE) and no depth of the triangle
@@ -185,10 +193,7 @@ FN uvec2 binTileMasksExact(LargeTriangle t, ivec2 origin, float farPlane) {
       tile.e0 = edgeStep(t.v1, t.v2, e.e0, step.x, step.y);
       tile.e1 = edgeStep(t.v2, t.v0, e.e1, step.x, step.y);
       tile.e2 = edgeStep(t.v0, t.v1, e.e2, step.x, step.y);
-      int block = classifyBlock(t, tile, origin + step, int(TILE_SIZE));
-      uint bit = 1u << uint(j * int(BIN_TILES) + i);
-      if (block != BLOCK_OUTSIDE) masks.x |= bit;
-      if (block == BLOCK_INSIDE) masks.y |= bit;
+      addTile(masks, j * int(BIN_TILES) + i, classifyBlock(t, tile, origin + step, int(TILE_SIZE)));
     }
   }
   if (!(t.zMax <= farPlane)) masks.y = 0u;
@@ -218,9 +223,7 @@ FN uvec2 binTileMasksEstimated(LargeTriangle t, ivec2 origin, float farPlane) {
     UNROLL_KEYS64 for (int i = 0; i < int(BIN_TILES); ++i) {
       int block = blockInBox(t, origin + ivec2(i, j) * int(TILE_SIZE), int(TILE_SIZE)) ? BLOCK_INSIDE : BLOCK_OUTSIDE;
       block = min(block, min(classifyEdgeEstimate(e0, i, j), min(classifyEdgeEstimate(e1, i, j), classifyEdgeEstimate(e2, i, j))));
-      uint bit = 1u << uint(j * int(BIN_TILES) + i);
-      if (block != BLOCK_OUTSIDE) masks.x |= bit;
-      if (block == BLOCK_INSIDE) masks.y |= bit;
+      addTile(masks, j * int(BIN_TILES) + i, block);
     }
   }
   if (!(t.zMax <= farPlane)) masks.y = 0u;
