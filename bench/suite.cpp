@@ -15,9 +15,10 @@ struct GridSize {
   int subdivide;  // 20 * 4^subdivide triangles per sphere
 };
 
-// ~1k to ~10M triangles. On lavapipe the largest array bound as a storage buffer (128 MiB) is a
-// grid's shaded vertex positions, 16 bytes each: up to 8.4M vertices (~16.7M triangles) fit; the
-// read-only arrays are bound as texels (2 GiB). A scene past a limit shows "does not fit".
+// ~1k to ~10M triangles. On lavapipe the largest array bound as one storage buffer (128 MiB) is the
+// clip list, 4 bytes a triangle: up to 33.5M triangles fit; the shaded vertices are written a
+// binding's worth at a time and the read-only arrays are bound as texels (2 GiB). A scene past a
+// limit shows "does not fit".
 constexpr GridSize GRIDS[] = {{"1k", 2, 2}, {"10k", 3, 3}, {"100k", 5, 4}, {"1M", 7, 5}, {"8M", 10, 6}, {"10M", 11, 6}};
 constexpr int QUICK_GRIDS = 2;
 

@@ -38,9 +38,16 @@ void checkTexels(const VulkanContext& context, VkDeviceSize texels, const char* 
                    context.properties.limits.maxTexelBufferElements);
 }
 
+// The vertices one shade dispatch writes (gpu_layout.h ShadeChunk): as many shaded positions (16
+// bytes) as one storage-buffer binding holds, a multiple of 16 so that every chunk starts at a
+// multiple of 256 bytes (the largest minStorageBufferOffsetAlignment Vulkan allows).
+uint32_t shadeChunkVertices(const VulkanContext& context) {
+  return std::max<uint32_t>(16, context.properties.limits.maxStorageBufferRange / sizeof(glm::vec4) / 16 * 16);
+}
+
 // Throws, before anything is allocated, when one of the scene's arrays exceeds a device limit:
 // arrays the passes only read are bound as texels alone (maxStorageBufferRange does not apply to
-// them); the shaded vertices and the clip list are written as storage buffers.
+// them); the clip list is written as one storage buffer, the shaded vertices in chunks.
 void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   auto texels = [&](VkDeviceSize bytes, const char* what) { checkTexels(context, bytes / TEXEL_BYTES, what); };
   texels(data.vertices.size() * sizeof(VertexIn), "the vertices");
@@ -48,8 +55,9 @@ void checkSceneFitsDevice(const VulkanContext& context, const SceneData& data) {
   texels(data.objects.size() * sizeof(ObjectData), "the objects");
   texels(data.materials.size() * sizeof(MaterialData), "the materials");
   texels(data.lights.size() * sizeof(LightData), "the lights");
-  checkFits(context, data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");  // and colours
-  texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");
+  // The shade pass writes them in chunks of one binding each (shadeChunkVertices): only where they
+  // are read as storage buffers does one binding hold them all.
+  texels(data.vertices.size() * sizeof(glm::vec4), "the shaded vertex positions");  // and colours
   checkFits(context, clipListBytes(uint32_t(data.triangles.size()), context.info.keys32), "the clip list");
   texels(data.uvs.size() * sizeof(VertexUv), "the texture coordinates");
   if (data.shadows) {
@@ -180,12 +188,19 @@ void GpuRenderer::createLargeBuffers(uint32_t entries, uint32_t setups) {
 }
 
 // One descriptor set for every pass, written from the buffers each binding of shared.h's table
-// names. Identically defined set layouts are compatible, so the raster pass's serves all.
+// names, and one more for each further chunk of the shade pass (gpu_layout.h ShadeChunk), whose
+// shaded bindings start at that chunk. Identically defined set layouts are compatible, so the
+// raster pass's serves all.
 void GpuRenderer::updateDescriptors() {
-  if (set_ != VK_NULL_HANDLE) {
+  const uint32_t perChunk = shadeChunkVertices(context_);
+  const uint32_t chunks = std::max(1u, groupCount(vertexCount_, perChunk));
+  if (chunks > arenaSets_) {
+    createDescriptorArena(arena_, context_, chunks, std::size(SHARED_BINDINGS));
+    arenaSets_ = chunks;
+  } else {
     VK_CHECK(vkResetDescriptorPool(context_.device, arena_.pool, 0));
   }
-  const BufferDescriptor descriptors[] = {
+  BufferDescriptor descriptors[] = {
       bufferDescriptor(BINDING_FRAME, perFrame_.frame),
       bufferDescriptor(BINDING_CONTROL, perFrame_.control),
       texelDescriptor(bindings_[BINDING_VERTICES], scene_.vertices),
@@ -213,7 +228,17 @@ void GpuRenderer::updateDescriptors() {
       texelDescriptor(bindings_[BINDING_SHADOW_TRIANGLES], scene_.shadowTriangles),
   };
   static_assert(std::size(descriptors) == std::size(SHARED_BINDINGS), "every binding of the table is written");
-  set_ = allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors);
+  shadeDispatches_.clear();
+  for (uint32_t k = 0; k < chunks; ++k) {
+    const uint32_t first = k * perChunk, end = std::min(vertexCount_, first + perChunk);
+    for (BufferDescriptor& d : descriptors) {
+      if (d.binding != BINDING_SHADED && d.binding != BINDING_SHADED_COLORS) continue;
+      d.offset = VkDeviceSize(first) * sizeof(glm::vec4);
+      d.range = k + 1 < chunks ? VkDeviceSize(perChunk) * sizeof(glm::vec4) : VK_WHOLE_SIZE;
+    }
+    shadeDispatches_.push_back({{first, end}, allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors)});
+  }
+  set_ = shadeDispatches_[0].set;
 }
 
 // Sends the frame, and the objects, materials and lights where they changed (FrameChanges), with

@@ -123,7 +123,7 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
     const int path = context_.storageArrays ? 2 : (context_.info.keys32 ? 1 : 0);
     const ShaderCode code = SHADERS[r.shader()][path][exactFloats_ ? 1 : 0];
     pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
-                           return createComputePipeline(context_, code.spirv, code.bytes, bindings_, 0, specs);
+                           return createComputePipeline(context_, code.spirv, code.bytes, bindings_, sizeof(ShadeChunk), specs);
                          }));
   }
   std::exception_ptr failure;

@@ -47,8 +47,12 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
     vkCmdDispatch(cmd, std::min(groupCount(words, FILL_GROUP_SIZE), cap), 1, 1);
   }
   if (control_.shadeColors != 0u || control_.shadePositions != 0u) {  // else last frame's still hold
-    bind(SHADE);
-    vkCmdDispatch(cmd, std::min(groupCount(vertexCount_, SHADE_GROUP_SIZE), cap), 1, 1);
+    for (const ShadeDispatch& d : shadeDispatches_) {  // one binding's worth of vertices each (ShadeChunk)
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[SHADE].pipeline);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[SHADE].layout, 0, 1, &d.set, 0, nullptr);
+      vkCmdPushConstants(cmd, current_[SHADE].layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof d.chunk, &d.chunk);
+      vkCmdDispatch(cmd, std::min(groupCount(d.chunk.end - d.chunk.first, SHADE_GROUP_SIZE), cap), 1, 1);
+    }
     computeBarrier(cmd);
   }
   writeTimestamp(cmd, timestamps_, 1);

@@ -48,7 +48,6 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
   try {
     checkSceneFits(data);
     compileSceneModes(data);
-    createDescriptorArena(arena_, context_, 1, std::size(SHARED_BINDINGS));
     createTimestampPool(timestamps_, context_, TIMESTAMP_SLOTS);
     createFrameBuffers();
     uploadScene(data);
@@ -94,6 +93,7 @@ void GpuRenderer::release() {
   perFrame_ = {};
   timestamps_.reset();
   arena_.reset();
+  arenaSets_ = 0;
 }
 
 RenderOutput GpuRenderer::render(const FrameInputs& in, bool withKeys, Image storage) {

@@ -185,7 +185,15 @@ class GpuRenderer {
   ComputePipelineHandles current_[PASS_COUNT];  // this frame's (owned by pipelines_)
   std::vector<Binding> bindings_;  // the shared set as this context's shaders declare it (sharedBindings)
   DescriptorArena arena_;
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  uint32_t arenaSets_ = 0;  // the sets arena_ has room for
+  VkDescriptorSet set_ = VK_NULL_HANDLE;  // every pass's; the shade pass's first chunk's
+  // The shade pass's dispatches (gpu_layout.h ShadeChunk), each with a set whose shaded bindings
+  // start at its chunk; the first's set is set_ (updateDescriptors).
+  struct ShadeDispatch {
+    gpu::ShadeChunk chunk;
+    VkDescriptorSet set;
+  };
+  std::vector<ShadeDispatch> shadeDispatches_;
   TimestampPool timestamps_;
   PassTimes times_;
 

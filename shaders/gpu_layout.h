@@ -123,6 +123,16 @@ struct PassControl {
   uint pad1;
 };
 
+// The vertices one shade dispatch shades, [first, end), as push constants: shaded position and
+// colour i go to slot i - first of the chunk's binding. The shaded arrays are written as storage
+// buffers, each binding at most maxStorageBufferRange (lavapipe: 128 MiB, 8.4M vertices), and read
+// as texels, whose limit is far larger (2 GiB there): a scene with more vertices is shaded in
+// chunks, each dispatch with the bindings at its chunk (compute/gpu_recording.cpp).
+struct ShadeChunk {
+  uint first;
+  uint end;
+};
+
 // What went wrong in a frame (STATUS_* flags); the host clears it before each submission.
 struct FrameStatus {
   uint flags;
@@ -194,7 +204,7 @@ struct LargeEntry {
 
 #ifdef __cplusplus
 static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) == 32);
-static_assert(sizeof(FrameStatus) == 16);
+static_assert(sizeof(FrameStatus) == 16 && sizeof(ShadeChunk) == 8);
 static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 32);
 
 // Where the clip list's buffer keeps the kept words (IdList), their bytes, and its whole size, with

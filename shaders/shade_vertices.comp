@@ -19,7 +19,10 @@ layout(constant_id = SPEC_SHADING) const uint SHADING = SHADING_GOURAUD;
 // unblocked ray; without any, no ray code at all.
 layout(constant_id = SPEC_SHADOWS) const bool SHADOWS = false;
 
-void shadeVertex(uint i) {
+layout(push_constant) uniform ShadeChunkBlock { ShadeChunk chunk; };
+
+// Vertex i, its shaded position and colour stored at `slot` of the chunk's bindings.
+void shadeVertex(uint i, uint slot) {
   VertexIn stored = vertexIn(i);
   ObjectData object = objectData(stored.object);
   VertexIn v = posedVertex(stored, object);
@@ -27,7 +30,7 @@ void shadeVertex(uint i) {
   // Only when the view or an object moved: a loop of 0 or 1 trips, the same for every lane (on
   // lavapipe no cheaper than an if: a loop body runs once, masked, even when no lane enters it).
   [[dont_unroll]] for (uint k = control.shadePositions; k != 0u; --k) {
-    shadedPositions[i] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
+    shadedPositions[slot] = vec4(toHomogeneous(v.position, object.viewOffset, frame), 1.0f);
   }
   if (control.shadeColors == 0u || SHADING != SHADING_GOURAUD) return;  // unchanged, or lit per pixel
   vec3 P = lightingPosition(v.position, object.lightOffset);
@@ -41,14 +44,16 @@ void shadeVertex(uint i) {
   }
   // A point's or a line's vertex without a normal is unlit (only scenes with them have such vertices).
   if (QUADS && isUnlit(v.normal)) color = m.color;
-  shadedColors[i] = vec4(color, 1.0f);
+  shadedColors[slot] = vec4(color, 1.0f);
 }
 
 void main() {
   loadUniforms();
-  // Grid-stride: the host caps the group count at control.groupCap.
-  for (uint i = gl_GlobalInvocationID.x; i < control.vertexCount; i += gl_NumWorkGroups.x * SHADE_GROUP_SIZE) {
-    shadeVertex(i);
+  // Grid-stride over the chunk: the host caps the group count at control.groupCap. The bounds are
+  // multiplied by runtimeOne(), as the control fields are (bindings.glsl loadUniforms).
+  uint first = chunk.first * runtimeOne(), end = chunk.end * runtimeOne();
+  for (uint i = first + gl_GlobalInvocationID.x; i < end; i += gl_NumWorkGroups.x * SHADE_GROUP_SIZE) {
+    shadeVertex(i, i - first);
   }
   checkLoopBudget();
 }

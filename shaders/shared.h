@@ -96,8 +96,9 @@ PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices t
 // Arrays the passes only read are uniform texel buffers: texelFetch is gathered in SIMD by CPU
 // devices (lavapipe), where a storage-buffer load is a loop over the lanes. The shaded positions
 // and colours are arrays of their own: the triangle pass reads only positions (16 bytes a vertex
-// instead of 32 in its cache lines), and each array stays within maxStorageBufferRange for twice
-// the vertices (lavapipe: 128 MiB, 8.4M vertices).
+// instead of 32 in its cache lines). The shade pass writes them as storage buffers, a binding's
+// worth of vertices a dispatch (gpu_layout.h ShadeChunk), so maxStorageBufferRange does not bound
+// a scene's vertices (lavapipe: 128 MiB, 8.4M vertices a binding).
 
 // ---- Specialization constants: the one table of ids, each used once ----
 // X(name, constant_id). What each selects is said where the shader declares it.

@@ -99,24 +99,6 @@ TEST_F(CliLimit, ImageLargerThanTheDeviceHolds) {
                 limitMessage("the per-pixel depth keys", 4096 * rows * sizeof(uint64_t)));
 }
 
-// Icospheres of 655,362 vertices, one more than their shaded positions (16 bytes each) fit in
-// maxStorageBufferRange (13 at 128 MiB). The vertices themselves are read as texels (2 GiB on lavapipe).
-TEST_F(CliLimit, MoreVerticesThanTheDeviceHolds) {
-  const uint64_t sphereBytes = 16 * 655362;
-  const uint64_t spheres = range() / sphereBytes + 1;
-  ASSERT_LE(spheres, 16u);
-  std::string objects;
-  for (uint64_t i = 0; i < spheres; ++i) {
-    objects += std::string(i ? ", " : "") + R"({"shape": "icosphere", "center": [)" + std::to_string(i) +
-               R"(, 0, 0], "subdivide": 8})";
-  }
-  const std::string dir = test::makeTempDir();
-  test::writeFile(dir + "/big.json", R"({"camera": {"position": [0, -30, 0], "look_at": [0, 0, 0]}, "objects": [)" +
-                                         objects + "]}");
-  expectRefused("render " + dir + "/big.json --width 8 --height 8",
-                limitMessage("the shaded vertex positions", spheres * sphereBytes));
-}
-
 // ---- scene sizes ----
 
 // The message GpuRenderer's constructor throws for `data`.
@@ -154,12 +136,58 @@ TEST_F(StressTest, MoreGeometryThanTheDeviceHoldsIsAClearError) {
   // 32 triangles.
   EXPECT_EQ(limited(2 * vertices - 1, big), message("the vertices", 2 * vertices, "texels", "maxTexelBufferElements", 2 * vertices - 1));
   EXPECT_EQ(limited(triangles - 1, big), message("the triangles", triangles, "texels", "maxTexelBufferElements", triangles - 1));
-  EXPECT_EQ(limited(big, 16 * vertices - 1),
-            message("the shaded vertex positions", 16 * vertices, "bytes", "maxStorageBufferRange", 16 * vertices - 1));
   const bool keys32 = context_.info.keys32;
   const uint64_t clipBytes = sizeof(gpu::IdList) + 4 * triangles + (keys32 ? 4 * ((triangles + 31) / 32) : 0);
   EXPECT_EQ(limited(big, clipBytes - 1), message("the clip list", clipBytes, "bytes", "maxStorageBufferRange", clipBytes - 1));
+  // The shaded positions (16 bytes a vertex) are written a binding's worth at a time (gpu_layout.h
+  // ShadeChunk) and read as texels: one binding must hold them all only where the passes read
+  // them as storage buffers (VulkanContext::storageArrays), and there the vertices (32 bytes each) meet it first.
+  ASSERT_LT(16 * vertices, clipBytes);
+  EXPECT_EQ(limited(big, 16 * vertices - 1),
+            context_.storageArrays
+                ? message("the vertices", 32 * vertices, "bytes", "maxStorageBufferRange", 16 * vertices - 1)
+                : message("the clip list", clipBytes, "bytes", "maxStorageBufferRange", 16 * vertices - 1));
   EXPECT_EQ(limited(big, big), "(no error)");
+}
+
+// A scene whose shaded positions pass one storage-buffer binding is shaded in chunks, each dispatch
+// writing through bindings at its chunk (gpu_layout.h ShadeChunk), and renders with the reference's
+// keys and bytes: 1,800 separate triangles (three vertices each) and 2,400 points, half of them
+// lit, 7,800 vertices (124,800 bytes of shaded positions), on a device whose maxStorageBufferRange
+// is 70,000 bytes (4,368 vertices a chunk: two chunks, the second short). The first 1,600 points
+// share the first chunk with the triangles, the rest are in the second.
+TEST_F(StressTest, VerticesPastOneBindingAreShadedInChunks) {
+  const uint64_t range = 70000;
+  std::string soup = R"({"shape": "mesh", "material": {"color": [0.9, 0.6, 0.3], "ks": 0.4}, "vertices": [)", faces;
+  for (int t = 0; t < 1800; ++t) {
+    const double x = -1.0 + 0.05 * (t % 40), y = -1.0 + 0.045 * (t / 40), z = 0.1 * std::sin(0.7 * t);
+    soup += std::string(t ? ", " : "") + "[" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
+            "], [" + std::to_string(x + 0.12) + ", " + std::to_string(y) + ", " + std::to_string(z + 0.02) + "], [" +
+            std::to_string(x) + ", " + std::to_string(y + 0.1) + ", " + std::to_string(z - 0.03) + "]";
+    faces += std::string(t ? ", " : "") + "[" + std::to_string(3 * t) + ", " + std::to_string(3 * t + 1) + ", " +
+             std::to_string(3 * t + 2) + "]";
+  }
+  soup += "], \"faces\": [" + faces + "]}";
+  auto cloud = [](int first, bool normals) {
+    std::string points = R"({"shape": "mesh", "point_size": 3, "vertices": [)", normalRows;
+    for (int p = first; p < first + 1200; ++p) {
+      points += std::string(p > first ? ", " : "") + "[" + std::to_string(-1.0 + 0.00083 * p) + ", " +
+                std::to_string(0.8 * std::cos(0.01 * p)) + ", " + std::to_string(0.2 + 0.1 * std::sin(0.05 * p)) + "]";
+      normalRows += std::string(p > first ? ", " : "") + "[0, -1, 1]";
+    }
+    return points + "]" + (normals ? ", \"normals\": [" + normalRows + "]" : std::string()) + "}";
+  };
+  const std::string dir = makeTempDir();
+  writeFile(dir + "/chunks.json", R"({"camera": {"position": [0, -3, 2], "look_at": [0, 0, 0], "width": 64, "height": 48},
+    "lights": [{"position": [1, -2, 3]}], "objects": [)" + soup + ", " + cloud(0, true) + ", " + cloud(1200, false) + "]}");
+  limitStorageBufferRange(range);
+  SceneData data = buildSceneData(loadSceneSpec(dir + "/chunks.json"));
+  ASSERT_EQ(data.vertices.size(), 7800u);
+  ASSERT_GT(data.vertices.size() * 16, range);
+  const FrameInputs in = makeFrame(data, makeView(loadSceneSpec(dir + "/chunks.json").camera));
+  const StressResult r = renderBoth(std::move(data), in, "chunks.json");
+  const std::vector<size_t> won = pixelsPerObject(r.data, r.reference.keys);  // the soup, then the clouds
+  for (size_t object = 0; object < won.size(); ++object) EXPECT_GT(won[object], 100u) << "object " << object;
 }
 
 // ---- PHONGVK_MAX_STORAGE_BUFFER_RANGE ----
