@@ -33,7 +33,8 @@ bool uploadIfChanged(const VulkanContext& context, Buffer& buffer, const std::ve
 
 }  // namespace
 
-void FrameChanges::restart(const SceneData& data) {
+void FrameChanges::restart(const SceneData& data, bool unlit) {
+  unlit_ = unlit;
   objects_ = data.objects;
   materials_ = data.materials;
   lights_ = data.lights;
@@ -62,8 +63,12 @@ ShadeWork FrameChanges::send(const VulkanContext& context, const FrameArrays& ar
   const bool ambientChanged = first || f.ambient != frame_.ambient;
   // Frames lit per pixel leave the vertex colours as they were; the specular model changes them.
   const bool modelChanged = first || f.shading != frame_.shading || f.specular != frame_.specular;
-  const bool colorsStale = first || materialsChanged || lightsChanged || ambientChanged || modelChanged || objectsMoved || shadowsMoved ||
-                           (eyeMoved && !lightingIsViewIndependent(in));
+  // An unlit vertex's colour is its material's times its own: only the materials and the mode
+  // (frames lit per pixel leave the colours unwritten) change it, not the lights, the ambient, the
+  // eye or a pose (which keeps a zero normal zero).
+  const bool lightingChanged = lightsChanged || ambientChanged || objectsMoved || shadowsMoved ||
+                               (eyeMoved && !lightingIsViewIndependent(in));
+  const bool colorsStale = first || materialsChanged || modelChanged || (!unlit_ && lightingChanged);
   frame_ = f;
   sent_ = true;
   framesShaded_ += colorsStale;

@@ -28,14 +28,16 @@ struct ShadeWork {
 
 class FrameChanges {
  public:
-  // A scene just uploaded with these arrays: the next frame recomputes everything.
-  void restart(const SceneData& data);
+  // A scene just uploaded with these arrays: the next frame recomputes everything. `unlit`: every
+  // vertex is drawn unlit (everyVertexUnlit), so lights, the ambient and the eye leave their colours.
+  void restart(const SceneData& data, bool unlit);
 
   // Uploads the frame's objects, materials and lights where they differ from the last frame's
   // and says what the shade pass must redo. Vertex colours are recomputed only when their inputs
   // changed: materials, lights, ambient, the shading mode or specular model, a posed object's
   // place, or the eye when some material is specular, or the shadow rays' tree (sent again when
-  // it was built again: FrameInputs::shadowVersion); positions when the camera's basis, focal
+  // it was built again: FrameInputs::shadowVersion), and in a scene drawn unlit only when the
+  // materials or the mode changed; positions when the camera's basis, focal
   // length or an object's offsets changed. Throws ArgumentError when a count changes.
   ShadeWork send(const VulkanContext& context, const FrameArrays& arrays, const FrameInputs& in);
 
@@ -50,6 +52,7 @@ class FrameChanges {
   gpu::FrameData frame_{};
   uint64_t shadowVersion_ = 0;
   bool sent_ = false;  // frame_ holds a frame sent since the scene's upload
+  bool unlit_ = false;
   uint64_t framesShaded_ = 0;
   uint64_t framesTransformed_ = 0;
 };

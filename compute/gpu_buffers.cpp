@@ -103,7 +103,7 @@ void GpuRenderer::uploadScene(const SceneData& data) {
   createTexelBuffer(scene_.objects, context_, data.objects, MemoryKind::HostVisible, texelViews(context_));
   createTexelBuffer(scene_.materials, context_, data.materials, MemoryKind::HostVisible, texelViews(context_));
   createTexelBuffer(scene_.lights, context_, data.lights, MemoryKind::HostVisible, texelViews(context_));
-  changes_.restart(data);
+  changes_.restart(data, choices_.unlit);
   // Written by the shade pass as storage buffers, read by the others as texels.
   const VkDeviceSize shadedBytes = VkDeviceSize(vertexCount_) * sizeof(glm::vec4);
   createTexelBuffer(scene_.shadedPositions, context_, nullptr, shadedBytes, STORAGE, MemoryKind::DeviceLocal, texelViews(context_));

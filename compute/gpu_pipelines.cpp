@@ -122,8 +122,10 @@ void GpuRenderer::compilePipelines(const std::vector<PipelineRequest>& requests)
     if (pipelines_->byKey_.count(key) != 0) continue;
     const int path = context_.storageArrays ? 2 : (context_.info.keys32 ? 1 : 0);
     const ShaderCode code = SHADERS[r.shader()][path][exactFloats_ ? 1 : 0];
-    pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, specs = r.specs] {
-                           return createComputePipeline(context_, code.spirv, code.bytes, bindings_, sizeof(ShadeChunk), specs);
+    // Only the shade pass has push constants: the chunk of vertices a dispatch shades (ShadeChunk).
+    const uint32_t pushBytes = r.shader() == SHADE ? sizeof(ShadeChunk) : 0;
+    pending.emplace_back(std::move(key), std::async(std::launch::async, [this, code, pushBytes, specs = r.specs] {
+                           return createComputePipeline(context_, code.spirv, code.bytes, bindings_, pushBytes, specs);
                          }));
   }
   std::exception_ptr failure;

@@ -70,6 +70,7 @@ void GpuRenderer::compileSceneModes(const SceneData& data) {
   choices_.textured = !data.uvs.empty();
   choices_.shadows = data.shadowed;
   choices_.quads = hasQuads(data);
+  choices_.unlit = everyVertexUnlit(data);
   const std::vector<PipelineRequest> requests = passRequests(choices_, data.materials, data.lights.size(), modes, false);
   compilePipelines(requests);
   current_[RASTER] = pipeline(requests[RASTER]);

@@ -24,7 +24,8 @@ std::vector<PipelineRequest> passRequests(const PassChoices& choices, const std:
   const uint32_t output = withKeys ? RESOLVE_OUTPUT_KEEP_KEYS : RESOLVE_OUTPUT_KEY_SLOTS;
   const uint32_t interpolation = frame.interpolation;
   std::vector<PipelineRequest> requests = {
-      {SHADE, shadeSpecs(materials, lightCount)},
+      // A scene drawn unlit throughout shades its vertices with no light: their colours are the same.
+      {SHADE, shadeSpecs(materials, choices.unlit ? 0 : lightCount)},
       {RASTER, {}},
       {CLIP, {{SPEC_BIN_PASS, choices.binPass}, {SPEC_CLIP_POLYGONS, choices.clip}}},
       {RESOLVE_SMALL, {{SPEC_INTERPOLATION, interpolation}, {SPEC_RESOLVE_OUTPUT, output}}},
@@ -47,7 +48,7 @@ std::vector<PipelineRequest> passRequests(const PassChoices& choices, const std:
   }
   if (choices.textured) requests[RESOLVE_SMALL].specs.push_back({SPEC_TEXTURED, 1u});
   if (choices.shadows) {  // only where a light casts them: every other scene keeps its pipelines
-    requests[SHADE].specs.push_back({SPEC_SHADOWS, 1u});
+    if (!choices.unlit) requests[SHADE].specs.push_back({SPEC_SHADOWS, 1u});
     if (perPixel) requests[RESOLVE_SMALL].specs.push_back({SPEC_SHADOWS, 1u});
   }
   if (frame.specular == SPECULAR_BLINN) {

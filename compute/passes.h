@@ -40,6 +40,7 @@ struct PassChoices {
   bool textured = false;             // the scene samples textures: resolve_lit colours every pixel
   bool shadows = false;              // SPEC_SHADOWS: some light casts shadows (shade and resolve_lit trace rays)
   bool quads = false;                // SPEC_QUADS: the scene has points or lines (shaders/screen_quads.h)
+  bool unlit = false;                // every vertex is drawn unlit (everyVertexUnlit): the shade pass lights none
   uint32_t clip = gpu::CLIP_NONE;    // SPEC_CLIP_POLYGONS
   uint32_t listChunk = 0;            // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many a round
 };

@@ -468,6 +468,13 @@ bool lightingIsViewIndependent(const FrameInputs& in) {
   return true;
 }
 
+bool everyVertexUnlit(const SceneData& data) {
+  for (const gpu::VertexIn& v : data.vertices) {
+    if (!gpu::isUnlit(v.normal)) return false;
+  }
+  return true;
+}
+
 uint32_t boxClip(const SceneData& data, const View& view) {
   for (int corner = 0; corner < 8; ++corner) {
     if (nearOrOutsideClipVolume(view, boxCorner(data.boundsMin, data.boundsMax, corner))) return gpu::CLIP_ALL;

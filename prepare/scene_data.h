@@ -152,6 +152,11 @@ void refreshShading(SceneData& data, const SceneSpec& scene);
 // a specular term.
 bool lightingIsViewIndependent(const FrameInputs& in);
 
+// Whether every vertex is drawn unlit: points and lines given no normal (docs/DESIGN.md "Points and
+// lines"), and no triangle, whose vertices always have one. Such a scene's vertex colours are its
+// materials' and vertices' colours whatever the lights, the ambient and the eye.
+bool everyVertexUnlit(const SceneData& data);
+
 // Whether every object of `a` has the place for lighting it has in `b`: what ObjectData holds from
 // lightOffset on (offset, flags, pose). Its viewOffset follows the camera, and the positions alone.
 bool sameLightingPlaces(const std::vector<gpu::ObjectData>& a, const std::vector<gpu::ObjectData>& b);

@@ -189,6 +189,46 @@ TEST(GpuRender, FramesThatOnlyChangeLightingKeepThePositionsAndStillMatch) {
   EXPECT_EQ(context.validation->count(), 0u);
 }
 
+TEST(GpuRender, ScenesDrawnUnlitKeepTheirColoursWhenTheLightingMoves) {
+  // Points and lines without normals are drawn unlit (docs/DESIGN.md "Points and lines"): their
+  // colours are the materials' times the vertices', so a moved eye (with a specular material), a
+  // new ambient or a moved light reshades nothing, while a material's new colour does. The shade
+  // pass of such a scene lights no vertex (everyVertexUnlit). Every frame equals the reference.
+  SceneSpec scene = parseSceneSpec(R"({
+    "camera": {"position": [3, 0, 1], "look_at": [0, 0, 0], "width": 160, "height": 120},
+    "lights": [{"position": [1, -1, 2]}],
+    "render": {"point_size": 4, "line_width": 2},
+    "objects": [{"shape": "mesh", "vertices": [[0, 0, 0], [0.5, 0.2, 0.3], [-0.4, 0.5, -0.2], [0.1, -0.6, 0.4]],
+                 "colors": [[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255], [255, 255, 0, 255]],
+                 "material": {"ks": 0.5, "color": [0.9, 0.8, 0.7]}},
+                {"shape": "mesh", "vertices": [[-1, -1, -0.5], [1, -1, -0.5], [1, 1, -0.5]], "lines": [[0, 1], [1, 2]],
+                 "material": {"ks": 0.3}}]
+  })",
+                           "unlit.json", ".");
+  VulkanContext context = createContext({-1, true});
+  {
+    const SceneData data = buildSceneData(scene);
+    ASSERT_TRUE(everyVertexUnlit(data));
+    GpuRenderer gpu(context, data);
+    FrameInputs in = makeFrame(data, makeView(scene.camera));
+    expectFrameMatchesReference(gpu, data, in, "first frame");
+    scene.camera.position = {0, 3, 1.5};
+    scene.camera.direction = -scene.camera.position;
+    in = makeFrame(data, makeView(scene.camera));
+    expectFrameMatchesReference(gpu, data, in, "moved");
+    in.frame.ambient = glm::vec3(0.3f, 0.1f, 0.2f);
+    in.lights[0].position = glm::vec3(-2.0f, 1.0f, 3.0f);
+    expectFrameMatchesReference(gpu, data, in, "relit");
+    EXPECT_EQ(gpu.framesShaded(), 1u);
+    EXPECT_EQ(gpu.framesTransformed(), 2u);
+    in.materials[0].color = glm::vec3(0.2f, 0.9f, 0.4f);
+    expectFrameMatchesReference(gpu, data, in, "recoloured");
+    EXPECT_EQ(gpu.framesShaded(), 2u);
+  }
+  destroyContext(context);
+  EXPECT_EQ(context.validation->count(), 0u);
+}
+
 TEST(GpuRender, RelitFramesCompileNothingNew) {
   // lavapipe (Mesa 22.3) compiles a pipeline anew at every bind when inlining the uniform values
   // that decide its branches and loop ends halves it, and keeps every copy (bindings.glsl
