@@ -238,7 +238,6 @@ void GpuRenderer::updateDescriptors() {
     }
     shadeDispatches_.push_back({{first, end}, allocateDescriptorSet(context_, arena_, current_[RASTER].setLayout, descriptors)});
   }
-  set_ = shadeDispatches_[0].set;
 }
 
 // Sends the frame, and the objects, materials and lights where they changed (FrameChanges), with
@@ -259,7 +258,6 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
 // The pass control for the frame being rendered, from the renderer's buffers, image and workgroup
 // cap (which the retries grow) and the shade flags uploadFrame or prepareRetry set; uploaded.
 void GpuRenderer::writeControl() {
-  control_.vertexCount = vertexCount_;
   control_.triangleCount = triangleCount_;
   control_.largeCapacity = largeCapacity_;
   control_.largeSetupCapacity = largeSetupCapacity_;

@@ -18,7 +18,8 @@ uint32_t colorWords(uint32_t width, uint32_t height) { return groupCount(3 * wid
 
 void GpuRenderer::bindPass(VkCommandBuffer cmd, Pass pass) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].layout, 0, 1, &set_, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[pass].layout, 0, 1, &shadeDispatches_[0].set, 0,
+                          nullptr);
 }
 
 void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
@@ -47,8 +48,8 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
     vkCmdDispatch(cmd, std::min(groupCount(words, FILL_GROUP_SIZE), cap), 1, 1);
   }
   if (control_.shadeColors != 0u || control_.shadePositions != 0u) {  // else last frame's still hold
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[SHADE].pipeline);
     for (const ShadeDispatch& d : shadeDispatches_) {  // one binding's worth of vertices each (ShadeChunk)
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[SHADE].pipeline);
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, current_[SHADE].layout, 0, 1, &d.set, 0, nullptr);
       vkCmdPushConstants(cmd, current_[SHADE].layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof d.chunk, &d.chunk);
       vkCmdDispatch(cmd, std::min(groupCount(d.chunk.end - d.chunk.first, SHADE_GROUP_SIZE), cap), 1, 1);

@@ -186,9 +186,8 @@ class GpuRenderer {
   std::vector<Binding> bindings_;  // the shared set as this context's shaders declare it (sharedBindings)
   DescriptorArena arena_;
   uint32_t arenaSets_ = 0;  // the sets arena_ has room for
-  VkDescriptorSet set_ = VK_NULL_HANDLE;  // every pass's; the shade pass's first chunk's
   // The shade pass's dispatches (gpu_layout.h ShadeChunk), each with a set whose shaded bindings
-  // start at its chunk; the first's set is set_ (updateDescriptors).
+  // start at its chunk; the first's set is the one every other pass binds (updateDescriptors).
   struct ShadeDispatch {
     gpu::ShadeChunk chunk;
     VkDescriptorSet set;

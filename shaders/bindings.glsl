@@ -50,7 +50,6 @@ void loadUniforms() {
   frame.projection = PROJECTION;
   control = controlBlock;
   uint one = runtimeOne();
-  control.vertexCount *= one;
   control.triangleCount *= one;
   control.shadeColors *= one;
   control.shadePositions *= one;

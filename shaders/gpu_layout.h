@@ -106,9 +106,9 @@ PHONGVK_CONST uint LOOP_PROBE_ITERATIONS = 2;
 
 // What the GPU renderer tells its passes beside the frame: work counts, list capacities, the bin
 // grid, the workgroup cap and which parts of the shade pass run. Written by the renderer alone
-// (compute/gpu_buffers.cpp writeControl), once per attempt at a frame.
+// (compute/gpu_buffers.cpp writeControl), once per attempt at a frame. The shade pass's vertices
+// are not here but in its push constants (ShadeChunk), a chunk a dispatch.
 struct PassControl {
-  uint vertexCount;
   uint triangleCount;
   uint largeCapacity;       // bin entries the large list can hold
   uint largeSetupCapacity;  // large-triangle set-up records the buffer can hold
@@ -121,6 +121,7 @@ struct PassControl {
                             // view and objects); with shadeColors 0 too the shade pass is skipped
   uint pad0;
   uint pad1;
+  uint pad2;
 };
 
 // The vertices one shade dispatch shades, [first, end), as push constants: shaded position and
@@ -203,7 +204,7 @@ struct LargeEntry {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) == 32);
+static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) == 28);
 static_assert(sizeof(FrameStatus) == 16 && sizeof(ShadeChunk) == 8);
 static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 32);
 

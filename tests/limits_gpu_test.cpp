@@ -154,8 +154,8 @@ TEST_F(StressTest, MoreGeometryThanTheDeviceHoldsIsAClearError) {
 // writing through bindings at its chunk (gpu_layout.h ShadeChunk), and renders with the reference's
 // keys and bytes: 1,800 separate triangles (three vertices each) and 2,400 points, half of them
 // lit, 7,800 vertices (124,800 bytes of shaded positions), on a device whose maxStorageBufferRange
-// is 70,000 bytes (4,368 vertices a chunk: two chunks, the second short). The first 1,600 points
-// share the first chunk with the triangles, the rest are in the second.
+// is 70,000 bytes (4,368 vertices a chunk: two chunks, the second short). The first chunk holds
+// most of the triangles' vertices, the second the rest of them and every point.
 TEST_F(StressTest, VerticesPastOneBindingAreShadedInChunks) {
   const uint64_t range = 70000;
   std::string soup = R"({"shape": "mesh", "material": {"color": [0.9, 0.6, 0.3], "ks": 0.4}, "vertices": [)", faces;
@@ -181,10 +181,11 @@ TEST_F(StressTest, VerticesPastOneBindingAreShadedInChunks) {
   writeFile(dir + "/chunks.json", R"({"camera": {"position": [0, -3, 2], "look_at": [0, 0, 0], "width": 64, "height": 48},
     "lights": [{"position": [1, -2, 3]}], "objects": [)" + soup + ", " + cloud(0, true) + ", " + cloud(1200, false) + "]}");
   limitStorageBufferRange(range);
-  SceneData data = buildSceneData(loadSceneSpec(dir + "/chunks.json"));
+  const SceneSpec scene = loadSceneSpec(dir + "/chunks.json");
+  SceneData data = buildSceneData(scene);
   ASSERT_EQ(data.vertices.size(), 7800u);
   ASSERT_GT(data.vertices.size() * 16, range);
-  const FrameInputs in = makeFrame(data, makeView(loadSceneSpec(dir + "/chunks.json").camera));
+  const FrameInputs in = makeFrame(data, makeView(scene.camera));
   const StressResult r = renderBoth(std::move(data), in, "chunks.json");
   const std::vector<size_t> won = pixelsPerObject(r.data, r.reference.keys);  // the soup, then the clouds
   for (size_t object = 0; object < won.size(); ++object) EXPECT_GT(won[object], 100u) << "object " << object;
