@@ -97,6 +97,7 @@ void GpuRenderer::createFrameBuffers() {
 void GpuRenderer::uploadScene(const SceneData& data) {
   vertexCount_ = static_cast<uint32_t>(data.vertices.size());
   triangleCount_ = static_cast<uint32_t>(data.triangles.size());
+  pointQuads_ = pointQuadRange(data);
   createTexelBuffer(scene_.vertices, context_, data.vertices, MemoryKind::DeviceLocal, texelViews(context_));
   createTexelBuffer(scene_.triangles, context_, data.triangles, MemoryKind::DeviceLocal, texelViews(context_));
   // Objects (eye offsets), materials and lights may change per frame: small and host visible.
@@ -259,6 +260,8 @@ void GpuRenderer::uploadFrame(const FrameInputs& in) {
 // cap (which the retries grow) and the shade flags uploadFrame or prepareRetry set; uploaded.
 void GpuRenderer::writeControl() {
   control_.triangleCount = triangleCount_;
+  control_.pointBase = pointQuads_.x;
+  control_.pointEnd = pointQuads_.y;
   control_.largeCapacity = largeCapacity_;
   control_.largeSetupCapacity = largeSetupCapacity_;
   control_.binsX = binsAcross(width_);

@@ -1,5 +1,5 @@
 // gpu_recording.cpp — one frame's command buffer: reset the lists, then the passes in order
-// (shade, triangle, clip, bin, resolve large then small, pack), each dispatch capped at the
+// (shade, triangle and point, clip, bin, resolve large then small, pack), each dispatch capped at the
 // workgroup cap and separated by barriers, with timestamps between the stages (PassTimes).
 #include "compute/gpu_renderer.h"
 
@@ -59,11 +59,21 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   writeTimestamp(cmd, timestamps_, 1);
   // The triangle and clip passes; on the 32-bit key path twice, the keys' high words and then their
   // low words among the fragments at each pixel's depth (shaders/raster_loops.glsl).
-  // The triangle pass's ids dispatch takes a chunk of kept triangles an invocation (gpu_layout.h keptSpan).
+  // The triangle pass's ids dispatch takes a chunk of kept triangles an invocation (gpu_layout.h
+  // keptSpan); before it, the point pass takes a point quad an invocation, the triangle pass the
+  // other records (raster_triangles.comp), with no barrier between them: both only offer keys and
+  // list records for the clip pass, atomically.
   auto raster = [&](Pass triangles, Pass clip) {
-    bind(triangles);
-    const uint32_t items = triangles == RASTER_IDS ? keptChunks(triangleCount_) : triangleCount_;
-    vkCmdDispatch(cmd, std::min(groupCount(items, SETUP_GROUP_SIZE), cap), 1, 1);
+    const uint32_t pointRecords = pointQuads_.y - pointQuads_.x;
+    const uint32_t items = triangles == RASTER_IDS ? keptChunks(triangleCount_) : triangleCount_ - pointRecords;
+    if (items != 0u) {
+      bind(triangles);
+      vkCmdDispatch(cmd, std::min(groupCount(items, SETUP_GROUP_SIZE), cap), 1, 1);
+    }
+    if (triangles == RASTER && pointRecords != 0u) {
+      bind(RASTER_POINTS);
+      vkCmdDispatch(cmd, std::min(groupCount(pointRecords / 2u, SETUP_GROUP_SIZE), cap), 1, 1);
+    }
     computeBarrier(cmd);
     bind(clip);
     vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));

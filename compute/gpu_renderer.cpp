@@ -70,6 +70,8 @@ void GpuRenderer::compileSceneModes(const SceneData& data) {
   choices_.textured = !data.uvs.empty();
   choices_.shadows = data.shadowed;
   choices_.quads = hasQuads(data);
+  const glm::uvec2 points = pointQuadRange(data);
+  choices_.points = points.x < points.y;
   choices_.unlit = everyVertexUnlit(data);
   const std::vector<PipelineRequest> requests = passRequests(choices_, data.materials, data.lights.size(), modes, false);
   compilePipelines(requests);

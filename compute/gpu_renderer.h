@@ -220,6 +220,7 @@ class GpuRenderer {
   FrameBuffers perFrame_;
   uint32_t vertexCount_ = 0;
   uint32_t triangleCount_ = 0;
+  glm::uvec2 pointQuads_{0};  // the records the point pass draws (prepare/scene_data.h pointQuadRange)
   uint32_t largeCapacity_ = 0;
   uint32_t largeSetupCapacity_ = 0;
   uint32_t width_ = 0;

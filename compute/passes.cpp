@@ -60,6 +60,10 @@ std::vector<PipelineRequest> passRequests(const PassChoices& choices, const std:
     requests.back().specs.push_back({SPEC_KEY_PASS, KEY_PASS_IDS});
     for (Pass pass : {RASTER, CLIP}) requests[pass].specs.push_back({SPEC_KEY_PASS, KEY_PASS_DEPTH});
   }
+  if (choices.points) {  // the triangle shader as the point pass, with the triangle pass's constants
+    requests.push_back({RASTER_POINTS, requests[RASTER].specs, RASTER});
+    requests.back().specs.push_back({SPEC_POINT_PASS, 1u});
+  }
   if (choices.binPass) requests.push_back({BIN_LARGE, {}});
   if (withKeys) requests.push_back({FILL, {}});  // the colour buffer's background
   if (packsColors(choices, withKeys)) requests.push_back({PACK, {}});

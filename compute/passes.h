@@ -17,9 +17,10 @@ namespace phongvk {
 // RESOLVE_SMALL in frames lit per pixel (flat and Phong shading), RESOLVE_LARGE_KEYS runs
 // RESOLVE_LARGE where it keeps only keys (those frames, and lists taken in rounds).
 // On the 32-bit key path RASTER_IDS and CLIP_IDS run the triangle and clip shaders again, for the
-// keys' low words (raster_loops.glsl KEY_PASS).
+// keys' low words (raster_loops.glsl KEY_PASS). RASTER_POINTS runs the triangle shader as the point
+// pass, which draws the point quads (raster_triangles.comp POINT_PASS).
 enum Pass { SHADE, RASTER, CLIP, RESOLVE_SMALL, RESOLVE_LARGE, BIN_LARGE, FILL, PACK, RESOLVE_LIT, RESOLVE_LARGE_KEYS,
-            RASTER_IDS, CLIP_IDS, PASS_COUNT };
+            RASTER_IDS, CLIP_IDS, RASTER_POINTS, PASS_COUNT };
 
 // A pass, the shader build that runs it (the pass's own, or a variant: RESOLVE_LIT,
 // RESOLVE_LARGE_KEYS) and the specialization constants it is compiled with.
@@ -40,6 +41,7 @@ struct PassChoices {
   bool textured = false;             // the scene samples textures: resolve_lit colours every pixel
   bool shadows = false;              // SPEC_SHADOWS: some light casts shadows (shade and resolve_lit trace rays)
   bool quads = false;                // SPEC_QUADS: the scene has points or lines (shaders/screen_quads.h)
+  bool points = false;               // the scene (its share) has whole point quads: the point pass draws them
   bool unlit = false;                // every vertex is drawn unlit (everyVertexUnlit): the shade pass lights none
   uint32_t clip = gpu::CLIP_NONE;    // SPEC_CLIP_POLYGONS
   uint32_t listChunk = 0;            // SPEC_LIST_CHUNK: 0, or the bins' lists taken this many a round

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <memory>
@@ -115,6 +116,17 @@ inline bool isQuadRecord(const SceneData& data, uint32_t id) { return id >= data
 
 // Whether the scene (a share: its part) draws points or lines.
 inline bool hasQuads(const SceneData& data) { return data.quadBase < data.triangles.size(); }
+
+// The records of data.triangles (a share's own) that hold whole point quads, both halves of each, as
+// [x, y): the GPU's point pass draws them (shaders/raster_triangles.comp). A share may begin on a
+// quad's second half or end on a first half: those halves stay the triangle pass's. x = y: none.
+inline glm::uvec2 pointQuadRange(const SceneData& data) {
+  const uint64_t count = data.triangles.size();
+  if (data.pointCount == 0) return glm::uvec2(uint32_t(count));
+  const uint64_t start = uint64_t(data.quadStart) + 2 * data.lineCount, first = data.triangleBase;  // the whole scene's
+  const uint64_t base = std::min(start >= first ? start - first : (first - start) % 2, count);
+  return glm::uvec2(uint32_t(base), uint32_t(base + (count - base) / 2 * 2));
+}
 
 // A record of the whole scene (a key's id) as the primitive it draws: a triangle keeps its index, a
 // line or a point, whose quad is two records, is numbered after the triangles (lines first, then

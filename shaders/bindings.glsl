@@ -54,6 +54,8 @@ void loadUniforms() {
   control.shadeColors *= one;
   control.shadePositions *= one;
   control.loopProbe *= one;
+  control.pointBase *= one;
+  control.pointEnd *= one;
 }
 #endif
 // The arrays the passes only read, as RGBA32UI texels. The 32-bit key path's builds for devices with

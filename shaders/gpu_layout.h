@@ -119,8 +119,11 @@ struct PassControl {
   uint shadeColors;         // 0: colours from the previous frame are still right, only transform
   uint shadePositions;      // 0: the shaded positions of the previous frame are still right (same
                             // view and objects); with shadeColors 0 too the shade pass is skipped
-  uint pad0;
-  uint pad1;
+  // The records of whole point quads, [pointBase, pointEnd), both halves of each (a share may
+  // begin or end inside one): the point pass draws them, a quad an invocation, and the triangle
+  // pass the records before and after (raster_triangles.comp). pointBase = pointEnd: none.
+  uint pointBase;
+  uint pointEnd;
   uint pad2;
 };
 

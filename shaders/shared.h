@@ -119,7 +119,8 @@ PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices t
   X(SPEC_TEXTURED, 13)                  \
   X(SPEC_KEY_PASS, 14)                  \
   X(SPEC_SHADOWS, 15)                   \
-  X(SPEC_QUADS, 16)
+  X(SPEC_QUADS, 16)                     \
+  X(SPEC_POINT_PASS, 17)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;

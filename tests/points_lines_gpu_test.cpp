@@ -205,6 +205,45 @@ TEST(PointsLines, BadSizesAndVerticesAreRefusedByName) {
             std::string::npos);
 }
 
+// 307 points of six sizes (a hundredth of a pixel to 64) scattered from behind the eye, across the
+// near plane and the edges of the view, to beyond the far plane, in a 96x64 view with `projection`.
+Scene scatteredCloud(const std::string& projection) {
+  const double sizes[] = {0.01, 1, 2.5, 7, 20, 64};
+  std::string objects;
+  uint32_t h = 12345u;
+  const auto next = [&h](double lo, double hi) {
+    h = h * 1664525u + 1013904223u;
+    return lo + (hi - lo) * double(h >> 8) / double(1u << 24);
+  };
+  for (int o = 0; o < 6; ++o) {
+    std::string vertices;
+    for (int i = 0; i < (o == 0 ? 52 : 51); ++i) {
+      vertices += std::string(i ? ", [" : "[") + std::to_string(next(-7, 7)) + ", " + std::to_string(next(-5, 14)) + ", " +
+                  std::to_string(next(-3, 6)) + "]";
+    }
+    objects += std::string(o ? ", " : "") + R"({"shape": "mesh", "vertices": [)" + vertices +
+               R"(], "point_size": )" + std::to_string(sizes[o]) + "}";
+  }
+  return parseScene(R"({"camera": {"position": [0, -4, 2], "look_at": [0, 0, 0], "near": 0.5, "far": 12,
+      "width": 96, "height": 64)" + projection + R"(}, "lights": [], "objects": [)" + objects + "]}");
+}
+
+TEST(PointsLines, APointCloudAcrossEveryPlaneAndInSharesThatSplitItsQuadsGivesTheReferencesKeys) {
+  // The GPU draws a point's two quad halves in one invocation (raster_triangles.comp drawPoint),
+  // handing the halves of one that needs clipping or is not small to the clip pass; the reference
+  // draws each half as a triangle. 614 records in three shares: the second ends on a first half,
+  // the third begins on the second half of the same point.
+  for (const char* projection : {"", R"(, "projection": "orthographic", "ortho_height": 9)"}) {
+    SCOPED_TRACE(projection);
+    const Scene scene = scatteredCloud(projection);
+    EXPECT_GT(covered(both(scene)).size(), 500u);
+    for (int part = 0; part < 3; ++part) {
+      SCOPED_TRACE(part);
+      EXPECT_GT(covered(both(scene.share(part, 3))).size(), 10u);
+    }
+  }
+}
+
 TEST(PointsLines, APointCloudIsFramedByTheFittedCamera) {
   std::string vertices;
   for (int i = 0; i < 100; ++i) {
