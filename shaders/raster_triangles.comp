@@ -26,6 +26,14 @@ bool rasterizeSmallTriangle(TriangleSetup t) {
   return rasterizeSmall(t, small);
 }
 
+// Lists records first .. first + count - 1 for the clip pass (a triangle, or a point's two halves),
+// with its indirect dispatch grown to reach them.
+void listForClipPass(uint first, uint count) {
+  uint k = atomicAdd(clipList.count, count);
+  for (uint i = 0u; i < count; ++i) clipIds[k + i] = first + i;
+  atomicMax(clipList.groupsX, min((k + count - 1u) / CLIP_GROUP_SIZE + 1u, control.groupCap));
+}
+
 // Triangle `id`: set up, then drawn here if small and unclipped, else listed for the clip pass. On
 // the 32-bit key path's depth pass, kept (raster_loops.glsl keepTriangle) where it may win a pixel.
 void drawTriangle(uint id) {
@@ -42,9 +50,7 @@ void drawTriangle(uint id) {
     if (!IDS_PASS && mayWin) keepTriangle(id);
 #endif
   } else if (!IDS_PASS) {
-    uint k = atomicAdd(clipList.count, 1u);
-    clipIds[k] = id;
-    atomicMax(clipList.groupsX, min(k / CLIP_GROUP_SIZE + 1u, control.groupCap));
+    listForClipPass(id, 1u);
   }
 }
 
@@ -70,10 +76,7 @@ void drawPoint(uint id) {
   bool inside = insideClipVolume(h0, h1, h2, frame.nearPlane, frame.projection);
   if (inside && !setupUnclipped(h0, h1, h2, frame, t)) return;
   if (!inside || !fitsSmallEdges(t.snapped[0], t.snapped[1], t.snapped[2])) {  // both halves to the clip pass
-    uint k = atomicAdd(clipList.count, 2u);
-    clipIds[k] = id;
-    clipIds[k + 1u] = id + 1u;
-    atomicMax(clipList.groupsX, min((k + 1u) / CLIP_GROUP_SIZE + 1u, control.groupCap));
+    listForClipPass(id, 2u);
     return;
   }
   ivec2 a = t.snapped[0], c = t.snapped[2];  // the second half's corners: (-, -), (+, +), (-, +)
@@ -119,13 +122,12 @@ void main() {
 #endif
   // Grid-stride: the host caps the group count at control.groupCap.
   uint stride = gl_NumWorkGroups.x * SETUP_GROUP_SIZE;
+  uint pointRecords = control.pointEnd - control.pointBase;
   if (POINT_PASS) {
-    uint quads = (control.pointEnd - control.pointBase) / 2u;
-    for (uint q = gl_GlobalInvocationID.x; q < quads; q += stride) drawPoint(control.pointBase + 2u * q);
+    for (uint q = gl_GlobalInvocationID.x; q < pointRecords / 2u; q += stride) drawPoint(control.pointBase + 2u * q);
   } else {  // every record but the point quads'
-    uint items = control.triangleCount - (control.pointEnd - control.pointBase);
-    for (uint i = gl_GlobalInvocationID.x; i < items; i += stride) {
-      drawTriangle(i < control.pointBase ? i : i + (control.pointEnd - control.pointBase));
+    for (uint i = gl_GlobalInvocationID.x; i < control.triangleCount - pointRecords; i += stride) {
+      drawTriangle(i < control.pointBase ? i : i + pointRecords);
     }
   }
   checkLoopBudget();
