@@ -37,7 +37,7 @@ GpuRenderer::GpuRenderer(const VulkanContext& context, const SceneData& data, co
   const bool cpu = context_.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool cpuLayout = options.layout == WorkLayout::Cpu || (options.layout == WorkLayout::Auto && cpu);
   choices_.resolveTiles = cpuLayout ? 1u : 8u;
-  choices_.binPass = !cpuLayout || context_.info.keys32;  // the 32-bit key path's clip pass never links (raster_loops.glsl)
+  choices_.binPass = !cpuLayout || context_.storageArrays;  // the _k32s clip pass never links (raster_loops.glsl)
   choices_.keys32 = context_.info.keys32;
   if (options.output == ColorOutput::InKeySlots && !hasSharedMemory(context_)) {
     throw ArgumentError("colours in the key slots need memory that is device local and host cached");

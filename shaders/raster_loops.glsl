@@ -156,9 +156,10 @@ bool linkEntry(uint e, uint slot, LargeTriangle record, ivec2 b) {
 
 // Whether the bin pass (bin_large.comp) links the large triangles into their bins' lists
 // (WorkLayout::Gpu) instead of the invocation that set each up.
-// The 32-bit key path's builds always leave the linking to the bin pass: with the linking code in
-// the clip pass, SwiftShader's compiler took 20 s for it (50 s for its _exact build), 0.13 s without.
-#ifdef PHONGVK_KEYS32
+// The storage-array builds (_k32s: SwiftShader's, gpu_renderer.cpp) always leave the linking to the
+// bin pass: SwiftShader compiles the code a specialization constant turns off, and with the linking
+// in it the clip pass took its compiler 53 s, against 0.13 s without (docs/DECISIONS.md).
+#if defined(PHONGVK_KEYS32) && defined(PHONGVK_STORAGE_ARRAYS)
 const bool BIN_PASS = true;
 #else
 layout(constant_id = SPEC_BIN_PASS) const bool BIN_PASS = false;
