@@ -32,7 +32,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, image_.bins.buffer, 0, sizeof noBins, &noBins);
   const LargeList emptyList = {0, 0, 0, 0};
   vkCmdUpdateBuffer(cmd, image_.large.buffer.buffer, 0, sizeof emptyList, &emptyList);
-  const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0};
+  const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0, 0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, scene_.clipList.buffer, 0, sizeof noClipping, &noClipping);
   if (context_.info.keys32) {  // no triangle kept yet (gpu_layout.h keptWords)
     vkCmdFillBuffer(cmd, scene_.clipList.buffer, keptWordsOffset(triangleCount_), keptWordsBytes(triangleCount_), 0u);
@@ -60,13 +60,17 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   // The triangle and clip passes; on the 32-bit key path twice, the keys' high words and then their
   // low words among the fragments at each pixel's depth (shaders/raster_loops.glsl).
   // The triangle pass's ids dispatch takes a chunk of kept triangles an invocation (gpu_layout.h
-  // keptSpan); before it, the point pass takes a point quad an invocation, the triangle pass the
-  // other records (raster_triangles.comp), with no barrier between them: both only offer keys and
-  // list records for the clip pass, atomically.
+  // keptSpan), or in a small scene one listed kept triangle (keptList: indirect, as many as the
+  // depth dispatch listed); before it, the point pass takes a point quad an invocation, the
+  // triangle pass the other records (raster_triangles.comp), with no barrier between them: both
+  // only offer keys and list records for the clip pass, atomically.
   auto raster = [&](Pass triangles, Pass clip) {
     const uint32_t pointRecords = pointQuads_.y - pointQuads_.x;
     const uint32_t items = triangles == RASTER_IDS ? keptChunks(triangleCount_) : triangleCount_ - pointRecords;
-    if (items != 0u) {
+    if (triangles == RASTER_IDS && choices_.keptList) {
+      bind(triangles);
+      vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, idsGroupsX));
+    } else if (items != 0u) {
       bind(triangles);
       vkCmdDispatch(cmd, std::min(groupCount(items, SETUP_GROUP_SIZE), cap), 1, 1);
     }

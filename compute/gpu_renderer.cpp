@@ -73,6 +73,7 @@ void GpuRenderer::compileSceneModes(const SceneData& data) {
   const glm::uvec2 points = pointQuadRange(data);
   choices_.points = points.x < points.y;
   choices_.unlit = everyVertexUnlit(data);
+  choices_.keptList = choices_.keys32 && keptList(uint32_t(data.triangles.size()));
   const std::vector<PipelineRequest> requests = passRequests(choices_, data.materials, data.lights.size(), modes, false);
   compilePipelines(requests);
   current_[RASTER] = pipeline(requests[RASTER]);

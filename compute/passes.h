@@ -37,6 +37,7 @@ struct PassChoices {
   uint32_t resolveTiles = 1;         // SPEC_RESOLVE_TILES
   bool binPass = false;              // SPEC_BIN_PASS: the bin pass links the large triangles
   bool keys32 = false;               // the 32-bit key path: the triangle and clip passes twice
+  bool keptList = false;             // SPEC_KEPT_LIST: on it, the kept triangles listed (gpu_layout.h keptList)
   bool colorsInKeys = false;         // the host reads the colours from the key slots (no pack pass)
   bool textured = false;             // the scene samples textures: resolve_lit colours every pixel
   bool shadows = false;              // SPEC_SHADOWS: some light casts shadows (shade and resolve_lit trace rays)

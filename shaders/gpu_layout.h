@@ -160,9 +160,17 @@ struct BinList {
 // holds the header, room for every triangle's id, and on the 32-bit key path keptWords(triangles)
 // words of the triangle pass's kept triangles: bit t % 32 of word t / 32 set where its depth
 // dispatch drew a fragment of small triangle t that may still win a pixel (raster_loops.glsl
-// keepTriangle). The clip pass keeps none: with that code in it, SwiftShader's compiler took
-// several times as long for the clip pass (docs/DECISIONS.md, "The 32-bit key path").
+// keepTriangle); in a scene of fewer than KEPT_LIST_BELOW triangles (keptList) the kept
+// triangles' ids instead, listed, room for every triangle's after the words. The clip pass keeps
+// none: with that code in it, SwiftShader's compiler took several times as long for the clip pass
+// (docs/DECISIONS.md, "The 32-bit key path").
 FN uint keptWords(uint triangles) { return (triangles + 31u) / 32u; }
+// Below this many triangles the ids dispatch walks a list of the kept triangles, one an
+// invocation (an atomicAdd each in the depth dispatch), rather than their bits a triangle an
+// invocation: its SIMD batches then hold kept triangles only (fig6_orbit_red's ids dispatch 1.24 ->
+// 0.98 ms). The grids keep the bits: a million triangles' atomics cost more than the list saved.
+PHONGVK_CONST uint KEPT_LIST_BELOW = 16384u;
+FN bool keptList(uint triangles) { return triangles < KEPT_LIST_BELOW; }
 // The kept bits one invocation of an ids pass walks: a word (32) where that leaves at least 8192
 // invocations, else the largest power of two that does, down to 1. A word an invocation is what
 // spares a grid of a million triangles most of their set-ups; in a scene of a few thousand, 32
@@ -182,6 +190,10 @@ struct IdList {
   uint binGroupsX;   // the bin pass's indirect dispatch (WorkLayout::Gpu): the large list's
   uint binGroupsY;   // entries over BIN_GROUP_SIZE, capped at groupCap; (0, 1, 1) without any
   uint binGroupsZ;
+  uint keptListed;   // the 32-bit key path's kept triangles listed (keptList scenes)
+  uint idsGroupsX;   // the triangle pass's ids dispatch over them: keptListed over SETUP_GROUP_SIZE,
+  uint idsGroupsY;   // capped at groupCap; (0, 1, 1) with none
+  uint idsGroupsZ;
   uint pad;
 };
 
@@ -209,14 +221,16 @@ struct LargeEntry {
 #ifdef __cplusplus
 static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) == 28);
 static_assert(sizeof(FrameStatus) == 16 && sizeof(ShadeChunk) == 8);
-static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 32);
+static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 48);
 
 // Where the clip list's buffer keeps the kept words (IdList), their bytes, and its whole size, with
-// the kept words on the 32-bit key path (`keptBits`) and without them elsewhere.
+// the kept words (and the kept list, keptList) on the 32-bit key path (`keptBits`) and without
+// them elsewhere.
 inline uint64_t keptWordsOffset(uint32_t triangles) { return sizeof(IdList) + uint64_t(triangles) * sizeof(uint32_t); }
 inline uint64_t keptWordsBytes(uint32_t triangles) { return uint64_t(keptWords(triangles)) * sizeof(uint32_t); }
 inline uint64_t clipListBytes(uint32_t triangles, bool keptBits) {
-  return keptWordsOffset(triangles) + (keptBits ? keptWordsBytes(triangles) : 0u);
+  const uint64_t list = keptList(triangles) ? uint64_t(triangles) * sizeof(uint32_t) : 0u;
+  return keptWordsOffset(triangles) + (keptBits ? keptWordsBytes(triangles) + list : 0u);
 }
 }  // namespace phongvk::gpu
 #endif

@@ -110,7 +110,20 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s) {
 // fragments may win cannot hold any pixel's least depth word, so leaving it out changes no pixel.
 uint keptWordIndex(uint w) { return control.triangleCount + w; }
 
-void keepTriangle(uint id) { atomicOr(clipIds[keptWordIndex(id / 32u)], 1u << (id % 32u)); }
+// In a scene of fewer than KEPT_LIST_BELOW triangles (gpu_layout.h keptList), the kept triangles
+// as a list after the words, walked a triangle an invocation by an indirect dispatch.
+layout(constant_id = SPEC_KEPT_LIST) const bool KEPT_LIST = false;
+uint keptListIndex(uint k) { return control.triangleCount + keptWords(control.triangleCount) + k; }
+
+void keepTriangle(uint id) {
+  if (!KEPT_LIST) {
+    atomicOr(clipIds[keptWordIndex(id / 32u)], 1u << (id % 32u));
+    return;
+  }
+  uint k = atomicAdd(clipList.keptListed, 1u);
+  clipIds[keptListIndex(k)] = id;
+  atomicMax(clipList.idsGroupsX, min(k / SETUP_GROUP_SIZE + 1u, control.groupCap));
+}
 
 // Chunk c's kept bits (keptSpan of them, from triangle c * span on), in its word's low bits.
 uint keptChunkBits(uint c, uint span) {

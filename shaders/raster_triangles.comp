@@ -110,7 +110,14 @@ void drawPoint(uint id) {
 void main() {
   loadUniforms();
 #ifdef PHONGVK_KEYS32
-  if (IDS_PASS) {  // the kept triangles only, a chunk of them an invocation
+  if (IDS_PASS && KEPT_LIST) {  // the kept triangles only, from their list, one an invocation
+    for (uint k = gl_GlobalInvocationID.x; k < clipList.keptListed; k += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {
+      drawTriangle(clipIds[keptListIndex(k)]);
+    }
+    checkLoopBudget();
+    return;
+  }
+  if (IDS_PASS) {  // the kept triangles only, a chunk of their bits an invocation
     uint span = keptSpan(control.triangleCount);
     uint chunks = keptChunks(control.triangleCount);
     for (uint c = gl_GlobalInvocationID.x; c < chunks; c += gl_NumWorkGroups.x * SETUP_GROUP_SIZE) {

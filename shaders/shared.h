@@ -120,7 +120,8 @@ PHONGVK_CONST uint OBJECT_POSED = 2;         // placed by a pose: its vertices t
   X(SPEC_KEY_PASS, 14)                  \
   X(SPEC_SHADOWS, 15)                   \
   X(SPEC_QUADS, 16)                     \
-  X(SPEC_POINT_PASS, 17)
+  X(SPEC_POINT_PASS, 17)                \
+  X(SPEC_KEPT_LIST, 18)
 
 #define PHONGVK_DECLARE_BINDING(name, binding, type) PHONGVK_CONST uint name = binding;
 #define PHONGVK_DECLARE_SPEC(name, id) PHONGVK_CONST uint name = id;
