@@ -51,10 +51,16 @@ std::vector<SuiteScene> deviceScenes(const BenchOptions& options) {
   return scenes;
 }
 
+// The smoke test (--quick) leaves SwiftShader out (its compiler takes tens of seconds a pass) and
+// takes 3 rounds.
+DeviceTable measureDevices(const BenchOptions& options) {
+  return runDeviceTable(deviceScenes(options), options.repeat, options.quick ? 3 : DEVICE_ROUNDS, !options.quick);
+}
+
 // The device table alone, as a report of its own (`--devices-only`).
 void runDevicesOnly(const BenchOptions& options) {
   checkWritable(options.out);
-  const DeviceTable table = runDeviceTable(deviceScenes(options), options.repeat, !options.quick);
+  const DeviceTable table = measureDevices(options);
   writeText(options.out, "# phongvk devices and key paths\n\nMade by `phongvk_bench --devices-only`.\n\n" +
                              deviceTableSection(table, options.repeat));
   std::printf("wrote %s\n", options.out.c_str());
@@ -92,8 +98,7 @@ void runBench(const BenchOptions& options) {
     std::printf("phongvk_bench on %s, %d timed frames per measurement\n", report.machine.device.c_str(), options.repeat);
     report.scenes = runSuite(gpu.context, options);
     std::printf("devices and key paths:\n");
-    // The smoke test (--quick) leaves SwiftShader out: its compiler takes tens of seconds a pass.
-    report.devices = runDeviceTable(deviceScenes(options), options.repeat, !options.quick);
+    report.devices = measureDevices(options);
     report.setups = runSetup(options);
     report.sweep = runErrorSweep(gpu.context, options.quick, options.repeat);
     report.plotNote = plotErrorSweep(report.sweep, options.plot, gpu.context.info.name);

@@ -9,6 +9,7 @@
 #include "tools/statistics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -89,7 +90,18 @@ std::vector<Column> makeColumns(bool withSwiftShader) {
   return columns;
 }
 
-DeviceRow measureRow(std::vector<Column>& columns, const SuiteScene& scene, int repeat) {
+// The median over the rounds of a column's frame time over the first column's in the same round
+// (NaN when a round of either failed).
+double medianRatio(const std::vector<ComputeRun>& column, const std::vector<ComputeRun>& first) {
+  std::vector<double> ratios;
+  for (size_t r = 0; r < column.size(); ++r) {
+    if (!column[r].time.ok() || !first[r].time.ok() || !(first[r].time.wallMs > 0)) return NOT_MEASURED;
+    ratios.push_back(column[r].time.wallMs / first[r].time.wallMs);
+  }
+  return median(ratios);
+}
+
+DeviceRow measureRow(std::vector<Column>& columns, const SuiteScene& scene, int repeat, int rounds) {
   DeviceRow row;
   row.scene = scene.name;
   const SceneSpec loaded = scene.load();
@@ -101,37 +113,40 @@ DeviceRow measureRow(std::vector<Column>& columns, const SuiteScene& scene, int 
   const FramePair frames = makeFramePair(data, view);
   const BackendRun reference = runReference(data, frames, 1);
   std::vector<std::vector<ComputeRun>> runs(columns.size());
-  for (int round = 0; round < SCENE_ROUNDS; ++round) {
-    for (size_t c = 0; c < columns.size(); ++c) {
+  for (int round = 0; round < rounds; ++round) {
+    for (size_t i = 0; i < columns.size(); ++i) {
+      const size_t c = (i + size_t(round)) % columns.size();
       const ContextLock lock(columns[c].context->context);
       runs[c].push_back(runCompute(columns[c].context->context, data, frames, repeat, columns[c].pipelines));
     }
   }
-  for (const std::vector<ComputeRun>& columnRuns : runs) {
-    const ComputeRun run = medianRound(columnRuns);
+  for (size_t c = 0; c < columns.size(); ++c) {
+    const ComputeRun run = medianRound(runs[c]);
     row.times.push_back(run.time);
+    row.ratios.push_back(medianRatio(runs[c], runs[0]));
     row.maxDiff.push_back(run.time.ok() && reference.time.ok() ? compareImages(reference.image, run.image).maxChannelDiff() : -1);
   }
   return row;
 }
 
-std::string cell(const Timing& t, const Timing& base) {
+std::string cell(const Timing& t, double ratio) {
   if (!t.ok()) return t.failureKind();
   std::string text = number(t.wallMs, 2) + " ms";
-  if (base.ok() && base.wallMs > 0) text += " (" + number(t.wallMs / base.wallMs, 2) + "x)";
+  if (std::isfinite(ratio)) text += " (" + number(ratio, 2) + "x)";
   return text;
 }
 
 }  // namespace
 
-DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, bool withSwiftShader) {
+DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, int rounds, bool withSwiftShader) {
   std::vector<Column> columns = makeColumns(withSwiftShader);
   DeviceTable table;
+  table.rounds = rounds;
   for (const Column& c : columns) table.columns.push_back(c.description);
   for (const SuiteScene& scene : scenes) {
-    table.rows.push_back(measureRow(columns, scene, repeat));
+    table.rows.push_back(measureRow(columns, scene, repeat, rounds));
     std::string line = "devices " + scene.name + ":";
-    for (size_t c = 0; c < columns.size(); ++c) line += " " + cell(table.rows.back().times[c], table.rows.back().times[0]);
+    for (size_t c = 0; c < columns.size(); ++c) line += " " + cell(table.rows.back().times[c], table.rows.back().ratios[c]);
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   }
@@ -143,8 +158,9 @@ std::string deviceTableSection(const DeviceTable& table, int repeat) {
                   "path it can take (docs/DESIGN.md \"Visibility\"): a device with 64-bit atomics also forced to the "
                   "32-bit path (`PHONGVK_KEY_PATH=32`), and SwiftShader (Debian's `chromium-common`) where installed. "
                   "Each cell is the median frame wall time (" + std::to_string(repeat) + " frame(s) after a warm-up, the "
-                  "median of " + std::to_string(SCENE_ROUNDS) + " rounds interleaved across the columns; pipelines "
-                  "compiled before the timed frames) and its ratio to the first column. Every image is compared with "
+                  "median of " + std::to_string(table.rounds) + " rounds interleaved across the columns, in an order that "
+                  "turns by one column a round; pipelines compiled before the timed frames) and its ratio to the first "
+                  "column, the median of the rounds' ratios, each taken within one round. Every image is compared with "
                   "the reference's: the last column gives the largest channel difference over all devices.\n\n";
   std::vector<std::string> head = {"scene", "triangles"};
   for (const DeviceColumn& c : table.columns) head.push_back(c.device + ", " + c.keys);
@@ -155,7 +171,7 @@ std::string deviceTableSection(const DeviceTable& table, int repeat) {
                                       formatText("%llu", static_cast<unsigned long long>(r.triangles))};
     int worst = -1;
     for (size_t c = 0; c < r.times.size(); ++c) {
-      cells.push_back(cell(r.times[c], r.times[0]));
+      cells.push_back(cell(r.times[c], r.ratios[c]));
       worst = std::max(worst, r.maxDiff[c]);
     }
     cells.push_back(worst < 0 ? "–" : std::to_string(worst));

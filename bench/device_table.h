@@ -21,18 +21,27 @@ struct DeviceRow {
   std::string scene;
   uint64_t triangles = 0;
   int width = 0, height = 0;
-  std::vector<Timing> times;  // per column: the median of the interleaved rounds
+  std::vector<Timing> times;      // per column: the median of the interleaved rounds
+  std::vector<double> ratios;     // per column: the median over the rounds of its time / the first column's
   std::vector<int> maxDiff;   // per column: largest channel difference from the reference (-1: none)
 };
 
 struct DeviceTable {
+  int rounds = 0;
   std::vector<DeviceColumn> columns;
   std::vector<DeviceRow> rows;
 };
 
+// The rounds per scene. Each round times every column once, in an order that turns by one column a
+// round, and a column's ratio is the median of its rounds' ratios to the first column's time in
+// the same round: load that comes and goes then moves both sides of a ratio alike, where medians
+// taken apart over 3 rounds scattered a ratio by up to ±0.15 on the 2-core machine. The smoke
+// test (--quick) takes 3.
+inline constexpr int DEVICE_ROUNDS = 9;
+
 // Every usable device, and each 64-bit one also forced to the 32-bit path; `scenes` on each, in
-// interleaved rounds (every column once per round). Prints one progress line per scene.
-DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, bool withSwiftShader);
+// `rounds` interleaved rounds. Prints one progress line per scene.
+DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, int rounds, bool withSwiftShader);
 
 // The report's section.
 std::string deviceTableSection(const DeviceTable& table, int repeat);
