@@ -3,8 +3,8 @@
 # and the whole test suite), every committed scene in every mode on SwiftShader, then `pip install .` into a fresh virtual environment and the Python
 # suite against it (scripts/pip_check.sh), the GPU check's dry run on lavapipe (scripts/gpu_check.sh),
 # a bounded fuzzing run of the scene loader, the mesh and
-# glTF importers and scene_from_dict's path (scripts/fuzz.sh), then the whole test suite again under
-# ASan + UBSan (scripts/sanitize.sh). Each stage prints how long it took; the last lines are CTest's verdicts.
+# glTF importers and scene_from_dict's path (scripts/fuzz.sh), then the test suite again under
+# ASan + UBSan, less the suites that check only shaders there (scripts/sanitize.sh). Each stage prints how long it took; the last lines are CTest's verdicts.
 # Run `bash scripts/setup.sh --test` first. JOBS sets the parallelism (default: every core).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds phongvk with AddressSanitizer + UndefinedBehaviorSanitizer (-DPHONGVK_SANITIZE=ON, in
-# build-asan) and runs the whole test suite under them. Any report fails the run: UBSan aborts on
+# build-asan) and runs the test suite under them (less the suites below). Any report fails the run: UBSan aborts on
 # the first finding, ASan on the first memory error, LeakSanitizer at exit. The only leaks
 # suppressed are third-party Vulkan code's (tests/lsan.supp). Part of the full CI (scripts/ci.sh).
 # Run `bash scripts/setup.sh --test` first.
