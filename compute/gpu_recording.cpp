@@ -34,7 +34,9 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, image_.large.buffer.buffer, 0, sizeof emptyList, &emptyList);
   const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0, 0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, scene_.clipList.buffer, 0, sizeof noClipping, &noClipping);
-  if (context_.info.keys32) {  // no triangle kept yet (gpu_layout.h keptWords)
+  // No triangle kept yet (gpu_layout.h keptWords); a scene that lists its kept triangles instead
+  // (keptList) starts its list from the count in IdList and never reads the words.
+  if (context_.info.keys32 && !choices_.keptList) {
     vkCmdFillBuffer(cmd, scene_.clipList.buffer, keptWordsOffset(triangleCount_), keptWordsBytes(triangleCount_), 0u);
   }
   transferToComputeBarrier(cmd);
