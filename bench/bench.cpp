@@ -52,9 +52,10 @@ std::vector<SuiteScene> deviceScenes(const BenchOptions& options) {
 }
 
 // The smoke test (--quick) leaves SwiftShader out (its compiler takes tens of seconds a pass) and
-// takes 3 rounds.
+// takes the scene table's rounds.
 DeviceTable measureDevices(const BenchOptions& options) {
-  return runDeviceTable(deviceScenes(options), options.repeat, options.quick ? 3 : DEVICE_ROUNDS, !options.quick);
+  return runDeviceTable(deviceScenes(options), options.repeat, options.quick ? SCENE_ROUNDS : DEVICE_ROUNDS,
+                        !options.quick);
 }
 
 // The device table alone, as a report of its own (`--devices-only`).

@@ -21,9 +21,9 @@ struct DeviceRow {
   std::string scene;
   uint64_t triangles = 0;
   int width = 0, height = 0;
-  std::vector<Timing> times;      // per column: the median of the interleaved rounds
-  std::vector<double> ratios;     // per column: the median over the rounds of its time / the first column's
-  std::vector<int> maxDiff;   // per column: largest channel difference from the reference (-1: none)
+  std::vector<Timing> times;   // per column: the median of the interleaved rounds
+  std::vector<double> ratios;  // per column: the median over the rounds of its time / the first column's
+  std::vector<int> maxDiff;    // per column: largest channel difference from the reference (-1: none)
 };
 
 struct DeviceTable {
@@ -36,7 +36,7 @@ struct DeviceTable {
 // round, and a column's ratio is the median of its rounds' ratios to the first column's time in
 // the same round: load that comes and goes then moves both sides of a ratio alike, where medians
 // taken apart over 3 rounds scattered a ratio by up to ±0.15 on the 2-core machine. The smoke
-// test (--quick) takes 3.
+// test (--quick) takes SCENE_ROUNDS.
 inline constexpr int DEVICE_ROUNDS = 9;
 
 // Every usable device, and each 64-bit one also forced to the 32-bit path; `scenes` on each, in
