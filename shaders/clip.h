@@ -74,17 +74,19 @@ FN NearPolygon clipNear(vec3 h0, vec3 h1, vec3 h2, float nearPlane, uint project
 // Sutherland-Hodgman against one guard-band plane: poly (count n) -> poly; returns the new count.
 // Every index is a constant once the loops unroll, so a SIMD device keeps the polygon in registers
 // (indexed per lane, lavapipe put it in memory and took seconds to generate the pass's code:
-// docs/DECISIONS.md): each output, p_i where it is inside and the crossing of edge i where its ends
-// disagree, is pushed onto the front of the result, walking the edges from the last, which leaves
-// the result in Sutherland-Hodgman's order. A convex polygon gains at most one vertex per plane
-// (the near plane's has at most four, so four more planes make at most eight); outputs past
-// MAX_CLIP_VERTICES, which only rounding could make, are dropped from the end.
+// docs/DECISIONS.md). The storage-array builds keep the loops, which SwiftShader's compiler took
+// 35 s and more to unroll (glsl_cpp.h UNROLL_TEXELS). Each output, p_i where it is inside and the
+// crossing of edge i where its ends disagree, is pushed onto the front of the result, walking the
+// edges from the last, which leaves the result in Sutherland-Hodgman's order. A convex polygon
+// gains at most one vertex per plane (the near plane's has at most four, so four more planes make
+// at most eight); outputs past MAX_CLIP_VERTICES, which only rounding could make, are dropped from
+// the end.
 FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int plane, float nearPlane, uint projection) {
   const int last = int(MAX_CLIP_VERTICES) - 1;
   vec3 result[MAX_CLIP_VERTICES];
-  UNROLL for (int j = 0; j <= last; ++j) result[j] = poly[0];
+  UNROLL_TEXELS for (int j = 0; j <= last; ++j) result[j] = poly[0];
   int m = 0;
-  UNROLL for (int i = last; i >= 0; --i) {
+  UNROLL_TEXELS for (int i = last; i >= 0; --i) {
     vec3 a = poly[i];
     vec3 b = i < last && i + 1 < n ? poly[min(i + 1, last)] : poly[0];
     float da = clipDistance(a, plane, nearPlane, projection);
@@ -93,13 +95,13 @@ FN int clipAgainstPlane(INOUT_ARRAY(vec3, poly, MAX_CLIP_VERTICES), int n, int p
     bool crosses = edge && (da >= 0.0f) != (db >= 0.0f);
     bool keeps = edge && da >= 0.0f;
     vec3 x = crosses ? edgeCrossing(a, b, da, db) : a;
-    UNROLL for (int j = last; j > 0; --j) result[j] = crosses ? result[j - 1] : result[j];
+    UNROLL_TEXELS for (int j = last; j > 0; --j) result[j] = crosses ? result[j - 1] : result[j];
     result[0] = crosses ? x : result[0];
-    UNROLL for (int j = last; j > 0; --j) result[j] = keeps ? result[j - 1] : result[j];
+    UNROLL_TEXELS for (int j = last; j > 0; --j) result[j] = keeps ? result[j - 1] : result[j];
     result[0] = keeps ? a : result[0];
     m += (crosses ? 1 : 0) + (keeps ? 1 : 0);
   }
-  UNROLL for (int j = 0; j <= last; ++j) poly[j] = result[j];
+  UNROLL_TEXELS for (int j = 0; j <= last; ++j) poly[j] = result[j];
   return min(m, last + 1);
 }
 

@@ -8,7 +8,7 @@
 //   - dot/cross products are spelled out (dot3, cross3) so the association order is fixed;
 //   - functions are declared with FN; out/inout parameters with OUT/INOUT and OUT_ARRAY/INOUT_ARRAY;
 //   - a loop the shader must not keep as a loop is marked UNROLL (UNROLL_KEYS64: only on the 64-bit
-//     key path's builds).
+//     key path's builds; UNROLL_TEXELS: only on the builds that read texel buffers).
 #ifndef PHONGVK_GLSL_CPP_H
 #define PHONGVK_GLSL_CPP_H
 
@@ -27,6 +27,7 @@
 #define UNROLL
 #define DONT_UNROLL
 #define UNROLL_KEYS64
+#define UNROLL_TEXELS
 #define SHARED_BEGIN namespace phongvk::gpu {
 #define SHARED_END }
 namespace phongvk::gpu {
@@ -72,6 +73,16 @@ inline void imulExtended(int32_t x, int32_t y, int32_t& msb, int32_t& lsb) {
 #define UNROLL_KEYS64 DONT_UNROLL
 #else
 #define UNROLL_KEYS64 UNROLL
+#endif
+// UNROLL on the builds that read the scene's arrays from texel buffers, a loop on the storage-array
+// builds (PHONGVK_STORAGE_ARRAYS, the _k32s ones SwiftShader takes): SwiftShader's compiler took
+// 35 to 42 s for the clip pass with the clipper's Sutherland-Hodgman step unrolled, 0.3 s with it
+// a loop, while lavapipe, given the loop, keeps the polygon in memory and takes seconds to generate
+// the pass (docs/DECISIONS.md, "The 32-bit key path").
+#ifdef PHONGVK_STORAGE_ARRAYS
+#define UNROLL_TEXELS DONT_UNROLL
+#else
+#define UNROLL_TEXELS UNROLL
 #endif
 #define PRECISE precise
 #define OUT(T) out T
