@@ -15,7 +15,9 @@ trap 'rm -rf "$(dirname "$venv")"' EXIT
 "$venv/bin/pip" install --no-index --no-build-isolation --quiet .
 # The package imported is the installed one, not the source tree's.
 (cd "$(dirname "$venv")" && "$venv/bin/python" -c "import phongvk; assert phongvk.__file__.startswith('$venv'), phongvk.__file__; print('pip install: phongvk', phongvk.__version__, 'at', phongvk.__file__)")
-PHONGVK_SOURCE_DIR=$root PHONGVK_CLI=$root/build/phongvk "$venv/bin/python" -m pytest -q -p no:cacheprovider python/tests
+# A file's tests on one worker, JOBS workers (pytest-xdist): CTest runs the same files side by side.
+PHONGVK_SOURCE_DIR=$root PHONGVK_CLI=$root/build/phongvk "$venv/bin/python" -m pytest -q -p no:cacheprovider \
+  -n "${JOBS:-$(nproc)}" --dist loadfile python/tests
 
 # Into the system. setup.py's build folder (build-pip) is kept, so this install rebuilds nothing: it
 # installs the module the suite above has just passed, so the suites it takes there are those of

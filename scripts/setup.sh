@@ -42,6 +42,7 @@ packages=(
 test_packages=(
   libgtest-dev googletest  # tests/CMakeLists.txt: find_package(GTest REQUIRED)
   python3-pytest python3-pil  # python/tests (CTest's python_* entries); Pillow decodes PNGs there
+  python3-pytest-xdist  # the Python suite against the pip-installed package, two files at a time (scripts/pip_check.sh)
   python3-matplotlib python3-nbconvert python3-ipykernel jupyter-core  # examples/python, run by python/tests/test_examples.py
   assimp-testmodels  # real PLY, STL and glTF files (/usr/share/assimp/models) for the mesh tests
   vulkan-validationlayers  # PHONGVK_VALIDATE=1 in every GPU test, and `phongvk --validate`
