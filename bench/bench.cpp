@@ -54,8 +54,9 @@ std::vector<SuiteScene> deviceScenes(const BenchOptions& options) {
 // The smoke test (--quick) leaves SwiftShader out (its compiler takes tens of seconds a pass) and
 // takes the scene table's rounds.
 DeviceTable measureDevices(const BenchOptions& options) {
+  const StartupCommand startup{.cli = options.cli, .sourceDir = options.sourceDir, .rounds = options.quick ? 1 : 3};
   return runDeviceTable(deviceScenes(options), options.repeat, options.quick ? SCENE_ROUNDS : DEVICE_ROUNDS,
-                        !options.quick);
+                        !options.quick, startup);
 }
 
 // The device table alone, as a report of its own (`--devices-only`).

@@ -1,5 +1,6 @@
 #include "device_table.h"
 
+#include "process.h"
 #include "scene_bench.h"
 #include "text.h"
 
@@ -46,6 +47,8 @@ class ScopedVariable {
 // pipelines compiled on it, kept across the scenes (SwiftShader compiles some for tens of seconds).
 struct Column {
   DeviceColumn description;
+  std::string environment;  // what a `phongvk` process on this column runs under: its drivers and key path
+  uint32_t deviceIndex = 0;  // its --device
   std::unique_ptr<ScopedContext> context;
   std::shared_ptr<GpuPipelineSet> pipelines;
 
@@ -60,9 +63,12 @@ struct Column {
   }
 };
 
-void addColumn(std::vector<Column>& columns, const DeviceInfo& device, const char* keyPath) {
+void addColumn(std::vector<Column>& columns, const DeviceInfo& device, const char* keyPath, const std::string& drivers) {
   const ScopedVariable path("PHONGVK_KEY_PATH", keyPath ? std::optional<std::string>(keyPath) : std::nullopt);
   Column c;
+  c.environment = "env -u PHONGVK_KEY_PATH -u VK_ADD_DRIVER_FILES " + drivers +
+                  (keyPath ? std::string("PHONGVK_KEY_PATH=") + keyPath + " " : "");
+  c.deviceIndex = device.index;
   c.context = std::make_unique<ScopedContext>(ContextOptions{int(device.index)});
   c.description = {device.name, keyPathWords(c.context->context.info)};
   c.pipelines = std::make_shared<GpuPipelineSet>(c.context->context);
@@ -82,23 +88,30 @@ std::vector<Column> makeColumns(bool withSwiftShader) {
     return a.name.rfind("llvmpipe", 0) == 0 && b.name.rfind("llvmpipe", 0) != 0;
   });
   std::vector<Column> columns;
+  const std::string driverFiles = addSwiftShader ? std::string("VK_ADD_DRIVER_FILES=") + SWIFTSHADER_ICD + " " : "";
   for (const DeviceInfo& device : devices) {
     if (!device.suitable) continue;
-    addColumn(columns, device, nullptr);
-    if (!device.keys32) addColumn(columns, device, "32");
+    addColumn(columns, device, nullptr, driverFiles);
+    if (!device.keys32) addColumn(columns, device, "32", driverFiles);
   }
   return columns;
 }
 
-// The median over the rounds of a column's frame time over the first column's in the same round
-// (NaN when a round of either failed).
-double medianRatio(const std::vector<ComputeRun>& column, const std::vector<ComputeRun>& first) {
+// The median over the rounds of a column's time over the first column's in the same round (NaN
+// when a round of either failed).
+double medianRatio(const std::vector<double>& column, const std::vector<double>& first) {
   std::vector<double> ratios;
   for (size_t r = 0; r < column.size(); ++r) {
-    if (!column[r].time.ok() || !first[r].time.ok() || !(first[r].time.wallMs > 0)) return NOT_MEASURED;
-    ratios.push_back(column[r].time.wallMs / first[r].time.wallMs);
+    if (!std::isfinite(column[r]) || !std::isfinite(first[r]) || !(first[r] > 0)) return NOT_MEASURED;
+    ratios.push_back(column[r] / first[r]);
   }
   return median(ratios);
+}
+
+std::vector<double> wallTimes(const std::vector<ComputeRun>& runs) {
+  std::vector<double> times;
+  for (const ComputeRun& run : runs) times.push_back(run.time.ok() ? run.time.wallMs : NOT_MEASURED);
+  return times;
 }
 
 DeviceRow measureRow(std::vector<Column>& columns, const SuiteScene& scene, int repeat, int rounds) {
@@ -123,10 +136,51 @@ DeviceRow measureRow(std::vector<Column>& columns, const SuiteScene& scene, int 
   for (size_t c = 0; c < columns.size(); ++c) {
     const ComputeRun run = medianRound(runs[c]);
     row.times.push_back(run.time);
-    row.ratios.push_back(medianRatio(runs[c], runs[0]));
+    row.ratios.push_back(medianRatio(wallTimes(runs[c]), wallTimes(runs[0])));
     row.maxDiff.push_back(run.time.ok() && reference.time.ok() ? compareImages(reference.image, run.image).maxChannelDiff() : -1);
   }
   return row;
+}
+
+// One first render of `command.scene` on column c, every cache in the new folder `cache`.
+Process firstRender(const Column& c, const StartupCommand& command, const Scratch& scratch, const std::string& cache) {
+  std::filesystem::create_directories(cache);
+  return run(c.environment + "XDG_CACHE_HOME=" + quoted(cache) + " __GL_SHADER_DISK_CACHE_PATH=" + quoted(cache) + " " +
+             quoted(command.cli) + " render " + quoted(command.sourceDir + "/scenes/" + command.scene) + " -o " +
+             quoted((scratch.dir / "first.png").string()) + " --device " + std::to_string(c.deviceIndex));
+}
+
+// Each column's first render, `command.rounds` rounds interleaved as the scenes' are.
+std::vector<DeviceStartup> measureStartups(const std::vector<Column>& columns, const StartupCommand& command) {
+  const Scratch scratch;
+  std::vector<std::vector<double>> seconds(columns.size()), pipelines(columns.size());
+  std::vector<DeviceStartup> result(columns.size());
+  for (int round = 0; round < command.rounds; ++round) {
+    for (size_t i = 0; i < columns.size(); ++i) {
+      const size_t c = (i + size_t(round)) % columns.size();
+      const std::string cache = (scratch.dir / ("cache-" + std::to_string(round) + "-" + std::to_string(c))).string();
+      const Process p = firstRender(columns[c], command, scratch, cache);
+      if (p.status != 0) result[c].failure = "exit status " + std::to_string(p.status);
+      seconds[c].push_back(p.status == 0 ? p.seconds : NOT_MEASURED);
+      const double pipelineMs = after(p.out, ", pipelines ");
+      if (std::isfinite(pipelineMs)) pipelines[c].push_back(pipelineMs);
+    }
+  }
+  for (size_t c = 0; c < columns.size(); ++c) {
+    if (!result[c].failure.empty()) continue;
+    result[c].seconds = median(seconds[c]);
+    if (!pipelines[c].empty()) result[c].pipelinesMs = median(pipelines[c]);
+    result[c].ratio = medianRatio(seconds[c], seconds[0]);
+  }
+  return result;
+}
+
+std::string startupCell(const DeviceStartup& s) {
+  if (!s.failure.empty()) return s.failure;
+  std::string text = number(s.seconds, 2) + " s";
+  if (std::isfinite(s.pipelinesMs)) text += ", pipelines " + number(s.pipelinesMs / 1000.0, 2) + " s";
+  if (std::isfinite(s.ratio)) text += " (" + number(s.ratio, 2) + "x)";
+  return text;
 }
 
 std::string cell(const Timing& t, double ratio) {
@@ -138,10 +192,13 @@ std::string cell(const Timing& t, double ratio) {
 
 }  // namespace
 
-DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, int rounds, bool withSwiftShader) {
+DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, int rounds, bool withSwiftShader,
+                           const StartupCommand& startup) {
   std::vector<Column> columns = makeColumns(withSwiftShader);
   DeviceTable table;
   table.rounds = rounds;
+  table.startupScene = startup.scene;
+  table.startupRounds = startup.rounds;
   for (const Column& c : columns) table.columns.push_back(c.description);
   for (const SuiteScene& scene : scenes) {
     table.rows.push_back(measureRow(columns, scene, repeat, rounds));
@@ -150,6 +207,10 @@ DeviceTable runDeviceTable(const std::vector<SuiteScene>& scenes, int repeat, in
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   }
+  table.startups = measureStartups(columns, startup);
+  std::string line = "devices, first render of " + startup.scene + ":";
+  for (const DeviceStartup& s : table.startups) line += " " + startupCell(s);
+  std::printf("%s\n", line.c_str());
   return table;
 }
 
@@ -177,6 +238,15 @@ std::string deviceTableSection(const DeviceTable& table, int repeat) {
     cells.push_back(worst < 0 ? "–" : std::to_string(worst));
     s += row(cells);
   }
+  std::vector<std::string> cells = {"first render of " + table.startupScene + " (process, empty caches)", "–"};
+  for (const DeviceStartup& startup : table.startups) cells.push_back(startupCell(startup));
+  cells.push_back("–");
+  s += row(cells);
+  s += "\nThe last row is what a user waits for on a new machine: one `phongvk render` process (`--device` the column's, "
+       "its key path's variable set) with every cache in a new empty folder (`XDG_CACHE_HOME`: phongvk's float probe "
+       "and pipeline cache, Mesa's), the median wall time of " + std::to_string(table.startupRounds) +
+       " interleaved rounds, the pipelines' creation as `render` reports it, and the median of the rounds' ratios to "
+       "the first column.\n";
   return s + "\n";
 }
 

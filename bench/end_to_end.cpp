@@ -1,6 +1,8 @@
 // end_to_end.cpp — the CLI's commands run and timed as processes (end_to_end.h).
 #include "end_to_end.h"
 
+#include "process.h"
+
 #include "phongvk/phongvk.h"
 #include "tools/statistics.h"
 
@@ -17,58 +19,6 @@ namespace phongvk::bench {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr double NOT_A_NUMBER = std::numeric_limits<double>::quiet_NaN();
-
-struct Process {
-  int status = -1;
-  std::string out;  // stdout
-  double seconds = 0;
-};
-
-// Runs a shell command line, its stderr discarded, and times it.
-Process run(const std::string& command) {
-  Process p;
-  const auto start = std::chrono::steady_clock::now();
-  FILE* pipe = popen((command + " 2>/dev/null").c_str(), "r");
-  if (pipe == nullptr) throw std::runtime_error("cannot run: " + command);
-  char buffer[4096];
-  for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) p.out.append(buffer, n);
-  p.status = pclose(pipe);
-  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return p;
-}
-
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
-// The number after `label` in `text`; NaN when it is not there.
-double after(const std::string& text, const std::string& label) {
-  const size_t at = text.find(label);
-  double value = NOT_A_NUMBER;
-  if (at == std::string::npos || std::sscanf(text.c_str() + at + label.size(), "%lf", &value) != 1) return NOT_A_NUMBER;
-  return value;
-}
-
-// The number before `label` (" frames/s after the first").
-double before(const std::string& text, const std::string& label) {
-  const size_t at = text.find(label);
-  if (at == std::string::npos) return NOT_A_NUMBER;
-  const size_t start = text.find_last_of(' ', at - 1);
-  return std::strtod(text.c_str() + (start == std::string::npos ? 0 : start + 1), nullptr);
-}
-
-struct Scratch {
-  fs::path dir;
-  Scratch() {
-    std::string pattern = (fs::temp_directory_path() / "phongvk-bench-XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a temporary folder");
-    dir = pattern;
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    fs::remove_all(dir, ignored);
-  }
-};
 
 struct Setup {
   std::string cli, paper, size;  // size: " --width W --height H" in quick runs
