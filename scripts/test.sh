@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds phongvk (Release, in build/) and runs the whole test suite with CTest: every GoogleTest
 # suite, the Python suites, the installed package, the benchmark's smoke run, MPI and Slurm. This
-# is the README's test command (about 11 min from a fresh clone on a 2-core machine; run it before each commit).
+# is the README's test command (12 to 16 min from a fresh clone on a 2-core machine, the tests about 9; run it before each commit).
 # scripts/ci.sh, the full CI (.ci/run), runs it and then fuzzing and the sanitizers.
 # Run `bash scripts/setup.sh --test` first. JOBS sets the parallelism (default: every core).
 set -euo pipefail
