@@ -145,7 +145,7 @@ DeviceRow measureRow(std::vector<Column>& columns, const SuiteScene& scene, int 
 // One first render of `command.scene` on column c, every cache in the new folder `cache`.
 Process firstRender(const Column& c, const StartupCommand& command, const Scratch& scratch, const std::string& cache) {
   std::filesystem::create_directories(cache);
-  return run(c.environment + "XDG_CACHE_HOME=" + quoted(cache) + " __GL_SHADER_DISK_CACHE_PATH=" + quoted(cache) + " " +
+  return run(c.environment + cachesIn(cache) +
              quoted(command.cli) + " render " + quoted(command.sourceDir + "/scenes/" + command.scene) + " -o " +
              quoted((scratch.dir / "first.png").string()) + " --device " + std::to_string(c.deviceIndex));
 }

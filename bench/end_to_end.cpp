@@ -86,7 +86,7 @@ StartupRun measureStartup(const Setup& s, const std::string& name, int rounds, b
     std::string environment;
     if (fresh) {  // a new machine: Mesa's and phongvk's caches (and NVIDIA's) in an empty folder
       const std::string empty = (s.scratch.dir / ("fresh-" + std::to_string(round))).string();
-      environment = "XDG_CACHE_HOME=" + quoted(empty) + " __GL_SHADER_DISK_CACHE_PATH=" + quoted(empty) + " ";
+      environment = cachesIn(empty);
       fs::create_directories(empty);
     }
     const Process gpu = renderOnce(s, scene, "gpu", environment);
@@ -118,8 +118,7 @@ FirstRun measureFirstRender(const Setup& s, const std::string& scenes, const std
     const fs::path empty = s.scratch.dir / ("first-" + std::to_string(round));
     fs::remove_all(empty);
     fs::create_directories(empty);
-    const std::string environment = "XDG_CACHE_HOME=" + quoted(empty.string()) +
-                                    " __GL_SHADER_DISK_CACHE_PATH=" + quoted(empty.string()) + " ";
+    const std::string environment = cachesIn(empty.string());
     const Process a = renderOnce(s, scenes + "/" + scene, "gpu", environment);
     const Process b = renderOnce(s, scenes + "/" + scene, "gpu", environment);
     if (a.status != 0 || b.status != 0) {

@@ -25,6 +25,10 @@ Process run(const std::string& command) {
 
 std::string quoted(const std::string& text) { return "'" + text + "'"; }
 
+std::string cachesIn(const std::string& dir) {
+  return "XDG_CACHE_HOME=" + quoted(dir) + " __GL_SHADER_DISK_CACHE_PATH=" + quoted(dir) + " ";
+}
+
 double after(const std::string& text, const std::string& label) {
   const size_t at = text.find(label);
   double value = std::numeric_limits<double>::quiet_NaN();

@@ -19,6 +19,11 @@ Process run(const std::string& command);
 // `text` in single quotes, for a shell command line (paths without quotes of their own).
 std::string quoted(const std::string& text);
 
+// Environment assignments (each followed by a space) that put every cache a `phongvk` process
+// keeps in folder `dir`: phongvk's float probe and pipeline cache and Mesa's (XDG_CACHE_HOME), and
+// NVIDIA's shader cache. An empty `dir` is a new machine's first run.
+std::string cachesIn(const std::string& dir);
+
 // The number after `label` in `text`; NaN when it is not there.
 double after(const std::string& text, const std::string& label);
 
