@@ -32,7 +32,7 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   vkCmdUpdateBuffer(cmd, image_.bins.buffer, 0, sizeof noBins, &noBins);
   const LargeList emptyList = {0, 0, 0, 0};
   vkCmdUpdateBuffer(cmd, image_.large.buffer.buffer, 0, sizeof emptyList, &emptyList);
-  const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0, 0, 1, 1, 0};
+  const IdList noClipping = {0, 0, 1, 1, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0};
   vkCmdUpdateBuffer(cmd, scene_.clipList.buffer, 0, sizeof noClipping, &noClipping);
   // No triangle kept yet (gpu_layout.h keptWords); a scene that lists its kept triangles instead
   // (keptList) starts its list from the count in IdList and never reads the words.
@@ -63,9 +63,10 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
   // low words among the fragments at each pixel's depth (shaders/raster_loops.glsl).
   // The triangle pass's ids dispatch takes a chunk of kept triangles an invocation (gpu_layout.h
   // keptSpan), or in a small scene one listed kept triangle (keptList: indirect, as many as the
-  // depth dispatch listed); before it, the point pass takes a point quad an invocation, the
-  // triangle pass the other records (raster_triangles.comp), with no barrier between them: both
-  // only offer keys and list records for the clip pass, atomically.
+  // depth dispatch listed; the clip pass's ids dispatch there walks the clip pass's own kept
+  // ones likewise). Before it, the point pass takes a point quad an invocation, the triangle pass
+  // the other records (raster_triangles.comp), with no barrier between them: both only offer keys
+  // and list records for the clip pass, atomically.
   auto raster = [&](Pass triangles, Pass clip) {
     const uint32_t pointRecords = pointQuads_.y - pointQuads_.x;
     const uint32_t items = triangles == RASTER_IDS ? keptChunks(triangleCount_) : triangleCount_ - pointRecords;
@@ -82,7 +83,9 @@ void GpuRenderer::recordFrame(VkCommandBuffer cmd) {
     }
     computeBarrier(cmd);
     bind(clip);
-    vkCmdDispatchIndirect(cmd, scene_.clipList.buffer, offsetof(IdList, groupsX));
+    const bool keptClipped = clip == CLIP_IDS && choices_.keptList;  // the clip pass's kept ones only
+    vkCmdDispatchIndirect(cmd, scene_.clipList.buffer,
+                          keptClipped ? offsetof(IdList, clipIdsGroupsX) : offsetof(IdList, groupsX));
     computeBarrier(cmd);
   };
   raster(RASTER, CLIP);

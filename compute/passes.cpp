@@ -56,9 +56,9 @@ std::vector<PipelineRequest> passRequests(const PassChoices& choices, const std:
   }
   if (choices.keys32) {  // the triangle and clip passes twice: depth words, then ids (raster_loops.glsl)
     requests.push_back({RASTER_IDS, {{SPEC_KEY_PASS, KEY_PASS_IDS}}, RASTER});
-    if (choices.keptList) {  // a small scene's kept triangles as a list (gpu_layout.h keptList)
+    if (choices.keptList) {  // a small scene's kept triangles as lists (gpu_layout.h keptList)
       requests.back().specs.push_back({SPEC_KEPT_LIST, 1u});
-      requests[RASTER].specs.push_back({SPEC_KEPT_LIST, 1u});
+      for (Pass pass : {RASTER, CLIP}) requests[pass].specs.push_back({SPEC_KEPT_LIST, 1u});
     }
     requests.push_back({CLIP_IDS, requests[CLIP].specs, CLIP});
     requests.back().specs.push_back({SPEC_KEY_PASS, KEY_PASS_IDS});

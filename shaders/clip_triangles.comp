@@ -20,19 +20,26 @@ layout(local_size_x = CLIP_GROUP_SIZE) in;
 layout(constant_id = SPEC_CLIP_POLYGONS) const uint CLIP_POLYGONS = CLIP_NONE;
 
 // The fan's sub-triangles of a set-up polygon, rasterized or deferred to resolve. Without the
-// clipper the polygon is the triangle itself.
-void drawFan(TriangleSetup t) {
+// clipper the polygon is the triangle itself. True where one drew a fragment that may still win.
+bool drawFan(TriangleSetup t) {
+  bool mayWin = false;
   for (int f = 0; f + 2 < t.count; ++f) {
     TriangleSetup sub = CLIP_POLYGONS == CLIP_ALL ? fanTriangle(t, f) : t;
     EdgeSetup s;
-    if (setupSingle(sub, s)) drawOrDefer(sub, s);
+    if (setupSingle(sub, s)) mayWin = drawOrDefer(sub, s) || mayWin;
   }
+  return mayWin;
 }
 
+// Every clip-listed triangle, or on the 32-bit key path's ids dispatch in a keptList scene only
+// those its depth dispatch kept (raster_loops.glsl keepClipped), from their list by an indirect
+// dispatch, so that its SIMD batches hold kept triangles only.
 void main() {
   loadUniforms();
-  for (uint k = gl_GlobalInvocationID.x; k < clipList.count; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
-    uint id = clipIds[k];
+  bool keptOnly = IDS_PASS && KEPT_LIST;
+  uint listed = keptOnly ? clipList.keptClipped : clipList.count;
+  for (uint k = gl_GlobalInvocationID.x; k < listed; k += gl_NumWorkGroups.x * CLIP_GROUP_SIZE) {
+    uint id = clipIds[keptOnly ? keptClippedIndex(k) : k];
     vec3 h0, h1, h2;
     bool cullBack;
     loadForSetup(id, h0, h1, h2, cullBack);
@@ -50,7 +57,7 @@ void main() {
     if (CLIP_POLYGONS == CLIP_ALL) {
       for (uint clip = inside ? 1u : 0u; clip < 1u; ++clip) drawn = setupClipped(h0, h1, h2, frame, t);
     }
-    if (drawn) drawFan(t);
+    if (drawn && drawFan(t) && !IDS_PASS && KEPT_LIST) keepClipped(id);
   }
   checkLoopBudget();
 }

@@ -161,9 +161,11 @@ struct BinList {
 // words of the triangle pass's kept triangles: bit t % 32 of word t / 32 set where its depth
 // dispatch drew a fragment of small triangle t that may still win a pixel (raster_loops.glsl
 // keepTriangle); in a scene of fewer than KEPT_LIST_BELOW triangles (keptList) the kept
-// triangles' ids instead, listed, room for every triangle's after the words. The clip pass keeps
-// none: with that code in it, SwiftShader's compiler took several times as long for the clip pass
-// (docs/DECISIONS.md, "The 32-bit key path").
+// triangles' ids instead, listed, room for every triangle's after the words: the triangle pass's
+// from the start of that room up, the clip pass's (keepClipped: a clip-listed triangle with a
+// fragment that may still win) from its end down. A record is drawn by one of the two passes and
+// kept once at most, so both fit. Larger scenes' clip passes keep none (their ids dispatch walks
+// the whole clip list).
 FN uint keptWords(uint triangles) { return (triangles + 31u) / 32u; }
 // Below this many triangles the ids dispatch walks a list of the kept triangles, one an
 // invocation (an atomicAdd each in the depth dispatch), rather than their bits a triangle an
@@ -194,6 +196,10 @@ struct IdList {
   uint idsGroupsX;   // the triangle pass's ids dispatch over them: keptListed over SETUP_GROUP_SIZE,
   uint idsGroupsY;   // capped at groupCap; (0, 1, 1) with none
   uint idsGroupsZ;
+  uint keptClipped;      // the clip pass's kept triangles listed (keptList scenes)
+  uint clipIdsGroupsX;   // the clip pass's ids dispatch over them: keptClipped over CLIP_GROUP_SIZE,
+  uint clipIdsGroupsY;   // capped at groupCap; (0, 1, 1) with none
+  uint clipIdsGroupsZ;
   uint pad;
 };
 
@@ -221,7 +227,7 @@ struct LargeEntry {
 #ifdef __cplusplus
 static_assert(sizeof(PassControl) == 48 && offsetof(PassControl, shadeColors) == 28);
 static_assert(sizeof(FrameStatus) == 16 && sizeof(ShadeChunk) == 8);
-static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 48);
+static_assert(sizeof(LargeList) == 16 && sizeof(LargeEntry) == 16 && sizeof(BinList) == 16 && sizeof(IdList) == 64);
 
 // Where the clip list's buffer keeps the kept words (IdList), their bytes, and its whole size, with
 // the kept words (and the kept list, keptList) on the 32-bit key path (`keptBits`) and without

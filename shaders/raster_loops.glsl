@@ -93,14 +93,38 @@ void markBins(ivec4 box) {
   }
 }
 
-// Rasterizes sub-triangle s, row span by row span, one invocation.
-void rasterizeRows(TriangleSetup t, EdgeSetup s) {
+// Rasterizes sub-triangle s, row span by row span, one invocation. True where one of its fragments
+// may still win (offerKey).
+bool rasterizeRows(TriangleSetup t, EdgeSetup s) {
+  bool mayWin = false;
   for (int y = s.bbox.y; y <= s.bbox.w; ++y) {
     ivec2 span = rowSpan(s, y);
     for (int x = span.x; x <= span.y; ++x) {
-      offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame));
+      mayWin = offerKey(uint(y) * frame.width + uint(x), coveredKey(t, x, y, frame)) || mayWin;
     }
   }
+  return mayWin;
+}
+
+// In a scene of fewer than KEPT_LIST_BELOW triangles (gpu_layout.h keptList) on the 32-bit key
+// path, the kept triangles as a list after the words, walked a triangle an invocation by an
+// indirect dispatch; never on the 64-bit path, which keeps none.
+#ifdef PHONGVK_KEYS32
+layout(constant_id = SPEC_KEPT_LIST) const bool KEPT_LIST = false;
+#else
+const bool KEPT_LIST = false;
+#endif
+uint keptListIndex(uint k) { return control.triangleCount + keptWords(control.triangleCount) + k; }
+
+// The clip pass's kept triangles (keptList scenes), listed from the list's room's end down, as
+// the triangle pass's are from its start up (gpu_layout.h IdList): its depth dispatch keeps each
+// clip-listed triangle that drew a fragment that may still win, its ids dispatch draws only those.
+uint keptClippedIndex(uint k) { return keptListIndex(control.triangleCount - 1u - k); }
+
+void keepClipped(uint id) {
+  uint k = atomicAdd(clipList.keptClipped, 1u);
+  clipIds[keptClippedIndex(k)] = id;
+  atomicMax(clipList.clipIdsGroupsX, min(k / CLIP_GROUP_SIZE + 1u, control.groupCap));
 }
 
 #ifdef PHONGVK_KEYS32
@@ -109,11 +133,6 @@ void rasterizeRows(TriangleSetup t, EdgeSetup s) {
 // only those, a chunk of them an invocation (gpu_layout.h keptSpan): a triangle none of whose
 // fragments may win cannot hold any pixel's least depth word, so leaving it out changes no pixel.
 uint keptWordIndex(uint w) { return control.triangleCount + w; }
-
-// In a scene of fewer than KEPT_LIST_BELOW triangles (gpu_layout.h keptList), the kept triangles
-// as a list after the words, walked a triangle an invocation by an indirect dispatch.
-layout(constant_id = SPEC_KEPT_LIST) const bool KEPT_LIST = false;
-uint keptListIndex(uint k) { return control.triangleCount + keptWords(control.triangleCount) + k; }
 
 void keepTriangle(uint id) {
   if (!KEPT_LIST) {
@@ -211,12 +230,13 @@ bool deferToLargePass(TriangleSetup t, EdgeSetup s) {
 // A sub-triangle with 64-bit edges: deferred to resolve when large, else drawn here. A large one
 // is never drawn here: one invocation looping over all its pixels could pass lavapipe's loop budget
 // (bindings.glsl checkLoopBudget; a screen-filling triangle did, at row 123 of 480). Without room
-// for it, the host grows the lists and renders the frame again (STATUS_LARGE_OVERFLOW).
-void drawOrDefer(TriangleSetup t, EdgeSetup s) {
+// for it, the host grows the lists and renders the frame again (STATUS_LARGE_OVERFLOW). True where
+// it drew a fragment that may still win (offerKey); a deferred one is resolve's, never kept.
+bool drawOrDefer(TriangleSetup t, EdgeSetup s) {
   if (uint(boxPixels(s.bbox)) > SMALL_TRIANGLE_MAX_PIXELS) {
     if (!IDS_PASS && !deferToLargePass(t, s)) atomicOr(status.flags, STATUS_LARGE_OVERFLOW);
-    return;
+    return false;
   }
   if (!IDS_PASS) markBins(s.bbox);
-  rasterizeRows(t, s);
+  return rasterizeRows(t, s);
 }
