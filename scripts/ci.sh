@@ -22,7 +22,7 @@ stage() {
 bash scripts/test.sh  # prints its own stage time, 'build + tests'
 # Every committed scene in every shading mode on SwiftShader, the second Vulkan implementation (the
 # 32-bit key path), against the reference: the tests scripts/test.sh leaves out for time.
-stage "swiftshader (every scene, every mode)" bash -c 'set -o pipefail; ctest --test-dir build --output-on-failure -L swiftshader_full | tee build/ctest-swiftshader.log'
+stage "swiftshader (every scene, every mode)" bash -c 'set -o pipefail; ctest --test-dir build --output-on-failure -j"$JOBS" -L swiftshader_full | tee build/ctest-swiftshader.log'
 stage "pip install" bash scripts/pip_check.sh
 # The GPU check's own dry run (a few scenes and suites of each stage, lavapipe standing in for the
 # GPU), so the script a GPU machine runs does not rot between the times one is at hand.
