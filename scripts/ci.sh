@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The full CI, what .ci/run runs (about 50 min from a fresh clone on a 2-core machine: 43 at 9eccf1e, 53 at 576d043 on a slower one): scripts/test.sh (build
+# The full CI, what .ci/run runs (42 to 53 min from a fresh clone on a 2-core machine: 42 at 9bd5545 on an AMD EPYC, 53 at 576d043 on an Intel Xeon): scripts/test.sh (build
 # and the whole test suite), every committed scene in every mode on SwiftShader, then `pip install .` into a fresh virtual environment and the Python
 # suite against it (scripts/pip_check.sh), the GPU check's dry run on lavapipe (scripts/gpu_check.sh),
 # a bounded fuzzing run of the scene loader, the mesh and
